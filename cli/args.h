@@ -1,0 +1,32 @@
+// A small command-line parser: positional arguments, --flags and --options with a value
+// (`--size 1920x1080` or `--size=1920x1080`). Unknown options are usage errors.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lg::cli {
+
+struct ArgSpec {
+  std::set<std::string> flags;    // "--json"
+  std::set<std::string> options;  // "--scene" (takes a value)
+  std::set<std::string> repeatable;  // options that may appear more than once
+};
+
+struct Args {
+  std::vector<std::string> positional;
+  std::set<std::string> flags;
+  std::multimap<std::string, std::string> options;
+
+  bool has(const std::string& flag) const { return flags.contains(flag); }
+  std::optional<std::string> value(const std::string& option) const;
+  std::vector<std::string> values(const std::string& option) const;
+};
+
+// Parses argv after the command name; on a usage error returns nullopt and sets `error`.
+std::optional<Args> parse_args(const std::vector<std::string>& argv, const ArgSpec& spec, std::string* error);
+
+}  // namespace lg::cli

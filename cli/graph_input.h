@@ -1,0 +1,26 @@
+// What compile and validate share: loading the graph named on the command line (or the
+// embedded default graph when none is named) and the options that shape compilation.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "cli/args.h"
+#include "graph/compiler.h"
+#include "graph/diagnostics.h"
+#include "graph/graph.h"
+
+namespace lg::cli {
+
+// The options compile and validate accept, for ArgSpec.
+ArgSpec graph_arg_spec();
+
+// Loads the graph (positional argument, or the embedded default). nullopt: errors are in
+// `diagnostics`.
+std::optional<Graph> load_graph_argument(const Args& args, Diagnostics& diagnostics);
+
+// Fills scene, frame size, asset roots and aliasing from the arguments. Returns an error
+// message for bad values; scene file errors go to `diagnostics`.
+std::optional<std::string> read_compile_options(const Args& args, CompileOptions& options, Diagnostics& diagnostics);
+
+}  // namespace lg::cli

@@ -1,0 +1,154 @@
+#include "graph/compiler/alias.h"
+
+#include <algorithm>
+#include <map>
+
+namespace lg {
+namespace {
+
+uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
+
+bool is_persistent(const LoweredResource& r) {
+  return r.lifetime == ResourceLifetime::cached || r.lifetime == ResourceLifetime::history;
+}
+
+// Greedy by size: the largest resources are placed first, each at the offset that leaves the
+// smallest gap among the resources whose lifetimes overlap it. Placed resources are indexed by
+// the schedule positions they are alive at, so finding the overlapping ones costs the size of
+// the live set, not the number of resources.
+class GreedyPlacer {
+ public:
+  GreedyPlacer(int passes, size_t resources) : alive_at_(passes), seen_(resources, 0) {}
+
+  uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment, std::vector<Placement>& placements) {
+    ++stamp_;
+    conflicts_.clear();
+    for (int t = life.first; t <= life.last; ++t)
+      for (int other : alive_at_[t])
+        if (seen_[other] != stamp_) seen_[other] = stamp_, conflicts_.push_back({placements[other].offset, placements[other].offset + placements[other].size});
+    std::sort(conflicts_.begin(), conflicts_.end());
+
+    uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
+    for (const auto& [start, end] : conflicts_) {
+      uint64_t offset = align_up(cursor, alignment);
+      if (offset + bytes <= start && start - cursor < best_gap) best = offset, best_gap = start - cursor;
+      cursor = std::max(cursor, end);
+    }
+    if (best == UINT64_MAX) best = align_up(cursor, alignment);
+    for (int t = life.first; t <= life.last; ++t) alive_at_[t].push_back(r);
+    size_ = std::max(size_, best + bytes);
+    return best;
+  }
+
+  uint64_t size() const { return size_; }
+
+ private:
+  std::vector<std::vector<int>> alive_at_;
+  std::vector<uint32_t> seen_;
+  uint32_t stamp_ = 0;
+  std::vector<std::pair<uint64_t, uint64_t>> conflicts_;
+  uint64_t size_ = 0;
+};
+
+// Which resource last held each byte range, visited in order of first use: a resource's
+// predecessors are the last holders of its bytes (they ended before it began, or they would
+// have conflicted).
+class LastOwners {
+ public:
+  void take(uint64_t start, uint64_t end, int owner, std::vector<int>& predecessors) {
+    auto it = owners_.upper_bound(start);
+    if (it != owners_.begin() && std::prev(it)->second.first > start) --it;
+    while (it != owners_.end() && it->first < end) {
+      auto [s, value] = *it;
+      auto [e, previous] = value;
+      predecessors.push_back(previous);
+      it = owners_.erase(it);
+      if (s < start) owners_.emplace(s, std::pair{start, previous});
+      if (e > end) it = owners_.emplace(end, std::pair{e, previous}).first;
+    }
+    owners_.emplace(start, std::pair{end, owner});
+    std::sort(predecessors.begin(), predecessors.end());
+    predecessors.erase(std::unique(predecessors.begin(), predecessors.end()), predecessors.end());
+  }
+
+ private:
+  std::map<uint64_t, std::pair<uint64_t, int>> owners_;  // start -> (end, owner)
+};
+
+}  // namespace
+
+MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes, const AliasOptions& options) {
+  const size_t count = lowered.resources.size();
+  MemoryLayout out;
+  out.blocks = {{0, options.enabled}, {0, false}};
+  out.placements.resize(count);
+  auto alignment = [&](const LoweredResource& r) {
+    return r.kind == ResourceKind::buffer ? options.buffer_alignment : options.image_alignment;
+  };
+
+  // Persistent resources, and everything when aliasing is off: one after another.
+  std::vector<int> shared;
+  int passes = 0;
+  for (size_t r = 0; r < count; ++r) {
+    const LoweredResource& res = lowered.resources[r];
+    if (!lifetimes[r].used()) continue;
+    passes = std::max(passes, lifetimes[r].last + 1);
+    Placement& p = out.placements[r];
+    p.size = res.bytes;
+    p.block = is_persistent(res) ? 1 : 0;
+    if (p.block == 0 && options.enabled) {
+      shared.push_back(static_cast<int>(r));
+      continue;
+    }
+    MemoryBlock& block = out.blocks[p.block];
+    p.offset = align_up(block.size, alignment(res));
+    block.size = p.offset + res.bytes;
+  }
+  if (!options.enabled) return out;
+
+  std::sort(shared.begin(), shared.end(), [&](int a, int b) {
+    uint64_t sa = lowered.resources[a].bytes, sb = lowered.resources[b].bytes;
+    if (sa != sb) return sa > sb;
+    return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;
+  });
+  GreedyPlacer placer(passes, count);
+  for (int r : shared)
+    out.placements[r].offset = placer.place(r, lifetimes[r], out.placements[r].size, alignment(lowered.resources[r]), out.placements);
+  out.blocks[0].size = placer.size();
+
+  std::sort(shared.begin(), shared.end(), [&](int a, int b) {
+    return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;
+  });
+  LastOwners owners;
+  for (int r : shared) {
+    Placement& p = out.placements[r];
+    owners.take(p.offset, p.offset + p.size, r, p.predecessors);
+  }
+  return out;
+}
+
+JsonValue dump_memory(const LoweredGraph& lowered, const MemoryLayout& memory) {
+  JsonValue out = JsonValue::object();
+  JsonValue& blocks = out.set("blocks", JsonValue::array());
+  for (const auto& b : memory.blocks) {
+    JsonValue& block = blocks.push(JsonValue::object());
+    block.set("bytes", b.size);
+    block.set("aliased", b.aliased);
+  }
+  JsonValue& placements = out.set("placements", JsonValue::array());
+  for (size_t r = 0; r < memory.placements.size(); ++r) {
+    const Placement& p = memory.placements[r];
+    JsonValue& place = placements.push(JsonValue::object());
+    place.set("resource", lowered.resources[r].name);
+    place.set("block", p.block);
+    place.set("offset", p.offset);
+    place.set("bytes", p.size);
+    if (!p.predecessors.empty()) {
+      JsonValue& preds = place.set("takes_over_from", JsonValue::array());
+      for (int q : p.predecessors) preds.push(lowered.resources[q].name);
+    }
+  }
+  return out;
+}
+
+}  // namespace lg

@@ -1,0 +1,41 @@
+// Phase 9, alias: places resources in memory blocks. Transient and exported resources share
+// block 0: resources whose lifetimes do not overlap may share bytes (greedy by size, best-fit
+// gap). Cached and history resources keep their own bytes in block 1. Each placement records
+// the resources that last held its bytes, which the synchronize phase must wait for.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "graph/compiler/lifetimes.h"
+#include "graph/compiler/lowered_graph.h"
+
+namespace lg {
+
+struct AliasOptions {
+  bool enabled = true;
+  uint64_t image_alignment = 4096;
+  uint64_t buffer_alignment = 256;
+};
+
+struct MemoryBlock {
+  uint64_t size = 0;
+  bool aliased = false;  // resources inside may share bytes
+};
+
+struct Placement {
+  int block = -1;  // -1: not placed (no pass touches the resource)
+  uint64_t offset = 0;
+  uint64_t size = 0;                      // bytes reserved (the resource's size)
+  std::vector<int> predecessors;          // resources that last held these bytes
+};
+
+struct MemoryLayout {
+  std::vector<MemoryBlock> blocks;  // [0] frame-transient, [1] persistent
+  std::vector<Placement> placements;
+};
+
+MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes, const AliasOptions& options);
+JsonValue dump_memory(const LoweredGraph& lowered, const MemoryLayout& memory);
+
+}  // namespace lg

@@ -1,0 +1,51 @@
+#include "graph/compiler/cull.h"
+
+namespace lg {
+
+int forwarded_input(const ResolvedGraph& resolved, const NodeStates& states, int node, int port) {
+  const BypassRule& rule = resolved.nodes[node].schema->bypass[states[node].bypass_rule];
+  for (const auto& [out, in] : rule.forward)
+    if (out == port) return in;
+  return -1;
+}
+
+NodeStates cull(const ResolvedGraph& resolved, NodeStates states) {
+  const size_t count = resolved.nodes.size();
+  std::vector<char> live(count, 0);
+  std::vector<int> stack;
+  auto visit = [&](int n) {
+    if (!live[n]) live[n] = 1, stack.push_back(n);
+  };
+  for (const auto& [node, port] : resolved.outputs) visit(node);
+  for (size_t n = 0; n < count; ++n)
+    if (resolved.nodes[n].schema->is_output) visit(static_cast<int>(n));
+  while (!stack.empty()) {
+    int n = stack.back();
+    stack.pop_back();
+    const ResolvedNode& rn = resolved.nodes[n];
+    for (size_t i = 0; i < rn.input_link.size(); ++i) {
+      int li = rn.input_link[i];
+      if (li < 0) continue;
+      if (states[n].kind == NodeState::Kind::bypassed) {
+        bool forwarded = false;
+        for (const auto& [out, in] : rn.schema->bypass[states[n].bypass_rule].forward) forwarded |= in == static_cast<int>(i);
+        if (!forwarded) continue;
+      }
+      visit(resolved.links[li].from_node);
+    }
+  }
+  std::vector<int> bypassed_consumer(count, -1);
+  for (const auto& l : resolved.links)
+    if (!live[l.from_node] && live[l.to_node] && states[l.to_node].kind == NodeState::Kind::bypassed)
+      bypassed_consumer[l.from_node] = l.to_node;
+  for (size_t n = 0; n < count; ++n) {
+    if (live[n]) continue;
+    states[n].kind = NodeState::Kind::culled;
+    int consumer = bypassed_consumer[n];
+    states[n].reason = consumer < 0 ? "no output depends on it"
+                                    : "only '" + resolved.graph->nodes[consumer].id + "' uses it, and that node is bypassed";
+  }
+  return states;
+}
+
+}  // namespace lg

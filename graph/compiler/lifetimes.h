@@ -1,0 +1,18 @@
+// Phase 8, lifetimes: the first and last scheduled pass that touches each resource. Results of
+// the frame live to its end; cached and history resources live across frames.
+#pragma once
+
+#include <vector>
+
+#include "graph/compiler/lowered_graph.h"
+
+namespace lg {
+
+struct Lifetime {
+  int first = -1, last = -1;  // positions in the schedule; -1 when no pass touches it
+  bool used() const { return first >= 0; }
+};
+
+std::vector<Lifetime> lifetimes(const LoweredGraph& lowered, const std::vector<int>& order);
+
+}  // namespace lg

@@ -1,0 +1,331 @@
+#include "graph/compiler/lower.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "graph/compiler/cull.h"
+#include "graph/json_writer.h"
+#include "graph/limits.h"
+
+namespace lg {
+namespace {
+
+uint64_t fnv1a(uint64_t h, std::string_view text) {
+  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+constexpr uint64_t fnv_basis = 0xcbf29ce484222325ull;
+
+uint32_t full_mip_count(uint32_t w, uint32_t h) {
+  uint32_t n = 1;
+  while ((std::max(w, h) >> n) > 0) ++n;
+  return n;
+}
+
+class Lowerer {
+ public:
+  Lowerer(const ResolvedGraph& r, const NodeStates& s, FrameSize f, const AssetRoots& roots, Diagnostics& d)
+      : r_(r), s_(s), frame_(f), roots_(roots), d_(d) {}
+
+  LoweredGraph run(const std::vector<int>& order) {
+    const size_t count = r_.nodes.size();
+    out_.nodes.resize(count);
+    port_res_.resize(count);
+    previous_.resize(count);
+    for (size_t n = 0; n < count; ++n) {
+      port_res_[n].resize(r_.nodes[n].schema->outputs.size());
+      previous_[n].resize(r_.nodes[n].schema->outputs.size());
+    }
+    for (int n : order) {
+      if (s_[n].kind == NodeState::Kind::culled) continue;
+      if (s_[n].kind == NodeState::Kind::bypassed) forward(n);
+      else lower_node(n);
+    }
+    for (const auto& [pass, access, link] : deferred_history_) bind_history(pass, access, link);
+    for (const auto& [node, port] : r_.outputs) export_resources(port_res_[node][port]);
+    for (int n : order)
+      if (s_[n].kind == NodeState::Kind::active && r_.nodes[n].schema->is_output)
+        for (int li : r_.nodes[n].input_link)
+          if (li >= 0) export_resources(source_of(li));
+    return std::move(out_);
+  }
+
+ private:
+  const ResolvedGraph& r_;
+  const NodeStates& s_;
+  FrameSize frame_;
+  const AssetRoots& roots_;
+  Diagnostics& d_;
+  LoweredGraph out_;
+  std::vector<std::vector<std::vector<int>>> port_res_;  // [node][output] -> resource per component
+  std::vector<std::vector<std::vector<int>>> previous_;  // the same, previous-frame copies
+  std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
+
+  const std::string& id(int n) const { return r_.graph->nodes[n].id; }
+
+  const std::vector<int>& source_of(int link) const {
+    const ResolvedLink& l = r_.links[link];
+    return port_res_[l.from_node][l.from_port];
+  }
+
+  void forward(int n) {
+    for (size_t o = 0; o < port_res_[n].size(); ++o) {
+      int in = forwarded_input(r_, s_, n, static_cast<int>(o));
+      int li = r_.nodes[n].input_link[in];
+      if (li >= 0) port_res_[n][o] = source_of(li);
+    }
+  }
+
+  void export_resources(const std::vector<int>& list) {
+    for (int res : list)
+      if (out_.resources[res].lifetime == ResourceLifetime::transient) out_.resources[res].lifetime = ResourceLifetime::exported;
+  }
+
+  std::optional<double> number_param(int n, int param) const {
+    const JsonValue& v = r_.nodes[n].params[param];
+    return v.is_number() ? std::optional<double>(v.as_number()) : std::nullopt;
+  }
+
+  // Width, height, layers and mips of an output or internal resource of node n.
+  void size(int n, const PortSpec& spec, LoweredResource& res) {
+    const SizeRule& rule = spec.size;
+    double w = frame_.width, h = frame_.height;
+    const ResolvedNode& rn = r_.nodes[n];
+    switch (rule.from) {
+      case SizeRule::From::frame: break;
+      case SizeRule::From::fixed: w = rule.fixed[0], h = rule.fixed[1]; break;
+      case SizeRule::From::input: {
+        int li = rn.input_link[rule.ref];
+        if (li >= 0 && !source_of(li).empty()) {
+          const LoweredResource& src = out_.resources[source_of(li).front()];
+          w = src.width, h = src.height;
+        }
+        break;
+      }
+      case SizeRule::From::param: {
+        const JsonValue& v = rn.params[rule.ref];
+        if (v.is_array() && v.items().size() == 2) w = v.items()[0].as_number(), h = v.items()[1].as_number();
+        else if (v.is_number()) w = h = v.as_number();
+        break;
+      }
+    }
+    double scale = rule.scale_param >= 0 ? number_param(n, rule.scale_param).value_or(1) : rule.scale;
+    res.width = static_cast<uint32_t>(std::max(1.0, std::floor(w * scale)));
+    res.height = static_cast<uint32_t>(std::max(1.0, std::floor(h * scale)));
+    res.layers = res.kind == ResourceKind::cube ? 6 : 1;
+    uint32_t full = full_mip_count(res.width, res.height);
+    switch (rule.mips) {
+      case SizeRule::Mips::one: res.mips = 1; break;
+      case SizeRule::Mips::full: res.mips = full; break;
+      case SizeRule::Mips::param: res.mips = std::min(full, static_cast<uint32_t>(number_param(n, rule.mips_param).value_or(1))); break;
+      case SizeRule::Mips::fixed: res.mips = std::min(full, rule.mips_fixed); break;
+    }
+    if (res.kind == ResourceKind::buffer) {
+      uint32_t elements = 1;
+      if (rule.sh_order_param >= 0) {
+        uint32_t order = static_cast<uint32_t>(number_param(n, rule.sh_order_param).value_or(2));
+        elements = (order + 1) * (order + 1);
+      }
+      res.width = elements, res.height = 1, res.mips = 1;
+    }
+    if (res.width > limits::max_image_extent || res.height > limits::max_image_extent)
+      d_.error(r_.graph->nodes[n].pos, json_pointer_append("/nodes", static_cast<size_t>(n)),
+               "'" + res.name + "' would be " + std::to_string(res.width) + "x" + std::to_string(res.height) +
+                   ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
+  }
+
+  std::vector<int> make_resources(int n, const PortSpec& spec, const std::string& name) {
+    std::vector<int> list;
+    for (const PortComponent& c : port_components(spec.type)) {
+      LoweredResource res;
+      res.name = c.name.empty() ? name : name + '.' + c.name;
+      res.node = n;
+      res.kind = resource_kind_of(spec.type);
+      res.format = c.format;
+      res.depth_format = c.depth;
+      size(n, spec, res);
+      res.bytes = resource_bytes_for(res, c.bytes_per_texel);
+      list.push_back(static_cast<int>(out_.resources.size()));
+      out_.resources.push_back(std::move(res));
+    }
+    return list;
+  }
+
+  static uint64_t resource_bytes_for(const LoweredResource& r, uint32_t bytes_per_texel) {
+    uint64_t texels = 0;
+    for (uint32_t m = 0; m < r.mips; ++m)
+      texels += uint64_t{std::max(1u, r.width >> m)} * std::max(1u, r.height >> m);
+    return texels * r.layers * bytes_per_texel;
+  }
+
+  JsonValue node_params(int n) {
+    const ResolvedNode& rn = r_.nodes[n];
+    JsonValue params = JsonValue::object();
+    for (size_t p = 0; p < rn.params.size(); ++p) {
+      const ParamSpec& spec = rn.schema->params[p];
+      if (spec.type == ParamType::path && rn.params[p].is_string()) {
+        auto path = resolve_asset_path(r_.graph->file, rn.params[p].as_string(), roots_, spec.extensions, nullptr);
+        params.set(spec.name, path ? JsonValue(*path) : rn.params[p]);
+      } else {
+        params.set(spec.name, rn.params[p]);
+      }
+    }
+    return params;
+  }
+
+  void lower_node(int n) {
+    const ResolvedNode& rn = r_.nodes[n];
+    const NodeSchema& s = *rn.schema;
+    LoweredNode& node = out_.nodes[n];
+    node.params = node_params(n);
+
+    // Static when the schema says so and every input is static; the key covers the type,
+    // the params and the inputs' keys, so it changes whenever the result could.
+    bool is_static = s.is_static;
+    uint64_t key = 0;
+    if (is_static) {
+      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(node.params));
+      for (int li : rn.input_link) {
+        if (li < 0) continue;
+        if (r_.links[li].history) {
+          is_static = false;
+          break;
+        }
+        for (int res : source_of(li)) {
+          const LoweredNode& producer = out_.nodes[out_.resources[res].node];
+          is_static &= producer.is_static;
+          key = fnv1a(key, std::to_string(producer.cache_key));
+        }
+      }
+    }
+    node.is_static = is_static;
+    node.cache_key = is_static ? key : 0;
+
+    for (size_t o = 0; o < s.outputs.size(); ++o) {
+      port_res_[n][o] = make_resources(n, s.outputs[o], id(n) + '.' + s.outputs[o].name);
+      if (is_static)
+        for (int res : port_res_[n][o]) out_.resources[res].lifetime = ResourceLifetime::cached;
+    }
+    size_t first_pass = out_.passes.size();
+    std::vector<std::vector<int>> internal;
+    for (const auto& spec : s.resources) internal.push_back(make_resources(n, spec, id(n) + '/' + spec.name));
+
+    for (size_t p = 0; p < s.passes.size(); ++p) {
+      if (!s_[n].dropped_passes[p].empty()) continue;
+      const PassSpec& spec = s.passes[p];
+      LoweredPass pass;
+      pass.node = n;
+      pass.pass = static_cast<int>(p);
+      pass.name = id(n) + '/' + spec.name;
+      pass.queue = spec.queue;
+      pass.is_static = is_static;
+      pass.cache_key = is_static ? fnv1a(key, spec.name) : 0;
+      int pass_index = static_cast<int>(out_.passes.size());
+      for (const PassUse& use : spec.uses) {
+        const std::vector<int>* list = nullptr;
+        if (use.target == PassUse::Target::output) list = &port_res_[n][use.index];
+        else if (use.target == PassUse::Target::internal) list = &internal[use.index];
+        else if (int li = rn.input_link[use.index]; li >= 0) {
+          if (r_.links[li].history) {
+            deferred_history_.emplace_back(pass_index, pass.accesses.size(), li);
+            pass.accesses.push_back({-1, use.usage, use.target, use.index, use.component});
+            continue;
+          }
+          list = &source_of(li);
+        }
+        if (!list) continue;  // an optional input left unlinked
+        for (size_t c = 0; c < list->size(); ++c)
+          if (use.component < 0 || use.component == static_cast<int>(c))
+            pass.accesses.push_back({(*list)[c], use.usage, use.target, use.index, static_cast<int>(c)});
+      }
+      out_.passes.push_back(std::move(pass));
+    }
+    drop_unwritten_internal_reads(first_pass);
+  }
+
+  // A dropped pass (say, shadows in a scene without shadow casters) leaves internal resources
+  // that nothing writes: later passes of the node must not read them, so they go unbound.
+  void drop_unwritten_internal_reads(size_t first_pass) {
+    std::vector<int> written;
+    for (size_t p = first_pass; p < out_.passes.size(); ++p)
+      for (const auto& a : out_.passes[p].accesses)
+        if (a.target == PassUse::Target::internal && usage_writes(a.usage)) written.push_back(a.resource);
+    for (size_t p = first_pass; p < out_.passes.size(); ++p)
+      std::erase_if(out_.passes[p].accesses, [&](const LoweredAccess& a) {
+        return a.target == PassUse::Target::internal && std::find(written.begin(), written.end(), a.resource) == written.end();
+      });
+  }
+
+  // A history input reads a previous-frame copy of its source, made once per source port.
+  void bind_history(int pass, size_t slot, int link) {
+    const ResolvedLink& l = r_.links[link];
+    std::vector<int>& previous = previous_[l.from_node][l.from_port];
+    const std::vector<int>& current = port_res_[l.from_node][l.from_port];
+    if (previous.empty()) {
+      for (int res : current) {
+        out_.resources[res].lifetime = ResourceLifetime::history;
+        LoweredResource copy = out_.resources[res];
+        copy.name += "@previous";
+        copy.history_of = res;
+        previous.push_back(static_cast<int>(out_.resources.size()));
+        out_.resources.push_back(std::move(copy));
+      }
+    }
+    auto& accesses = out_.passes[pass].accesses;
+    LoweredAccess placeholder = accesses[slot];  // its component: one, or -1 for all
+    accesses.erase(accesses.begin() + static_cast<long>(slot));
+    for (size_t c = previous.size(); c-- > 0;) {
+      if (placeholder.component >= 0 && placeholder.component != static_cast<int>(c)) continue;
+      LoweredAccess a = placeholder;
+      a.resource = previous[c];
+      a.component = static_cast<int>(c);
+      accesses.insert(accesses.begin() + static_cast<long>(slot), a);
+    }
+  }
+};
+
+}  // namespace
+
+std::string_view lifetime_name(ResourceLifetime l) {
+  constexpr std::string_view names[] = {"transient", "exported", "cached", "history"};
+  return names[static_cast<int>(l)];
+}
+
+std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const std::vector<int>& topo_order,
+                                  const NodeStates& states, FrameSize frame, const AssetRoots& roots,
+                                  Diagnostics& diagnostics) {
+  size_t before = diagnostics.error_count();
+  LoweredGraph out = Lowerer(resolved, states, frame, roots, diagnostics).run(topo_order);
+  if (diagnostics.error_count() > before) return std::nullopt;
+  return out;
+}
+
+JsonValue dump_lowered(const LoweredGraph& lowered) {
+  JsonValue out = JsonValue::object();
+  JsonValue& passes = out.set("passes", JsonValue::array());
+  for (const auto& p : lowered.passes) {
+    JsonValue& pass = passes.push(JsonValue::object());
+    pass.set("name", p.name);
+    JsonValue& uses = pass.set("uses", JsonValue::object());
+    for (const auto& a : p.accesses) uses.set(lowered.resources[a.resource].name, std::string(usage_name(a.usage)));
+    if (p.is_static) pass.set("static", true);
+  }
+  JsonValue& resources = out.set("resources", JsonValue::array());
+  for (const auto& r : lowered.resources) {
+    JsonValue& res = resources.push(JsonValue::object());
+    res.set("name", r.name);
+    res.set("format", r.format);
+    JsonValue extent = JsonValue::array();
+    extent.push(static_cast<int64_t>(r.width));
+    extent.push(static_cast<int64_t>(r.height));
+    res.set("extent", extent);
+    res.set("layers", static_cast<int64_t>(r.layers));
+    res.set("mips", static_cast<int64_t>(r.mips));
+    res.set("bytes", r.bytes);
+    res.set("lifetime", std::string(lifetime_name(r.lifetime)));
+  }
+  return out;
+}
+
+}  // namespace lg

@@ -1,0 +1,25 @@
+// Phase 6, lower: turns each live node into its schema's passes and each port into resources
+// sized for the frame. Bypassed nodes become aliases of their inputs; history links get a
+// previous-frame copy; static nodes whose inputs are static get a cache key.
+#pragma once
+
+#include <optional>
+
+#include "graph/asset_paths.h"
+#include "graph/compiler/lowered_graph.h"
+#include "graph/compiler/node_states.h"
+#include "graph/compiler/resolved_graph.h"
+#include "graph/diagnostics.h"
+
+namespace lg {
+
+struct FrameSize {
+  uint32_t width = 1280, height = 720;
+};
+
+std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const std::vector<int>& topo_order,
+                                  const NodeStates& states, FrameSize frame, const AssetRoots& roots,
+                                  Diagnostics& diagnostics);
+JsonValue dump_lowered(const LoweredGraph& lowered);
+
+}  // namespace lg

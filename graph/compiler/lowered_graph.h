@@ -1,0 +1,65 @@
+// IR of phase 6 (lower): the passes the live nodes turn into and the resources they touch,
+// with sizes in texels and bytes. Later phases order the passes and place the resources.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "graph/json_value.h"
+#include "graph/port_type.h"
+#include "graph/schema.h"
+
+namespace lg {
+
+enum class ResourceLifetime : uint8_t {
+  transient,  // lives within one frame; memory may be shared with others (aliased)
+  exported,   // a result of the frame: lives to the end of the frame
+  cached,     // output of a static node: kept across frames, recomputed only when its key changes
+  history,    // read by the next frame through a history input: kept across frames
+};
+std::string_view lifetime_name(ResourceLifetime l);
+
+struct LoweredResource {
+  std::string name;  // "bloom.color", "gbuf.gbuffer.depth", "bloom/chain", "gtao.ao@previous"
+  int node = -1;
+  ResourceKind kind = ResourceKind::texture2d;
+  std::string format;
+  bool depth_format = false;
+  uint32_t width = 1, height = 1, layers = 1, mips = 1;
+  uint64_t bytes = 0;
+  ResourceLifetime lifetime = ResourceLifetime::transient;
+  int history_of = -1;  // for a previous-frame copy: the resource written this frame
+};
+
+struct LoweredAccess {
+  int resource = -1;
+  Usage usage = Usage::sampled;
+  PassUse::Target target = PassUse::Target::input;  // which of the node's ports, for binding
+  int port = -1;
+  int component = 0;  // within a bundle port (G-buffer)
+};
+
+struct LoweredPass {
+  int node = -1;
+  int pass = -1;  // index into the schema's passes
+  std::string name;  // "bloom/downsample"
+  Queue queue = Queue::compute;
+  std::vector<LoweredAccess> accesses;
+  bool is_static = false;
+  uint64_t cache_key = 0;  // static passes only
+};
+
+struct LoweredNode {
+  JsonValue params = JsonValue::object();  // defaults filled, paths made absolute
+  bool is_static = false;
+  uint64_t cache_key = 0;
+};
+
+struct LoweredGraph {
+  std::vector<LoweredNode> nodes;  // one per graph node (culled ones stay empty)
+  std::vector<LoweredPass> passes;  // in a valid (topological) order
+  std::vector<LoweredResource> resources;
+};
+
+}  // namespace lg

@@ -1,0 +1,18 @@
+// IR of phases 4 and 5 (specialize, cull): what happens to each node and pass, and why.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lg {
+
+struct NodeState {
+  enum class Kind : uint8_t { active, bypassed, culled } kind = Kind::active;
+  std::string reason;                      // for bypassed and culled nodes
+  int bypass_rule = -1;                    // index into NodeSchema::bypass when bypassed
+  std::vector<std::string> dropped_passes; // per schema pass: why it is dropped, empty if kept
+};
+
+using NodeStates = std::vector<NodeState>;
+
+}  // namespace lg

@@ -1,0 +1,173 @@
+#include "graph/compiler/resolve.h"
+
+#include <unordered_map>
+
+namespace lg {
+namespace {
+
+template <class T>
+std::string name_list(const std::vector<T>& items) {
+  if (items.empty()) return "none";
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item.name;
+  return out;
+}
+
+template <class T>
+std::vector<std::string> names_of(const std::vector<T>& items) {
+  std::vector<std::string> out;
+  for (const auto& item : items) out.push_back(item.name);
+  return out;
+}
+
+class Resolver {
+ public:
+  Resolver(const Graph& g, const Registry& r, Diagnostics& d) : g_(g), r_(r), d_(d) {}
+
+  ResolvedGraph run() {
+    out_.graph = &g_;
+    out_.nodes.resize(g_.nodes.size());
+    ids_.reserve(g_.nodes.size());
+    for (size_t k = 0; k < g_.nodes.size(); ++k) {
+      ids_.emplace(g_.nodes[k].id, static_cast<int>(k));
+      node(static_cast<int>(k));
+    }
+    for (size_t k = 0; k < g_.links.size(); ++k) link(static_cast<int>(k));
+    for (size_t k = 0; k < g_.outputs.size(); ++k) output(static_cast<int>(k));
+    return std::move(out_);
+  }
+
+ private:
+  const Graph& g_;
+  const Registry& r_;
+  Diagnostics& d_;
+  ResolvedGraph out_;
+  std::unordered_map<std::string_view, int> ids_;
+
+  static std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
+
+  void node(int n) {
+    const GraphNode& gn = g_.nodes[n];
+    ResolvedNode& rn = out_.nodes[n];
+    rn.schema = r_.find(gn.type);
+    if (!rn.schema) {
+      std::string message = "unknown node type '" + gn.type + "'";
+      std::string guess = r_.closest_type(gn.type);
+      message += guess.empty() ? "; `lumagraph nodes` lists the known types" : "; did you mean '" + guess + "'?";
+      d_.error(gn.type_pos, node_pointer(n) + "/type", message);
+      return;
+    }
+    const NodeSchema& s = *rn.schema;
+    rn.input_link.assign(s.inputs.size(), -1);
+    rn.params.reserve(s.params.size());
+    for (const auto& p : s.params) rn.params.push_back(p.default_value);
+    for (const auto& [name, value] : gn.params.members()) {
+      int index = s.find_param(name);
+      if (index >= 0) {
+        rn.params[index] = value;
+        continue;
+      }
+      std::string message = "node '" + gn.id + "' (" + s.type + ") has no param '" + name + "'";
+      std::string guess = closest_name(name, names_of(s.params));
+      message += guess.empty() ? "; its params are: " + name_list(s.params) : "; did you mean '" + guess + "'?";
+      d_.error(value.pos(), node_pointer(n) + "/params/" + name, message);
+    }
+  }
+
+  // Finds the node of a reference, or reports it. Returns -1 when unknown or untyped.
+  int find_node(const PortRef& ref, SourcePos pos, const std::string& pointer) {
+    auto it = ids_.find(ref.node);
+    if (it == ids_.end()) {
+      std::vector<std::string> ids;
+      for (const auto& n : g_.nodes) ids.push_back(n.id);
+      std::string guess = closest_name(ref.node, ids);
+      d_.error(pos, pointer, "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+      return -1;
+    }
+    return out_.nodes[it->second].schema ? it->second : -1;
+  }
+
+  int find_port(const PortRef& ref, int node, bool output, SourcePos pos, const std::string& pointer) {
+    const NodeSchema& s = *out_.nodes[node].schema;
+    int index = output ? s.find_output(ref.port) : s.find_input(ref.port);
+    if (index >= 0) return index;
+    const auto& ports = output ? s.outputs : s.inputs;
+    const auto& other = output ? s.inputs : s.outputs;
+    std::string message = "node '" + ref.node + "' (" + s.type + ") has no " + (output ? "output" : "input") + " '" +
+                          ref.port + "'";
+    bool wrong_direction = false;
+    for (const auto& p : other) wrong_direction |= p.name == ref.port;
+    if (wrong_direction) message += std::string("; '") + ref.port + "' is an " + (output ? "input" : "output");
+    else {
+      std::string guess = closest_name(ref.port, names_of(ports));
+      message += guess.empty() ? std::string("; its ") + (output ? "outputs" : "inputs") + " are: " + name_list(ports)
+                               : "; did you mean '" + guess + "'?";
+    }
+    d_.error(pos, pointer, message);
+    return -1;
+  }
+
+  void link(int k) {
+    const GraphLink& gl = g_.links[k];
+    std::string p = json_pointer_append("/links", static_cast<size_t>(k));
+    ResolvedLink rl;
+    rl.source = k;
+    rl.from_node = find_node(gl.from, gl.from_pos, p + "/from");
+    rl.to_node = find_node(gl.to, gl.to_pos, p + "/to");
+    if (rl.from_node >= 0) rl.from_port = find_port(gl.from, rl.from_node, true, gl.from_pos, p + "/from");
+    if (rl.to_node >= 0) rl.to_port = find_port(gl.to, rl.to_node, false, gl.to_pos, p + "/to");
+    if (rl.from_port < 0 || rl.to_port < 0) return;
+    rl.history = out_.nodes[rl.to_node].schema->inputs[rl.to_port].history;
+    int& slot = out_.nodes[rl.to_node].input_link[rl.to_port];
+    int index = static_cast<int>(out_.links.size());
+    if (slot >= 0) {
+      const GraphLink& first = g_.links[out_.links[slot].source];
+      d_.error(gl.to_pos, p + "/to",
+               "input '" + gl.to.text() + "' is already linked from '" + first.from.text() + "' (line " +
+                   std::to_string(first.to_pos.line) + "); an input takes one link");
+      return;
+    }
+    slot = index;
+    out_.links.push_back(rl);
+  }
+
+  void output(int k) {
+    const GraphOutput& o = g_.outputs[k];
+    std::string p = json_pointer_append("/outputs", static_cast<size_t>(k));
+    int node = find_node(o.port, o.pos, p);
+    if (node < 0) return;
+    int port = find_port(o.port, node, true, o.pos, p);
+    if (port >= 0) out_.outputs.emplace_back(node, port);
+  }
+};
+
+}  // namespace
+
+ResolvedGraph resolve(const Graph& graph, const Registry& registry, Diagnostics& diagnostics) {
+  return Resolver(graph, registry, diagnostics).run();
+}
+
+JsonValue dump_resolved(const ResolvedGraph& resolved) {
+  const Graph& g = *resolved.graph;
+  JsonValue out = JsonValue::object();
+  JsonValue& nodes = out.set("nodes", JsonValue::array());
+  for (size_t n = 0; n < resolved.nodes.size(); ++n) {
+    const ResolvedNode& rn = resolved.nodes[n];
+    JsonValue& node = nodes.push(JsonValue::object());
+    node.set("id", g.nodes[n].id);
+    node.set("type", rn.schema ? rn.schema->type : "(unknown)");
+    if (!rn.schema) continue;
+    JsonValue& params = node.set("params", JsonValue::object());
+    for (size_t p = 0; p < rn.params.size(); ++p) params.set(rn.schema->params[p].name, rn.params[p]);
+  }
+  JsonValue& links = out.set("links", JsonValue::array());
+  for (const auto& l : resolved.links) {
+    JsonValue& link = links.push(JsonValue::object());
+    link.set("from", g.nodes[l.from_node].id + "." + resolved.nodes[l.from_node].schema->outputs[l.from_port].name);
+    link.set("to", g.nodes[l.to_node].id + "." + resolved.nodes[l.to_node].schema->inputs[l.to_port].name);
+    if (l.history) link.set("history", true);
+  }
+  return out;
+}
+
+}  // namespace lg

@@ -1,0 +1,123 @@
+#include "graph/compiler/synchronize.h"
+
+#include <algorithm>
+
+namespace lg {
+namespace {
+
+struct Group {
+  int first = -1;  // schedule position of its first pass
+  AccessInfo info;
+};
+
+AccessInfo merge(AccessInfo a, const AccessInfo& b) {
+  a.stages |= b.stages;
+  a.access |= b.access;
+  a.writes |= b.writes;
+  if (a.layout != b.layout) a.layout = Layout::general;
+  return a;
+}
+
+BarrierReason reason_between(const AccessInfo& before, const AccessInfo& after) {
+  if (before.writes && after.writes) return BarrierReason::write_after_write;
+  if (before.writes) return BarrierReason::read_after_write;
+  if (after.writes) return BarrierReason::write_after_read;
+  return BarrierReason::layout_transition;
+}
+
+}  // namespace
+
+AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource) {
+  const uint32_t shader = queue == Queue::compute ? stage_compute_shader : stage_fragment_shader;
+  const bool buffer = resource.kind == ResourceKind::buffer;
+  const Layout shader_layout = buffer ? Layout::none : Layout::general;
+  const uint32_t depth_stages = stage_early_fragment_tests | stage_late_fragment_tests;
+  const uint32_t depth_access = access_depth_stencil_attachment_read | access_depth_stencil_attachment_write;
+  switch (usage) {
+    case Usage::sampled: return {shader, access_shader_sampled_read, buffer ? Layout::none : Layout::read_only, false};
+    case Usage::storage_read: return {shader, access_shader_storage_read, shader_layout, false};
+    case Usage::storage_write: return {shader, access_shader_storage_write, shader_layout, true};
+    case Usage::storage_read_write:
+      return {shader, access_shader_storage_read | access_shader_storage_write, shader_layout, true};
+    case Usage::attachment_write:
+      if (resource.depth_format) return {depth_stages, depth_access, Layout::attachment, true};
+      return {stage_color_attachment_output, access_color_attachment_write, Layout::attachment, true};
+    case Usage::attachment_blend:
+      if (resource.depth_format) return {depth_stages, depth_access, Layout::attachment, true};
+      return {stage_color_attachment_output, access_color_attachment_read | access_color_attachment_write,
+              Layout::attachment, true};
+    case Usage::buffer_read: return {shader, access_shader_storage_read, Layout::none, false};
+    case Usage::buffer_write: return {shader, access_shader_storage_write, Layout::none, true};
+  }
+  return {};
+}
+
+std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory) {
+  const size_t count = lowered.resources.size();
+  std::vector<std::vector<Group>> groups(count);
+  for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
+    const LoweredPass& pass = lowered.passes[order[pos]];
+    for (const auto& a : pass.accesses) {
+      AccessInfo info = access_info(a.usage, pass.queue, lowered.resources[a.resource]);
+      auto& list = groups[a.resource];
+      if (!list.empty() && list.back().first == pos) {  // the same pass uses it twice
+        list.back().info = merge(list.back().info, info);
+        continue;
+      }
+      bool joins = !list.empty() && !info.writes && !list.back().info.writes && list.back().info.layout == info.layout;
+      if (joins) list.back().info = merge(list.back().info, info);
+      else list.push_back({pos, info});
+    }
+  }
+  // A current history resource's partner (its previous-frame copy).
+  std::vector<int> previous_copy(count, -1);
+  for (size_t r = 0; r < count; ++r)
+    if (lowered.resources[r].history_of >= 0) previous_copy[lowered.resources[r].history_of] = static_cast<int>(r);
+
+  std::vector<Barrier> out;
+  for (size_t r = 0; r < count; ++r) {
+    const auto& list = groups[r];
+    if (list.empty()) continue;
+    const LoweredResource& res = lowered.resources[r];
+    const bool image = res.kind != ResourceKind::buffer;
+
+    // Before the first group: wait for whoever held these bytes last.
+    Barrier first;
+    first.before = list.front().first;
+    first.resource = static_cast<int>(r);
+    first.dst_stages = list.front().info.stages;
+    first.dst_access = list.front().info.access;
+    first.old_layout = image ? Layout::undefined : Layout::none;
+    first.new_layout = list.front().info.layout;
+    first.reason = BarrierReason::first_use;
+    auto wait_for = [&](int other) {
+      if (groups[other].empty()) return;
+      const AccessInfo& last = groups[other].back().info;
+      first.src_stages |= last.stages;
+      first.src_access |= last.access & access_write_mask;
+    };
+    if (res.history_of >= 0) {
+      wait_for(res.history_of);  // written last frame, in the layout it ended that frame in
+      if (!groups[res.history_of].empty()) first.old_layout = groups[res.history_of].back().info.layout;
+      first.reason = BarrierReason::history;
+    } else if (previous_copy[r] >= 0) {
+      wait_for(previous_copy[r]);  // last frame's reads of these bytes, before this frame writes
+      first.reason = BarrierReason::history;
+    } else if (!memory.placements[r].predecessors.empty()) {
+      for (int p : memory.placements[r].predecessors) wait_for(p);
+      first.reason = BarrierReason::alias;
+    }
+    if (image || first.reason != BarrierReason::first_use) out.push_back(first);
+
+    for (size_t g = 1; g < list.size(); ++g) {
+      const AccessInfo& before = list[g - 1].info;
+      const AccessInfo& after = list[g].info;
+      out.push_back({list[g].first, static_cast<int>(r), before.stages, before.access & access_write_mask, after.stages,
+                     after.access, before.layout, after.layout, reason_between(before, after)});
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Barrier& a, const Barrier& b) { return a.before < b.before; });
+  return out;
+}
+
+}  // namespace lg

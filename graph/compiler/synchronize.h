@@ -1,0 +1,27 @@
+// Phase 10, synchronize: the barriers the schedule needs. Per resource, its accesses in
+// schedule order form groups: a run of reads in one layout, or a single write. Exactly one
+// barrier separates consecutive groups (read after write, write after read, write after write,
+// or a layout change between reads), and one precedes the first group of an image (its layout
+// transition, waiting for whatever held its bytes before: an aliased resource, or the other
+// half of a history pair).
+#pragma once
+
+#include <vector>
+
+#include "graph/compiler/alias.h"
+#include "graph/compiler/barrier.h"
+#include "graph/compiler/lowered_graph.h"
+
+namespace lg {
+
+// Stages, access and layout of one use of a resource by a pass.
+struct AccessInfo {
+  uint32_t stages = 0, access = 0;
+  Layout layout = Layout::none;
+  bool writes = false;
+};
+AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource);
+
+std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory);
+
+}  // namespace lg

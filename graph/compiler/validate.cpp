@@ -1,0 +1,169 @@
+#include "graph/compiler/validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+namespace lg {
+namespace {
+
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string range_text(const ParamSpec& spec) {
+  if (spec.min && spec.max) return " from " + format_number(*spec.min) + " to " + format_number(*spec.max);
+  if (spec.min) return " of at least " + format_number(*spec.min);
+  if (spec.max) return " of at most " + format_number(*spec.max);
+  return "";
+}
+
+bool in_range(const ParamSpec& spec, double v) {
+  return (!spec.min || v >= *spec.min) && (!spec.max || v <= *spec.max);
+}
+
+std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
+
+}  // namespace
+
+std::string check_param_value(const ParamSpec& spec, const JsonValue& v) {
+  bool integral = spec.type == ParamType::int_ || spec.type == ParamType::int2;
+  switch (spec.type) {
+    case ParamType::float_:
+    case ParamType::int_:
+      if (!v.is_number() || (integral && !v.is_integer()) || !in_range(spec, v.as_number()))
+        return std::string(integral ? "an integer" : "a number") + range_text(spec);
+      return {};
+    case ParamType::bool_:
+      return v.is_bool() ? "" : "true or false";
+    case ParamType::enum_: {
+      if (v.is_string() && std::find(spec.values.begin(), spec.values.end(), v.as_string()) != spec.values.end()) return {};
+      std::string list;
+      for (const auto& e : spec.values) list += (list.empty() ? "" : ", ") + ("\"" + e + "\"");
+      return "one of " + list;
+    }
+    case ParamType::string:
+    case ParamType::path:
+      return v.is_string() ? "" : "a string";
+    case ParamType::float2:
+    case ParamType::float3:
+    case ParamType::float4:
+    case ParamType::int2: {
+      size_t n = param_components(spec.type);
+      bool ok = v.is_array() && v.items().size() == n;
+      for (size_t k = 0; ok && k < n; ++k) {
+        const JsonValue& c = v.items()[k];
+        ok = c.is_number() && (!integral || c.is_integer()) && in_range(spec, c.as_number());
+      }
+      if (ok) return {};
+      return "an array of " + std::to_string(n) + (integral ? " integers" : " numbers") + range_text(spec);
+    }
+  }
+  return "a valid value";
+}
+
+std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
+                                         Diagnostics& diagnostics) {
+  const Graph& g = *resolved.graph;
+  size_t before = diagnostics.error_count();
+  const int node_count = static_cast<int>(resolved.nodes.size());
+  bool has_root = !resolved.outputs.empty();
+
+  for (int n = 0; n < node_count; ++n) {
+    const ResolvedNode& rn = resolved.nodes[n];
+    if (!rn.schema) continue;
+    const NodeSchema& s = *rn.schema;
+    const GraphNode& gn = g.nodes[n];
+    has_root |= s.is_output;
+    for (size_t p = 0; p < s.params.size(); ++p) {
+      const ParamSpec& spec = s.params[p];
+      const JsonValue* written = gn.params.find(spec.name);
+      if (!written) continue;  // defaults are valid by construction (tests check every schema)
+      std::string pointer = node_pointer(n) + "/params/" + spec.name;
+      std::string expected = check_param_value(spec, *written);
+      if (!expected.empty()) {
+        diagnostics.error(written->pos(), pointer,
+                          "param '" + spec.name + "' of node '" + gn.id + "' (" + s.type + ") must be " + expected +
+                              (spec.unit.empty() ? "" : " (" + spec.unit + ")"));
+      } else if (spec.type == ParamType::path) {
+        std::string why;
+        if (!resolve_asset_path(g.file, written->as_string(), roots, spec.extensions, &why))
+          diagnostics.error(written->pos(), pointer, "param '" + spec.name + "' of node '" + gn.id + "': " + why);
+      }
+    }
+    for (size_t i = 0; i < s.inputs.size(); ++i)
+      if (!s.inputs[i].optional && rn.input_link[i] < 0)
+        diagnostics.error(gn.pos, node_pointer(n),
+                          "node '" + gn.id + "' (" + s.type + ") needs its input '" + s.inputs[i].name + "' (" +
+                              s.inputs[i].type.name() + ") linked");
+  }
+
+  for (const auto& l : resolved.links) {
+    const PortSpec& from = resolved.nodes[l.from_node].schema->outputs[l.from_port];
+    const PortSpec& to = resolved.nodes[l.to_node].schema->inputs[l.to_port];
+    std::string why;
+    if (!port_types_compatible(from.type, to.type, &why)) {
+      const GraphLink& gl = g.links[l.source];
+      diagnostics.error(gl.to_pos, json_pointer_append("/links", static_cast<size_t>(l.source)) + "/to",
+                        "cannot link " + gl.from.text() + " (" + from.type.name() + ") to " + gl.to.text() + " (" +
+                            to.type.name() + "): " + why);
+    }
+  }
+
+  if (!has_root && diagnostics.error_count() == before)
+    diagnostics.error({1, 1}, "/outputs", "the graph asks for nothing: list ports under \"outputs\" or add an output node");
+
+  // Kahn's algorithm over non-history links, ties broken by id so file order does not matter.
+  std::vector<std::vector<int>> consumers(node_count);
+  std::vector<int> pending(node_count, 0);
+  for (const auto& l : resolved.links) {
+    if (l.history) continue;
+    consumers[l.from_node].push_back(l.to_node);
+    ++pending[l.to_node];
+  }
+  auto later = [&](int a, int b) { return g.nodes[a].id > g.nodes[b].id; };
+  std::priority_queue<int, std::vector<int>, decltype(later)> ready(later);
+  for (int n = 0; n < node_count; ++n)
+    if (pending[n] == 0) ready.push(n);
+  std::vector<int> order;
+  order.reserve(node_count);
+  while (!ready.empty()) {
+    int n = ready.top();
+    ready.pop();
+    order.push_back(n);
+    for (int c : consumers[n])
+      if (--pending[c] == 0) ready.push(c);
+  }
+  if (static_cast<int>(order.size()) < node_count) {
+    // Walk back along unfinished inputs from an unfinished node until a node repeats: a cycle.
+    int start = -1;
+    for (int n = 0; n < node_count && start < 0; ++n)
+      if (pending[n] > 0) start = n;
+    std::vector<int> seen(node_count, -1), path;
+    int n = start, via_link = -1;
+    while (seen[n] < 0) {
+      seen[n] = static_cast<int>(path.size());
+      path.push_back(n);
+      for (int li : resolved.nodes[n].input_link) {
+        if (li < 0 || resolved.links[li].history || pending[resolved.links[li].from_node] == 0) continue;
+        via_link = li;
+        n = resolved.links[li].from_node;
+        break;
+      }
+    }
+    std::vector<int> cycle(path.begin() + seen[n], path.end());
+    std::reverse(cycle.begin(), cycle.end());
+    std::string text;
+    for (int c : cycle) text += g.nodes[c].id + " -> ";
+    text += g.nodes[cycle.front()].id;
+    const GraphLink& gl = g.links[resolved.links[via_link].source];
+    diagnostics.error(gl.to_pos, json_pointer_append("/links", static_cast<size_t>(resolved.links[via_link].source)) + "/to",
+                      "cycle: " + text + "; a loop is only allowed through a history input");
+  }
+  if (diagnostics.error_count() > before) return std::nullopt;
+  return order;
+}
+
+}  // namespace lg

@@ -1,0 +1,66 @@
+// The compiler's result, as plain data: passes in execution order with what each reads and
+// writes, resources with lifetimes and memory offsets, barriers, cache keys, and every node's
+// fate (active, bypassed, culled, passes dropped) with the reason. The runtime executes it;
+// plan_format.h prints it as JSON, Graphviz dot and a text table.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "graph/compiler/alias.h"
+#include "graph/compiler/barrier.h"
+#include "graph/compiler/lower.h"
+#include "graph/compiler/node_states.h"
+
+namespace lg {
+
+struct PlanNode {
+  std::string id, type;
+  NodeState::Kind state = NodeState::Kind::active;
+  std::string reason;                                           // bypassed or culled: why
+  std::vector<std::pair<std::string, std::string>> dropped;     // (pass, why) for dropped passes
+  JsonValue params = JsonValue::object();                       // defaults filled, paths absolute
+  bool is_static = false;
+};
+
+struct PlanAccess {
+  int resource = -1;
+  Usage usage = Usage::sampled;
+  std::string slot;   // the node's port or internal resource: "in.color", "out.ao", "tmp.chain"
+  int component = 0;  // within a bundle (G-buffer): index into its components
+};
+
+struct PlanPass {
+  std::string name;  // "bloom/downsample"
+  int node = -1;     // index into Plan::nodes
+  std::string pass;  // "downsample"
+  Queue queue = Queue::compute;
+  std::vector<PlanAccess> accesses;
+  bool is_static = false;
+  std::string cache_key;  // hex; empty unless static
+};
+
+struct PlanResource {
+  LoweredResource desc;
+  int first = -1, last = -1;  // schedule positions
+  Placement placement;
+};
+
+struct MemoryTotals {
+  uint64_t transient_unaliased = 0;  // one allocation per transient resource
+  uint64_t transient = 0;            // block 0 with aliasing
+  uint64_t persistent = 0;           // cached and history resources
+};
+
+struct Plan {
+  std::string name, file, scene;
+  FrameSize frame;
+  std::vector<PlanNode> nodes;
+  std::vector<PlanPass> passes;
+  std::vector<PlanResource> resources;
+  std::vector<Barrier> barriers;  // sorted by Barrier::before
+  std::vector<MemoryBlock> blocks;
+  MemoryTotals memory;
+};
+
+}  // namespace lg

@@ -1,0 +1,94 @@
+#include "graph/port_type.h"
+
+#include <map>
+
+namespace lg {
+namespace {
+
+struct KindInfo {
+  ResourceKind resource;
+  std::string words;  // how error messages name the kind
+  std::map<std::string, std::vector<PortComponent>, std::less<>> classes;  // "" when classless
+};
+
+const std::map<std::string, KindInfo, std::less<>>& kinds() {
+  static const std::map<std::string, KindInfo, std::less<>> table = {
+      {"texture2d",
+       {ResourceKind::texture2d,
+        "a 2D texture",
+        {{"hdr", {{"", "rgba16f", 8}}},
+         {"ldr", {{"", "rgba8_srgb", 4}}},
+         {"mask", {{"", "r8", 1}}},
+         {"vector", {{"", "rgba8_snorm", 4}}},
+         {"float", {{"", "r32f", 4}}},
+         {"depth", {{"", "d32f", 4, true}}},
+         {"motion", {{"", "rg16f", 4}}},
+         {"lut", {{"", "rg16f", 4}}}}}},
+      {"cube", {ResourceKind::cube, "a cube map", {{"hdr", {{"", "rgba16f", 8}}}}}},
+      {"texture3d",
+       {ResourceKind::texture3d, "a 3D texture", {{"sh", {{"", "rgba16f", 8}}}, {"mask", {{"", "r8", 1}}}}}},
+      {"sh", {ResourceKind::buffer, "a spherical-harmonics buffer", {{"", {{"", "buffer", 16}}}}}},
+      {"scalar", {ResourceKind::buffer, "a scalar", {{"", {{"", "buffer", 4}}}}}},
+      {"gbuffer",
+       {ResourceKind::texture2d,
+        "a G-buffer",
+        {{"",
+          {{"depth", "d32f", 4, true},
+           {"normal", "rgb10a2", 4},
+           {"albedo", "rgba8_srgb", 4},
+           {"material", "rg8", 2},
+           {"motion", "rg16f", 4}}}}}},
+  };
+  return table;
+}
+
+}  // namespace
+
+std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildcard,
+                                        std::string* error) {
+  size_t colon = text.find(':');
+  std::string_view kind = text.substr(0, colon);
+  std::string_view cls = colon == std::string_view::npos ? "" : text.substr(colon + 1);
+  auto it = kinds().find(kind);
+  if (it == kinds().end()) {
+    if (error) *error = "unknown port kind '" + std::string(kind) + "'";
+    return std::nullopt;
+  }
+  if (cls == "*" && allow_wildcard && !it->second.classes.contains("")) return PortType{std::string(kind), "*"};
+  if (!it->second.classes.contains(cls)) {
+    if (error) {
+      *error = "'" + std::string(kind) + "' has no format class '" + std::string(cls) + "'; expected one of";
+      for (const auto& [name, _] : it->second.classes) *error += " '" + std::string(kind) + (name.empty() ? "" : ":" + name) + "'";
+    }
+    return std::nullopt;
+  }
+  return PortType{std::string(kind), std::string(cls)};
+}
+
+bool port_types_compatible(const PortType& from, const PortType& to, std::string* why) {
+  if (from.kind != to.kind) {
+    if (why) *why = kinds().at(from.kind).words + " cannot feed " + kinds().at(to.kind).words;
+    return false;
+  }
+  if (to.is_wildcard() || from.format_class == to.format_class) return true;
+  if (why) *why = "the formats differ: " + from.name() + " is not " + to.name();
+  return false;
+}
+
+ResourceKind resource_kind_of(const PortType& type) { return kinds().at(type.kind).resource; }
+
+const std::vector<PortComponent>& port_components(const PortType& type) {
+  static const std::vector<PortComponent> none;  // wildcards have no layout of their own
+  const auto& classes = kinds().at(type.kind).classes;
+  auto it = classes.find(type.format_class);
+  return it == classes.end() ? none : it->second;
+}
+
+std::vector<PortType> all_port_types() {
+  std::vector<PortType> out;
+  for (const auto& [kind, info] : kinds())
+    for (const auto& [cls, _] : info.classes) out.push_back({kind, cls});
+  return out;
+}
+
+}  // namespace lg

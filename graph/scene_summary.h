@@ -1,0 +1,62 @@
+// What a scene contains, as far as the compiler cares: which kinds of lights, probes, materials
+// and camera it has. Specialization bypasses nodes and passes whose needs are absent. The
+// runtime derives a summary from its world; `lumagraph compile --scene FILE` reads one from JSON.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "graph/diagnostics.h"
+#include "graph/json_value.h"
+
+namespace lg {
+
+enum class SceneFeature : uint8_t {
+  directional_lights,
+  point_lights,
+  sphere_lights,
+  tube_lights,
+  rectangle_lights,
+  area_lights,  // any of sphere, tube, rectangle
+  shadow_casting_lights,
+  environment_light,
+  irradiance_volumes,
+  reflection_probes,
+  glossy_materials,
+  thin_lens_camera,
+  count
+};
+
+std::string_view scene_feature_name(SceneFeature f);
+std::optional<SceneFeature> parse_scene_feature(std::string_view name);
+// Why a node that needs `f` is skipped when the scene lacks it, e.g. "the scene has no area lights".
+std::string scene_lacks_reason(SceneFeature f);
+
+struct SceneSummary {
+  std::string name = "default";
+  int directional_lights = 1;
+  int point_lights = 0;
+  int sphere_lights = 1;
+  int tube_lights = 1;
+  int rectangle_lights = 0;
+  bool shadows = true;
+  bool environment = true;
+  int irradiance_volumes = 0;
+  int reflection_probes = 0;
+  bool glossy_materials = true;
+  double aperture = 0;  // lens aperture diameter in metres; 0 is a pinhole camera
+  double focus_distance = 5;
+
+  bool has(SceneFeature f) const;
+};
+
+// The embedded default scene (a room lit by a sky with a sun, a sphere light and a tube light,
+// seen through a pinhole camera).
+SceneSummary default_scene_summary();
+
+std::optional<SceneSummary> scene_summary_from_json(const JsonValue& root, Diagnostics& diagnostics);
+std::optional<SceneSummary> load_scene_summary(const std::string& path, Diagnostics& diagnostics);
+
+}  // namespace lg

@@ -1,0 +1,117 @@
+// A node type described as data: typed ports, parameters (type, default, range or enum, unit,
+// doc), internal resources, the passes it lowers to and what each pass reads and writes, the
+// scene features it needs and the rules that bypass it. Each node folder under nodes/ holds one
+// schema.json; this is the single source for validation, lowering, the editor and `nodes --json`.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "graph/json_value.h"
+#include "graph/port_type.h"
+#include "graph/scene_summary.h"
+
+namespace lg {
+
+enum class ParamType : uint8_t { float_, int_, bool_, enum_, string, path, float2, float3, float4, int2 };
+std::string_view param_type_name(ParamType t);
+size_t param_components(ParamType t);  // 1 for scalars, N for vectors, 0 for non-numeric
+
+struct ParamSpec {
+  std::string name;
+  ParamType type = ParamType::float_;
+  JsonValue default_value;
+  std::optional<double> min, max;       // per component for vectors
+  std::vector<std::string> values;      // enum choices
+  std::vector<std::string> extensions;  // path params: accepted file extensions
+  std::string unit, doc;
+};
+
+// How big a resource is. Extents come from the frame, an input, a parameter or a constant,
+// then scale; cube maps use the width as the face size.
+struct SizeRule {
+  enum class From : uint8_t { frame, input, param, fixed } from = From::frame;
+  int ref = -1;  // input or param index
+  std::array<uint32_t, 2> fixed{1, 1};
+  double scale = 1;
+  int scale_param = -1;
+  enum class Mips : uint8_t { one, full, param, fixed } mips = Mips::one;
+  int mips_param = -1;
+  uint32_t mips_fixed = 1;
+  int sh_order_param = -1;  // "sh" buffers: (order + 1)^2 coefficients
+};
+
+struct PortSpec {
+  std::string name;
+  PortType type;
+  std::string doc;
+  bool optional = false;  // inputs: may stay unlinked
+  bool history = false;   // inputs: reads the previous frame; the only legal back edge
+  SizeRule size;          // outputs and internal resources
+};
+
+enum class Usage : uint8_t {
+  sampled,             // read through a sampler
+  storage_read,        // read as a storage image
+  storage_write,       // written as a storage image
+  storage_read_write,  // read and written as a storage image
+  attachment_write,    // render target (colour or depth by format), cleared and written
+  attachment_blend,    // render target, loaded and blended onto
+  buffer_read,
+  buffer_write,
+};
+std::string_view usage_name(Usage u);
+std::optional<Usage> parse_usage(std::string_view name);
+bool usage_writes(Usage u);
+bool usage_reads(Usage u);
+
+enum class Queue : uint8_t { graphics, compute };
+
+struct PassUse {
+  enum class Target : uint8_t { input, output, internal } target = Target::input;
+  int index = 0;
+  int component = -1;  // one component of a bundle ("in.gbuffer.depth"), or -1 for all
+  Usage usage = Usage::sampled;
+};
+
+struct PassSpec {
+  std::string name;
+  Queue queue = Queue::compute;
+  std::optional<SceneFeature> needs;  // the pass is dropped when the scene lacks this
+  std::vector<PassUse> uses;
+  std::string doc;
+};
+
+struct Condition {
+  enum class Kind : uint8_t { scene_lacks, param_equals, param_at_most } kind = Kind::scene_lacks;
+  SceneFeature feature = SceneFeature::count;
+  int param = -1;
+  JsonValue value;
+};
+
+struct BypassRule {
+  Condition when;
+  std::vector<std::pair<int, int>> forward;  // output index <- input index
+  std::string reason;
+};
+
+struct NodeSchema {
+  std::string type;      // "post.bloom"
+  std::string category;  // "post"
+  std::string doc;
+  std::string file;      // where the schema came from, for messages
+  std::vector<PortSpec> inputs, outputs, resources;
+  std::vector<ParamSpec> params;
+  std::vector<PassSpec> passes;
+  std::vector<BypassRule> bypass;
+  bool is_static = false;  // result depends only on params and static inputs: cached across frames
+  bool is_output = false;  // a sink: its inputs are results of the frame
+
+  int find_input(std::string_view name) const;
+  int find_output(std::string_view name) const;
+  int find_param(std::string_view name) const;
+};
+
+}  // namespace lg

@@ -1,0 +1,297 @@
+#include "graph/schema_reader.h"
+
+#include <cmath>
+#include <functional>
+
+#include "graph/json_reader.h"
+
+namespace lg {
+namespace {
+
+class SchemaReader {
+ public:
+  SchemaReader(NodeSchema& schema, Diagnostics& d) : s_(schema), d_(d) {}
+
+  void read(const JsonValue& root) {
+    if (!expect_object(root, "")) return;
+    check_keys(root, "", {"type", "doc", "static", "output", "inputs", "outputs", "resources", "params", "passes", "bypass"});
+    s_.type = string_at(root, "", "type", true);
+    s_.category = s_.type.substr(0, s_.type.find('.'));
+    s_.doc = string_at(root, "", "doc", true);
+    s_.is_static = bool_at(root, "", "static");
+    s_.is_output = bool_at(root, "", "output");
+    each(root, "params", [&](const JsonValue& v, const std::string& p) { param(v, p); });
+    each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, true)); });
+    each(root, "outputs", [&](const JsonValue& v, const std::string& p) { s_.outputs.push_back(port(v, p, false)); });
+    each(root, "resources", [&](const JsonValue& v, const std::string& p) { s_.resources.push_back(port(v, p, false)); });
+    each(root, "passes", [&](const JsonValue& v, const std::string& p) { pass(v, p); });
+    each(root, "bypass", [&](const JsonValue& v, const std::string& p) { bypass(v, p); });
+    if (s_.passes.empty() && !s_.is_output) d_.error(root.pos(), "/passes", "a node needs at least one pass");
+  }
+
+ private:
+  NodeSchema& s_;
+  Diagnostics& d_;
+
+  bool expect_object(const JsonValue& v, const std::string& p) {
+    if (v.is_object()) return true;
+    d_.error(v.pos(), p, std::string("expected an object, found ") + JsonValue::kind_name(v.kind()));
+    return false;
+  }
+
+  void check_keys(const JsonValue& obj, const std::string& p, std::initializer_list<std::string_view> known) {
+    for (const auto& [k, v] : obj.members()) {
+      bool ok = false;
+      for (auto name : known) ok |= name == k;
+      if (!ok) d_.error(v.pos(), json_pointer_append(p, k), "unknown key '" + k + "'");
+    }
+  }
+
+  std::string string_at(const JsonValue& obj, const std::string& p, std::string_view key, bool required) {
+    const JsonValue* v = obj.find(key);
+    if (!v) {
+      if (required) d_.error(obj.pos(), p, "missing \"" + std::string(key) + "\"");
+      return {};
+    }
+    if (!v->is_string()) {
+      d_.error(v->pos(), json_pointer_append(p, key), "expected a string");
+      return {};
+    }
+    return v->as_string();
+  }
+
+  bool bool_at(const JsonValue& obj, const std::string& p, std::string_view key) {
+    const JsonValue* v = obj.find(key);
+    if (!v) return false;
+    if (!v->is_bool()) d_.error(v->pos(), json_pointer_append(p, key), "expected true or false");
+    return v->is_bool() && v->as_bool();
+  }
+
+  void each(const JsonValue& obj, std::string_view key, const std::function<void(const JsonValue&, const std::string&)>& f) {
+    const JsonValue* list = obj.find(key);
+    if (!list) return;
+    std::string p = json_pointer_append("", key);
+    if (!list->is_array()) {
+      d_.error(list->pos(), p, "expected an array");
+      return;
+    }
+    for (size_t k = 0; k < list->items().size(); ++k) {
+      const JsonValue& item = list->items()[k];
+      std::string ip = json_pointer_append(p, k);
+      if (expect_object(item, ip)) f(item, ip);
+    }
+  }
+
+  // "param:NAME" -> param index, or -1 with an error.
+  int param_ref(const JsonValue& v, const std::string& p) {
+    std::string text = v.as_string().substr(6);
+    int index = s_.find_param(text);
+    if (index < 0) d_.error(v.pos(), p, "no param named '" + text + "' (params must come before their use)");
+    return index;
+  }
+
+  bool is_ref(const JsonValue& v, std::string_view prefix) {
+    return v.is_string() && v.as_string().rfind(prefix, 0) == 0;
+  }
+
+  void param(const JsonValue& v, const std::string& p) {
+    check_keys(v, p, {"name", "type", "default", "min", "max", "values", "extensions", "unit", "doc"});
+    ParamSpec spec;
+    spec.name = string_at(v, p, "name", true);
+    std::string type = string_at(v, p, "type", true);
+    bool known = false;
+    for (int t = 0; t <= static_cast<int>(ParamType::int2); ++t)
+      if (param_type_name(static_cast<ParamType>(t)) == type) {
+        spec.type = static_cast<ParamType>(t);
+        known = true;
+      }
+    if (!known) d_.error(v.pos(), json_pointer_append(p, "type"), "unknown param type '" + type + "'");
+    spec.doc = string_at(v, p, "doc", true);
+    spec.unit = string_at(v, p, "unit", false);
+    for (auto key : {"min", "max"}) {
+      if (const JsonValue* b = v.find(key)) {
+        if (b->is_number()) (std::string_view(key) == "min" ? spec.min : spec.max) = b->as_number();
+        else d_.error(b->pos(), json_pointer_append(p, key), "expected a number");
+      }
+    }
+    for (auto [key, list] : {std::pair{"values", &spec.values}, std::pair{"extensions", &spec.extensions}}) {
+      if (const JsonValue* b = v.find(key)) {
+        for (const auto& item : b->items()) {
+          if (item.is_string()) list->push_back(item.as_string());
+          else d_.error(item.pos(), json_pointer_append(p, key), "expected strings");
+        }
+      }
+    }
+    if (spec.type == ParamType::enum_ && spec.values.empty())
+      d_.error(v.pos(), p, "an enum param needs \"values\"");
+    if (const JsonValue* def = v.find("default")) spec.default_value = *def;
+    else d_.error(v.pos(), p, "missing \"default\"");
+    s_.params.push_back(std::move(spec));
+  }
+
+  PortSpec port(const JsonValue& v, const std::string& p, bool is_input) {
+    check_keys(v, p, {"name", "type", "doc", "optional", "history", "extent", "scale", "mips", "sh_order"});
+    PortSpec spec;
+    spec.name = string_at(v, p, "name", true);
+    spec.doc = string_at(v, p, "doc", true);
+    std::string why;
+    auto type = parse_port_type(string_at(v, p, "type", true), is_input, &why);
+    if (type) spec.type = *type;
+    else d_.error(v.pos(), json_pointer_append(p, "type"), why);
+    spec.optional = bool_at(v, p, "optional");
+    spec.history = bool_at(v, p, "history");
+    if (!is_input) size_rule(v, p, spec.size);
+    return spec;
+  }
+
+  void size_rule(const JsonValue& v, const std::string& p, SizeRule& r) {
+    if (const JsonValue* e = v.find("extent")) {
+      std::string ep = json_pointer_append(p, "extent");
+      if (is_ref(*e, "frame")) {
+        r.from = SizeRule::From::frame;
+      } else if (is_ref(*e, "input:")) {
+        r.from = SizeRule::From::input;
+        r.ref = s_.find_input(e->as_string().substr(6));
+        if (r.ref < 0) d_.error(e->pos(), ep, "no input named '" + e->as_string().substr(6) + "'");
+      } else if (is_ref(*e, "param:")) {
+        r.from = SizeRule::From::param;
+        r.ref = param_ref(*e, ep);
+      } else if (e->is_array() && e->items().size() == 2 && e->items()[0].is_integer() && e->items()[1].is_integer()) {
+        r.from = SizeRule::From::fixed;
+        r.fixed = {static_cast<uint32_t>(e->items()[0].as_number()), static_cast<uint32_t>(e->items()[1].as_number())};
+      } else {
+        d_.error(e->pos(), ep, "expected \"frame\", \"input:NAME\", \"param:NAME\" or [width, height]");
+      }
+    }
+    if (const JsonValue* s = v.find("scale")) {
+      if (s->is_number()) r.scale = s->as_number();
+      else if (is_ref(*s, "param:")) r.scale_param = param_ref(*s, json_pointer_append(p, "scale"));
+      else d_.error(s->pos(), json_pointer_append(p, "scale"), "expected a number or \"param:NAME\"");
+    }
+    if (const JsonValue* m = v.find("mips")) {
+      if (m->is_string() && m->as_string() == "full") {
+        r.mips = SizeRule::Mips::full;
+      } else if (is_ref(*m, "param:")) {
+        r.mips = SizeRule::Mips::param;
+        r.mips_param = param_ref(*m, json_pointer_append(p, "mips"));
+      } else if (m->is_integer() && m->as_number() >= 1) {
+        r.mips = SizeRule::Mips::fixed;
+        r.mips_fixed = static_cast<uint32_t>(m->as_number());
+      } else {
+        d_.error(m->pos(), json_pointer_append(p, "mips"), "expected \"full\", a count or \"param:NAME\"");
+      }
+    }
+    if (const JsonValue* o = v.find("sh_order")) {
+      if (is_ref(*o, "param:")) r.sh_order_param = param_ref(*o, json_pointer_append(p, "sh_order"));
+      else d_.error(o->pos(), json_pointer_append(p, "sh_order"), "expected \"param:NAME\"");
+    }
+  }
+
+  void pass(const JsonValue& v, const std::string& p) {
+    check_keys(v, p, {"name", "queue", "needs", "uses", "doc"});
+    PassSpec spec;
+    spec.name = string_at(v, p, "name", true);
+    spec.doc = string_at(v, p, "doc", false);
+    std::string queue = string_at(v, p, "queue", true);
+    if (queue == "graphics") spec.queue = Queue::graphics;
+    else if (queue == "compute") spec.queue = Queue::compute;
+    else d_.error(v.pos(), json_pointer_append(p, "queue"), "expected \"graphics\" or \"compute\"");
+    if (v.find("needs")) {
+      std::string needs = string_at(v, p, "needs", false);
+      spec.needs = parse_scene_feature(needs);
+      if (!spec.needs) d_.error(v.find("needs")->pos(), json_pointer_append(p, "needs"), "unknown scene feature '" + needs + "'");
+    }
+    const JsonValue* uses = v.find("uses");
+    if (!uses || !uses->is_object()) {
+      d_.error(v.pos(), p, "missing \"uses\": {\"in.NAME\": \"sampled\", \"out.NAME\": \"storage_write\", ...}");
+    } else {
+      for (const auto& [target, usage] : uses->members()) {
+        std::string up = json_pointer_append(json_pointer_append(p, "uses"), target);
+        PassUse use;
+        size_t dot = target.find('.'), second = target.find('.', dot == std::string::npos ? dot : dot + 1);
+        std::string scope = target.substr(0, dot);
+        std::string name = dot == std::string::npos ? "" : target.substr(dot + 1, second - dot - 1);
+        std::string component = second == std::string::npos ? "" : target.substr(second + 1);
+        const PortSpec* port = nullptr;
+        if (scope == "in") use.target = PassUse::Target::input, use.index = s_.find_input(name);
+        else if (scope == "out") use.target = PassUse::Target::output, use.index = s_.find_output(name);
+        else if (scope == "tmp") use.target = PassUse::Target::internal, use.index = [&] {
+          for (size_t k = 0; k < s_.resources.size(); ++k)
+            if (s_.resources[k].name == name) return static_cast<int>(k);
+          return -1;
+        }();
+        else use.index = -1;
+        if (use.index >= 0) {
+          const auto& list = use.target == PassUse::Target::input    ? s_.inputs
+                             : use.target == PassUse::Target::output ? s_.outputs
+                                                                     : s_.resources;
+          port = &list[use.index];
+        }
+        if (!port) {
+          d_.error(usage.pos(), up, "'" + target + "' names no in.PORT, out.PORT or tmp.RESOURCE");
+        } else if (!component.empty()) {
+          const auto& components = port_components(port->type);
+          for (size_t c = 0; c < components.size(); ++c)
+            if (components[c].name == component) use.component = static_cast<int>(c);
+          if (use.component < 0) d_.error(usage.pos(), up, "'" + port->type.name() + "' has no component '" + component + "'");
+        }
+        auto u = usage.is_string() ? parse_usage(usage.as_string()) : std::nullopt;
+        if (!u) d_.error(usage.pos(), up, "unknown usage");
+        else use.usage = *u;
+        spec.uses.push_back(use);
+      }
+    }
+    s_.passes.push_back(std::move(spec));
+  }
+
+  void bypass(const JsonValue& v, const std::string& p) {
+    check_keys(v, p, {"when", "forward", "reason"});
+    BypassRule rule;
+    const JsonValue* when = v.find("when");
+    std::string wp = json_pointer_append(p, "when");
+    if (!when || !when->is_object()) {
+      d_.error(v.pos(), p, "missing \"when\"");
+    } else if (const JsonValue* lacks = when->find("scene_lacks")) {
+      auto f = lacks->is_string() ? parse_scene_feature(lacks->as_string()) : std::nullopt;
+      if (!f) d_.error(lacks->pos(), wp, "unknown scene feature");
+      else rule.when = {Condition::Kind::scene_lacks, *f, -1, {}};
+    } else if (const JsonValue* param = when->find("param")) {
+      rule.when.param = param->is_string() ? s_.find_param(param->as_string()) : -1;
+      if (rule.when.param < 0) d_.error(param->pos(), wp, "no such param");
+      if (const JsonValue* eq = when->find("equals")) rule.when = {Condition::Kind::param_equals, SceneFeature::count, rule.when.param, *eq};
+      else if (const JsonValue* le = when->find("at_most")) rule.when = {Condition::Kind::param_at_most, SceneFeature::count, rule.when.param, *le};
+      else d_.error(when->pos(), wp, "expected \"equals\" or \"at_most\"");
+    } else {
+      d_.error(when->pos(), wp, "expected {\"scene_lacks\": FEATURE} or {\"param\": NAME, \"equals\"|\"at_most\": VALUE}");
+    }
+    const JsonValue* forward = v.find("forward");
+    if (forward && forward->is_object()) {
+      for (const auto& [out, in] : forward->members()) {
+        int o = s_.find_output(out), i = in.is_string() ? s_.find_input(in.as_string()) : -1;
+        if (o < 0 || i < 0) d_.error(in.pos(), json_pointer_append(p, "forward"), "forward maps an output name to an input name");
+        else rule.forward.emplace_back(o, i);
+      }
+    }
+    if (rule.forward.size() != s_.outputs.size())
+      d_.error(v.pos(), p, "a bypass must forward every output from an input");
+    rule.reason = string_at(v, p, "reason", false);
+    if (rule.reason.empty() && rule.when.kind == Condition::Kind::scene_lacks) rule.reason = scene_lacks_reason(rule.when.feature);
+    if (rule.reason.empty()) d_.error(v.pos(), p, "missing \"reason\"");
+    s_.bypass.push_back(std::move(rule));
+  }
+};
+
+}  // namespace
+
+std::optional<NodeSchema> read_node_schema(std::string_view json_text, Diagnostics& diagnostics) {
+  auto root = read_json(json_text, diagnostics);
+  if (!root) return std::nullopt;
+  size_t before = diagnostics.error_count();
+  NodeSchema schema;
+  schema.file = diagnostics.file();
+  SchemaReader(schema, diagnostics).read(*root);
+  if (diagnostics.error_count() > before) return std::nullopt;
+  return schema;
+}
+
+}  // namespace lg
