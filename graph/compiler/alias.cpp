@@ -12,20 +12,61 @@ bool is_persistent(const LoweredResource& r) {
   return r.lifetime == ResourceLifetime::cached || r.lifetime == ResourceLifetime::history;
 }
 
+// Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
+// a segment tree whose nodes hold the intervals covering their whole range.
+class StabbingTree {
+ public:
+  explicit StabbingTree(int passes) : size_(std::max(passes, 1)), nodes_(4 * static_cast<size_t>(size_)) {}
+
+  void insert(int first, int last, int id) { insert(1, 0, size_, first, last + 1, id); }
+
+  template <class F>
+  void stab(int t, F&& visit) const {
+    size_t node = 1;
+    int lo = 0, hi = size_;
+    for (;;) {
+      for (int id : nodes_[node]) visit(id);
+      if (hi - lo == 1) return;
+      int mid = (lo + hi) / 2;
+      if (t < mid) node = 2 * node, hi = mid;
+      else node = 2 * node + 1, lo = mid;
+    }
+  }
+
+ private:
+  int size_;
+  std::vector<std::vector<int>> nodes_;
+
+  void insert(size_t node, int lo, int hi, int begin, int end, int id) {
+    if (end <= lo || hi <= begin) return;
+    if (begin <= lo && hi <= end) {
+      nodes_[node].push_back(id);
+      return;
+    }
+    int mid = (lo + hi) / 2;
+    insert(2 * node, lo, mid, begin, end, id);
+    insert(2 * node + 1, mid, hi, begin, end, id);
+  }
+};
+
 // Greedy by size: the largest resources are placed first, each at the offset that leaves the
-// smallest gap among the resources whose lifetimes overlap it. Placed resources are indexed by
-// the schedule positions they are alive at, so finding the overlapping ones costs the size of
-// the live set, not the number of resources.
+// smallest gap among the placed resources whose lifetimes overlap it: those alive when it
+// starts, and those that start while it lives. Both are indexed, so a placement costs about
+// the size of the live set, not the number of resources.
 class GreedyPlacer {
  public:
-  GreedyPlacer(int passes, size_t resources) : alive_at_(passes), seen_(resources, 0) {}
+  GreedyPlacer(int passes, size_t resources) : alive_(passes), seen_(resources, 0) {}
 
   uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment, std::vector<Placement>& placements) {
     ++stamp_;
     conflicts_.clear();
-    for (int t = life.first; t <= life.last; ++t)
-      for (int other : alive_at_[t])
-        if (seen_[other] != stamp_) seen_[other] = stamp_, conflicts_.push_back({placements[other].offset, placements[other].offset + placements[other].size});
+    auto note = [&](int other) {
+      if (seen_[other] == stamp_) return;
+      seen_[other] = stamp_;
+      conflicts_.push_back({placements[other].offset, placements[other].offset + placements[other].size});
+    };
+    alive_.stab(life.first, note);
+    for (auto it = starts_.upper_bound(life.first); it != starts_.end() && it->first <= life.last; ++it) note(it->second);
     std::sort(conflicts_.begin(), conflicts_.end());
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
@@ -35,7 +76,8 @@ class GreedyPlacer {
       cursor = std::max(cursor, end);
     }
     if (best == UINT64_MAX) best = align_up(cursor, alignment);
-    for (int t = life.first; t <= life.last; ++t) alive_at_[t].push_back(r);
+    alive_.insert(life.first, life.last, r);
+    starts_.emplace(life.first, r);
     size_ = std::max(size_, best + bytes);
     return best;
   }
@@ -43,7 +85,8 @@ class GreedyPlacer {
   uint64_t size() const { return size_; }
 
  private:
-  std::vector<std::vector<int>> alive_at_;
+  StabbingTree alive_;
+  std::multimap<int, int> starts_;  // first pass -> resource
   std::vector<uint32_t> seen_;
   uint32_t stamp_ = 0;
   std::vector<std::pair<uint64_t, uint64_t>> conflicts_;

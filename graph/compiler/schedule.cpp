@@ -34,6 +34,14 @@ std::vector<int> schedule(const LoweredGraph& lowered) {
   std::vector<char> needed(count, 0);
   for (const auto& list : before)
     for (int p : list) needed[p] = 1;
+  // Visit the deepest producer first (as Sethi and Ullman order register allocation): a long
+  // chain runs before the short side branches that join it, so their results do not wait
+  // through the whole chain. Lowering order is topological, so one forward pass finds depths.
+  std::vector<int> depth(count, 0);
+  for (int p = 0; p < count; ++p)
+    for (int q : before[p]) depth[p] = std::max(depth[p], depth[q] + 1);
+  for (auto& list : before)
+    std::stable_sort(list.begin(), list.end(), [&](int a, int b) { return depth[a] > depth[b]; });
 
   // Iterative post-order (graphs may be chains of 10,000 passes).
   std::vector<int> order;

@@ -1,7 +1,7 @@
 // Phase 7, schedule: orders the passes. The order is a depth-first post-order of the pass
-// dependencies, walked back from the passes nothing depends on: each producer runs just
-// before the consumer that first needs it, which keeps resources short-lived and lets the
-// alias phase share more memory. Static passes are hoisted to the front (they depend only on
+// dependencies, walked back from the passes nothing depends on, deepest producer first: each
+// producer runs just before the consumer that first needs it, which keeps resources
+// short-lived and lets the alias phase share more memory. Static passes are hoisted to the front (they depend only on
 // each other), so a frame whose cached results are valid skips one contiguous prefix. The
 // order depends only on lowering order, which does not depend on the order of the file.
 #pragma once
