@@ -72,6 +72,7 @@ int compile_command(const std::vector<std::string>& argv) {
   double parse_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   CompileResult result;
   if (graph) result = compile(*graph, builtin_registry(), options, diagnostics);
+  diagnostics.sort_by_position();
   std::fputs(diagnostics.to_string().c_str(), stderr);
 
   if (args->has("--timings")) {

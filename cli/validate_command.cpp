@@ -38,6 +38,7 @@ int validate_command(const std::vector<std::string>& argv) {
   auto graph = diagnostics.has_errors() ? std::nullopt : load_graph_argument(*args, diagnostics);
   CompileResult result;
   if (graph) result = compile(*graph, builtin_registry(), options, diagnostics);
+  diagnostics.sort_by_position();
   std::fputs(diagnostics.to_string().c_str(), stderr);
   if (!result.plan) {
     std::fprintf(stderr, "%s: invalid (%zu error%s)\n", args->positional.front().c_str(), diagnostics.error_count(),

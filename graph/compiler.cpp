@@ -45,8 +45,8 @@ std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
   return {};
 }
 
-Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, const LoweredGraph& lowered,
-              const std::vector<int>& order, const std::vector<Lifetime>& lives, const MemoryLayout& memory,
+Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, LoweredGraph&& lowered,
+              const std::vector<int>& order, const std::vector<Lifetime>& lives, MemoryLayout&& memory,
               std::vector<Barrier> barriers, const CompileOptions& options) {
   Plan plan;
   plan.name = graph.name;
@@ -55,26 +55,28 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   plan.frame = options.frame;
   for (size_t n = 0; n < graph.nodes.size(); ++n) {
     const NodeSchema& s = *resolved.nodes[n].schema;
-    PlanNode node{graph.nodes[n].id, s.type, states[n].kind, states[n].reason, {}, lowered.nodes[n].params,
+    PlanNode node{graph.nodes[n].id, s.type, states[n].kind, states[n].reason, {}, JsonValue::object(),
                   lowered.nodes[n].is_static};
+    if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, static_cast<int>(n), options.roots);
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (!states[n].dropped_passes[p].empty()) node.dropped.emplace_back(s.passes[p].name, states[n].dropped_passes[p]);
     plan.nodes.push_back(std::move(node));
   }
   for (int index : order) {
-    const LoweredPass& lp = lowered.passes[index];
+    LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    PlanPass pass{lp.name, lp.node, s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.is_static ? hex(lp.cache_key) : ""};
+    PlanPass pass{std::move(lp.name), lp.node, s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.is_static ? hex(lp.cache_key) : ""};
     for (const auto& a : lp.accesses) pass.accesses.push_back({a.resource, a.usage, slot_name(s, a), a.component});
     plan.passes.push_back(std::move(pass));
   }
+  plan.resources.reserve(lowered.resources.size());
   for (size_t r = 0; r < lowered.resources.size(); ++r) {
-    plan.resources.push_back({lowered.resources[r], lives[r].first, lives[r].last, memory.placements[r]});
-    if (!lives[r].used()) continue;
     auto lifetime = lowered.resources[r].lifetime;
     bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
-    if (!persistent) plan.memory.transient_unaliased += lowered.resources[r].bytes;
+    if (lives[r].used() && !persistent) plan.memory.transient_unaliased += lowered.resources[r].bytes;
+    plan.resources.push_back({std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r])});
   }
+  plan.passes.reserve(order.size());
   plan.blocks = memory.blocks;
   plan.memory.transient = memory.blocks[0].size;
   plan.memory.persistent = memory.blocks[1].size;
@@ -146,7 +148,7 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   dump("synchronize", [&] { return barriers_dump(*lowered, order, barriers); });
 
   result.plan = timer.run("assemble", [&] {
-    return assemble(graph, resolved, states, *lowered, order, lives, memory, std::move(barriers), options);
+    return assemble(graph, resolved, states, std::move(*lowered), order, lives, std::move(memory), std::move(barriers), options);
   });
   return result;
 }

@@ -31,6 +31,8 @@ class Diagnostics {
 
   const std::string& file() const { return file_; }
   void set_file(std::string file) { file_ = std::move(file); }
+  // Orders the diagnostics by line and column, as a reader goes through the file.
+  void sort_by_position();
   bool has_errors() const;
   size_t error_count() const;
   const std::vector<Diagnostic>& items() const { return items_; }

@@ -13,49 +13,50 @@ bool is_persistent(const LoweredResource& r) {
 }
 
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
-// a segment tree whose nodes hold the intervals covering their whole range.
+// a bottom-up segment tree whose nodes hold, as linked lists in one pool, the intervals that
+// cover their whole range; the answer is the lists on the path from leaf t to the root.
 class StabbingTree {
  public:
-  explicit StabbingTree(int passes) : size_(std::max(passes, 1)), nodes_(4 * static_cast<size_t>(size_)) {}
+  explicit StabbingTree(int passes) : leaves_(std::max(passes, 1)), head_(2 * static_cast<size_t>(leaves_), -1) {}
 
-  void insert(int first, int last, int id) { insert(1, 0, size_, first, last + 1, id); }
-
-  template <class F>
-  void stab(int t, F&& visit) const {
-    size_t node = 1;
-    int lo = 0, hi = size_;
-    for (;;) {
-      for (int id : nodes_[node]) visit(id);
-      if (hi - lo == 1) return;
-      int mid = (lo + hi) / 2;
-      if (t < mid) node = 2 * node, hi = mid;
-      else node = 2 * node + 1, lo = mid;
+  void insert(int first, int last, int id) {
+    for (int lo = first + leaves_, hi = last + 1 + leaves_; lo < hi; lo /= 2, hi /= 2) {
+      if (lo & 1) link(lo++, id);
+      if (hi & 1) link(--hi, id);
     }
   }
 
- private:
-  int size_;
-  std::vector<std::vector<int>> nodes_;
+  template <class F>
+  void stab(int t, F&& visit) const {
+    for (int node = t + leaves_; node > 0; node /= 2)
+      for (int e = head_[node]; e >= 0; e = pool_[e].next) visit(pool_[e].id);
+  }
 
-  void insert(size_t node, int lo, int hi, int begin, int end, int id) {
-    if (end <= lo || hi <= begin) return;
-    if (begin <= lo && hi <= end) {
-      nodes_[node].push_back(id);
-      return;
-    }
-    int mid = (lo + hi) / 2;
-    insert(2 * node, lo, mid, begin, end, id);
-    insert(2 * node + 1, mid, hi, begin, end, id);
+ private:
+  struct Entry {
+    int id, next;
+  };
+  int leaves_;
+  std::vector<int> head_;
+  std::vector<Entry> pool_;
+
+  void link(int node, int id) {
+    pool_.push_back({id, head_[node]});
+    head_[node] = static_cast<int>(pool_.size()) - 1;
   }
 };
 
 // Greedy by size: the largest resources are placed first, each at the offset that leaves the
 // smallest gap among the placed resources whose lifetimes overlap it: those alive when it
-// starts, and those that start while it lives. Both are indexed, so a placement costs about
-// the size of the live set, not the number of resources.
+// starts (the stabbing tree), and those that start while it lives (a scan of the resources
+// sorted by first use). A placement costs about the size of the live set.
 class GreedyPlacer {
  public:
-  GreedyPlacer(int passes, size_t resources) : alive_(passes), seen_(resources, 0) {}
+  GreedyPlacer(int passes, const std::vector<int>& resources, const std::vector<Lifetime>& lives)
+      : alive_(passes), by_first_(resources), seen_(lives.size(), 0), placed_(lives.size(), 0) {
+    std::sort(by_first_.begin(), by_first_.end(), [&](int a, int b) { return lives[a].first < lives[b].first; });
+    for (int r : by_first_) firsts_.push_back(lives[r].first);
+  }
 
   uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment, std::vector<Placement>& placements) {
     ++stamp_;
@@ -66,7 +67,9 @@ class GreedyPlacer {
       conflicts_.push_back({placements[other].offset, placements[other].offset + placements[other].size});
     };
     alive_.stab(life.first, note);
-    for (auto it = starts_.upper_bound(life.first); it != starts_.end() && it->first <= life.last; ++it) note(it->second);
+    auto begin = std::upper_bound(firsts_.begin(), firsts_.end(), life.first) - firsts_.begin();
+    for (auto k = begin; k < static_cast<long>(firsts_.size()) && firsts_[k] <= life.last; ++k)
+      if (placed_[by_first_[k]]) note(by_first_[k]);
     std::sort(conflicts_.begin(), conflicts_.end());
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
@@ -77,7 +80,7 @@ class GreedyPlacer {
     }
     if (best == UINT64_MAX) best = align_up(cursor, alignment);
     alive_.insert(life.first, life.last, r);
-    starts_.emplace(life.first, r);
+    placed_[r] = 1;
     size_ = std::max(size_, best + bytes);
     return best;
   }
@@ -86,8 +89,9 @@ class GreedyPlacer {
 
  private:
   StabbingTree alive_;
-  std::multimap<int, int> starts_;  // first pass -> resource
+  std::vector<int> by_first_, firsts_;  // resources to place, sorted by first use
   std::vector<uint32_t> seen_;
+  std::vector<char> placed_;
   uint32_t stamp_ = 0;
   std::vector<std::pair<uint64_t, uint64_t>> conflicts_;
   uint64_t size_ = 0;
@@ -154,7 +158,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     if (sa != sb) return sa > sb;
     return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;
   });
-  GreedyPlacer placer(passes, count);
+  GreedyPlacer placer(passes, shared, lifetimes);
   for (int r : shared)
     out.placements[r].offset = placer.place(r, lifetimes[r], out.placements[r].size, alignment(lowered.resources[r]), out.placements);
   out.blocks[0].size = placer.size();

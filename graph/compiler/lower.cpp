@@ -83,7 +83,7 @@ class Lowerer {
   }
 
   std::optional<double> number_param(int n, int param) const {
-    const JsonValue& v = r_.nodes[n].params[param];
+    const JsonValue& v = r_.nodes[n].param(param);
     return v.is_number() ? std::optional<double>(v.as_number()) : std::nullopt;
   }
 
@@ -104,7 +104,7 @@ class Lowerer {
         break;
       }
       case SizeRule::From::param: {
-        const JsonValue& v = rn.params[rule.ref];
+        const JsonValue& v = rn.param(rule.ref);
         if (v.is_array() && v.items().size() == 2) w = v.items()[0].as_number(), h = v.items()[1].as_number();
         else if (v.is_number()) w = h = v.as_number();
         break;
@@ -159,33 +159,17 @@ class Lowerer {
     return texels * r.layers * bytes_per_texel;
   }
 
-  JsonValue node_params(int n) {
-    const ResolvedNode& rn = r_.nodes[n];
-    JsonValue params = JsonValue::object();
-    for (size_t p = 0; p < rn.params.size(); ++p) {
-      const ParamSpec& spec = rn.schema->params[p];
-      if (spec.type == ParamType::path && rn.params[p].is_string()) {
-        auto path = resolve_asset_path(r_.graph->file, rn.params[p].as_string(), roots_, spec.extensions, nullptr);
-        params.set(spec.name, path ? JsonValue(*path) : rn.params[p]);
-      } else {
-        params.set(spec.name, rn.params[p]);
-      }
-    }
-    return params;
-  }
-
   void lower_node(int n) {
     const ResolvedNode& rn = r_.nodes[n];
     const NodeSchema& s = *rn.schema;
     LoweredNode& node = out_.nodes[n];
-    node.params = node_params(n);
 
     // Static when the schema says so and every input is static; the key covers the type,
     // the params and the inputs' keys, so it changes whenever the result could.
     bool is_static = s.is_static;
     uint64_t key = 0;
     if (is_static) {
-      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(node.params));
+      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(node_params(r_, n, roots_)));
       for (int li : rn.input_link) {
         if (li < 0) continue;
         if (r_.links[li].history) {
@@ -286,6 +270,20 @@ class Lowerer {
 };
 
 }  // namespace
+
+JsonValue node_params(const ResolvedGraph& resolved, int node, const AssetRoots& roots) {
+  const ResolvedNode& rn = resolved.nodes[node];
+  JsonValue params = JsonValue::object();
+  for (size_t p = 0; p < rn.params.size(); ++p) {
+    const ParamSpec& spec = rn.schema->params[p];
+    const JsonValue& value = *rn.params[p];
+    std::optional<std::string> path;
+    if (spec.type == ParamType::path && value.is_string())
+      path = resolve_asset_path(resolved.graph->file, value.as_string(), roots, spec.extensions, nullptr);
+    params.set(spec.name, path ? JsonValue(*path) : value);
+  }
+  return params;
+}
 
 std::string_view lifetime_name(ResourceLifetime l) {
   constexpr std::string_view names[] = {"transient", "exported", "cached", "history"};

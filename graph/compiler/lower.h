@@ -22,4 +22,7 @@ std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const std::vect
                                   Diagnostics& diagnostics);
 JsonValue dump_lowered(const LoweredGraph& lowered);
 
+// A node's params as the runtime gets them: every param, defaults filled, paths absolute.
+JsonValue node_params(const ResolvedGraph& resolved, int node, const AssetRoots& roots);
+
 }  // namespace lg

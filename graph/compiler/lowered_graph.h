@@ -51,7 +51,6 @@ struct LoweredPass {
 };
 
 struct LoweredNode {
-  JsonValue params = JsonValue::object();  // defaults filled, paths made absolute
   bool is_static = false;
   uint64_t cache_key = 0;
 };

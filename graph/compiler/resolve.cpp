@@ -60,11 +60,11 @@ class Resolver {
     const NodeSchema& s = *rn.schema;
     rn.input_link.assign(s.inputs.size(), -1);
     rn.params.reserve(s.params.size());
-    for (const auto& p : s.params) rn.params.push_back(p.default_value);
+    for (const auto& p : s.params) rn.params.push_back(&p.default_value);
     for (const auto& [name, value] : gn.params.members()) {
       int index = s.find_param(name);
       if (index >= 0) {
-        rn.params[index] = value;
+        rn.params[index] = &value;
         continue;
       }
       std::string message = "node '" + gn.id + "' (" + s.type + ") has no param '" + name + "'";
@@ -116,10 +116,13 @@ class Resolver {
     rl.to_node = find_node(gl.to, gl.to_pos, p + "/to");
     if (rl.from_node >= 0) rl.from_port = find_port(gl.from, rl.from_node, true, gl.from_pos, p + "/from");
     if (rl.to_node >= 0) rl.to_port = find_port(gl.to, rl.to_node, false, gl.to_pos, p + "/to");
+    if (rl.to_port >= 0 && rl.from_port < 0 && out_.nodes[rl.to_node].input_link[rl.to_port] == -1)
+      out_.nodes[rl.to_node].input_link[rl.to_port] = broken_link;
     if (rl.from_port < 0 || rl.to_port < 0) return;
     rl.history = out_.nodes[rl.to_node].schema->inputs[rl.to_port].history;
     int& slot = out_.nodes[rl.to_node].input_link[rl.to_port];
     int index = static_cast<int>(out_.links.size());
+    if (slot == broken_link) slot = -1;
     if (slot >= 0) {
       const GraphLink& first = g_.links[out_.links[slot].source];
       d_.error(gl.to_pos, p + "/to",
@@ -158,7 +161,7 @@ JsonValue dump_resolved(const ResolvedGraph& resolved) {
     node.set("type", rn.schema ? rn.schema->type : "(unknown)");
     if (!rn.schema) continue;
     JsonValue& params = node.set("params", JsonValue::object());
-    for (size_t p = 0; p < rn.params.size(); ++p) params.set(rn.schema->params[p].name, rn.params[p]);
+    for (size_t p = 0; p < rn.params.size(); ++p) params.set(rn.schema->params[p].name, *rn.params[p]);
   }
   JsonValue& links = out.set("links", JsonValue::array());
   for (const auto& l : resolved.links) {

@@ -9,6 +9,10 @@
 
 namespace lg {
 
+// An input whose link names an unknown node or port: already reported, so the input does
+// not also count as missing.
+inline constexpr int broken_link = -2;
+
 struct ResolvedLink {
   int from_node = -1, from_port = -1;  // output port index
   int to_node = -1, to_port = -1;      // input port index
@@ -18,8 +22,9 @@ struct ResolvedLink {
 
 struct ResolvedNode {
   const NodeSchema* schema = nullptr;  // null when the type is unknown (already reported)
-  std::vector<JsonValue> params;       // one per schema param, defaults filled in
-  std::vector<int> input_link;         // per schema input: index into links, or -1
+  std::vector<const JsonValue*> params;  // per schema param: the value written, or the default
+  const JsonValue& param(int index) const { return *params[index]; }
+  std::vector<int> input_link;         // per schema input: index into links, -1 or broken_link
 };
 
 struct ResolvedGraph {
@@ -27,8 +32,6 @@ struct ResolvedGraph {
   std::vector<ResolvedNode> nodes;
   std::vector<ResolvedLink> links;
   std::vector<std::pair<int, int>> outputs;  // (node, output port) requested by the file
-
-  int link_into(int node, int input) const { return nodes[node].input_link[input]; }
 };
 
 }  // namespace lg

@@ -6,10 +6,10 @@ namespace {
 bool holds(const Condition& c, const ResolvedNode& node, const SceneSummary& scene) {
   switch (c.kind) {
     case Condition::Kind::scene_lacks: return !scene.has(c.feature);
-    case Condition::Kind::param_equals: return node.params[c.param] == c.value;
+    case Condition::Kind::param_equals: return node.param(c.param) == c.value;
     case Condition::Kind::param_at_most:
-      return node.params[c.param].is_number() && c.value.is_number() &&
-             node.params[c.param].as_number() <= c.value.as_number();
+      return node.param(c.param).is_number() && c.value.is_number() &&
+             node.param(c.param).as_number() <= c.value.as_number();
   }
   return false;
 }

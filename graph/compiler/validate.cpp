@@ -94,7 +94,7 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
       }
     }
     for (size_t i = 0; i < s.inputs.size(); ++i)
-      if (!s.inputs[i].optional && rn.input_link[i] < 0)
+      if (!s.inputs[i].optional && rn.input_link[i] == -1)
         diagnostics.error(gn.pos, node_pointer(n),
                           "node '" + gn.id + "' (" + s.type + ") needs its input '" + s.inputs[i].name + "' (" +
                               s.inputs[i].type.name() + ") linked");
