@@ -23,6 +23,14 @@ uint32_t full_mip_count(uint32_t w, uint32_t h) {
   return n;
 }
 
+// The resources of one port: a bundle's components are created together, so they are
+// contiguous in LoweredGraph::resources.
+struct Span {
+  int first = -1, count = 0;
+  bool empty() const { return count == 0; }
+  int operator[](int c) const { return first + c; }
+};
+
 class Lowerer {
  public:
   Lowerer(const ResolvedGraph& r, const NodeStates& s, FrameSize f, const AssetRoots& roots, Diagnostics& d)
@@ -31,19 +39,18 @@ class Lowerer {
   LoweredGraph run(const std::vector<int>& order) {
     const size_t count = r_.nodes.size();
     out_.nodes.resize(count);
-    port_res_.resize(count);
-    previous_.resize(count);
-    for (size_t n = 0; n < count; ++n) {
-      port_res_[n].resize(r_.nodes[n].schema->outputs.size());
-      previous_[n].resize(r_.nodes[n].schema->outputs.size());
-    }
+    port_base_.resize(count + 1, 0);
+    for (size_t n = 0; n < count; ++n)
+      port_base_[n + 1] = port_base_[n] + static_cast<int>(r_.nodes[n].schema->outputs.size());
+    ports_.resize(port_base_[count]);
+    previous_.resize(port_base_[count]);
     for (int n : order) {
       if (s_[n].kind == NodeState::Kind::culled) continue;
       if (s_[n].kind == NodeState::Kind::bypassed) forward(n);
       else lower_node(n);
     }
     for (const auto& [pass, access, link] : deferred_history_) bind_history(pass, access, link);
-    for (const auto& [node, port] : r_.outputs) export_resources(port_res_[node][port]);
+    for (const auto& [node, output] : r_.outputs) export_resources(port(node, output));
     for (int n : order)
       if (s_[n].kind == NodeState::Kind::active && r_.nodes[n].schema->is_output)
         for (int li : r_.nodes[n].input_link)
@@ -58,28 +65,30 @@ class Lowerer {
   const AssetRoots& roots_;
   Diagnostics& d_;
   LoweredGraph out_;
-  std::vector<std::vector<std::vector<int>>> port_res_;  // [node][output] -> resource per component
-  std::vector<std::vector<std::vector<int>>> previous_;  // the same, previous-frame copies
+  std::vector<int> port_base_;  // node -> index of its first output in ports_
+  std::vector<Span> ports_;      // per output port: its resources (a bypassed node's are its input's)
+  std::vector<Span> previous_;   // per output port: previous-frame copies, made on demand
+  std::vector<Span> internal_;   // the node being lowered: its internal resources
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   const std::string& id(int n) const { return r_.graph->nodes[n].id; }
+  Span& port(int node, int output) { return ports_[port_base_[node] + output]; }
 
-  const std::vector<int>& source_of(int link) const {
+  Span source_of(int link) {
     const ResolvedLink& l = r_.links[link];
-    return port_res_[l.from_node][l.from_port];
+    return port(l.from_node, l.from_port);
   }
 
   void forward(int n) {
-    for (size_t o = 0; o < port_res_[n].size(); ++o) {
-      int in = forwarded_input(r_, s_, n, static_cast<int>(o));
-      int li = r_.nodes[n].input_link[in];
-      if (li >= 0) port_res_[n][o] = source_of(li);
+    for (int o = 0; o < port_base_[n + 1] - port_base_[n]; ++o) {
+      int li = r_.nodes[n].input_link[forwarded_input(r_, s_, n, o)];
+      if (li >= 0) port(n, o) = source_of(li);
     }
   }
 
-  void export_resources(const std::vector<int>& list) {
-    for (int res : list)
-      if (out_.resources[res].lifetime == ResourceLifetime::transient) out_.resources[res].lifetime = ResourceLifetime::exported;
+  void export_resources(Span span) {
+    for (int c = 0; c < span.count; ++c)
+      if (out_.resources[span[c]].lifetime == ResourceLifetime::transient) out_.resources[span[c]].lifetime = ResourceLifetime::exported;
   }
 
   std::optional<double> number_param(int n, int param) const {
@@ -98,7 +107,7 @@ class Lowerer {
       case SizeRule::From::input: {
         int li = rn.input_link[rule.ref];
         if (li >= 0 && !source_of(li).empty()) {
-          const LoweredResource& src = out_.resources[source_of(li).front()];
+          const LoweredResource& src = out_.resources[source_of(li).first];
           w = src.width, h = src.height;
         }
         break;
@@ -135,8 +144,8 @@ class Lowerer {
                    ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
   }
 
-  std::vector<int> make_resources(int n, const PortSpec& spec, const std::string& name) {
-    std::vector<int> list;
+  Span make_resources(int n, const PortSpec& spec, const std::string& name) {
+    Span span{static_cast<int>(out_.resources.size()), 0};
     for (const PortComponent& c : port_components(spec.type)) {
       LoweredResource res;
       res.name = c.name.empty() ? name : name + '.' + c.name;
@@ -146,10 +155,10 @@ class Lowerer {
       res.depth_format = c.depth;
       size(n, spec, res);
       res.bytes = resource_bytes_for(res, c.bytes_per_texel);
-      list.push_back(static_cast<int>(out_.resources.size()));
       out_.resources.push_back(std::move(res));
+      ++span.count;
     }
-    return list;
+    return span;
   }
 
   static uint64_t resource_bytes_for(const LoweredResource& r, uint32_t bytes_per_texel) {
@@ -176,8 +185,9 @@ class Lowerer {
           is_static = false;
           break;
         }
-        for (int res : source_of(li)) {
-          const LoweredNode& producer = out_.nodes[out_.resources[res].node];
+        Span source = source_of(li);
+        for (int c = 0; c < source.count; ++c) {
+          const LoweredNode& producer = out_.nodes[out_.resources[source[c]].node];
           is_static &= producer.is_static;
           key = fnv1a(key, std::to_string(producer.cache_key));
         }
@@ -187,16 +197,20 @@ class Lowerer {
     node.cache_key = is_static ? key : 0;
 
     for (size_t o = 0; o < s.outputs.size(); ++o) {
-      port_res_[n][o] = make_resources(n, s.outputs[o], id(n) + '.' + s.outputs[o].name);
+      Span span = port(n, static_cast<int>(o)) = make_resources(n, s.outputs[o], id(n) + '.' + s.outputs[o].name);
       if (is_static)
-        for (int res : port_res_[n][o]) out_.resources[res].lifetime = ResourceLifetime::cached;
+        for (int c = 0; c < span.count; ++c) out_.resources[span[c]].lifetime = ResourceLifetime::cached;
     }
     size_t first_pass = out_.passes.size();
-    std::vector<std::vector<int>> internal;
-    for (const auto& spec : s.resources) internal.push_back(make_resources(n, spec, id(n) + '/' + spec.name));
+    internal_.clear();
+    for (const auto& spec : s.resources) internal_.push_back(make_resources(n, spec, id(n) + '/' + spec.name));
 
+    bool dropped_any = false;
     for (size_t p = 0; p < s.passes.size(); ++p) {
-      if (!s_[n].dropped_passes[p].empty()) continue;
+      if (!s_[n].dropped_passes[p].empty()) {
+        dropped_any = true;
+        continue;
+      }
       const PassSpec& spec = s.passes[p];
       LoweredPass pass;
       pass.node = n;
@@ -206,26 +220,26 @@ class Lowerer {
       pass.is_static = is_static;
       pass.cache_key = is_static ? fnv1a(key, spec.name) : 0;
       int pass_index = static_cast<int>(out_.passes.size());
+      pass.accesses.reserve(spec.uses.size());
       for (const PassUse& use : spec.uses) {
-        const std::vector<int>* list = nullptr;
-        if (use.target == PassUse::Target::output) list = &port_res_[n][use.index];
-        else if (use.target == PassUse::Target::internal) list = &internal[use.index];
+        Span span;
+        if (use.target == PassUse::Target::output) span = port(n, use.index);
+        else if (use.target == PassUse::Target::internal) span = internal_[use.index];
         else if (int li = rn.input_link[use.index]; li >= 0) {
           if (r_.links[li].history) {
             deferred_history_.emplace_back(pass_index, pass.accesses.size(), li);
             pass.accesses.push_back({-1, use.usage, use.target, use.index, use.component});
             continue;
           }
-          list = &source_of(li);
+          span = source_of(li);
         }
-        if (!list) continue;  // an optional input left unlinked
-        for (size_t c = 0; c < list->size(); ++c)
-          if (use.component < 0 || use.component == static_cast<int>(c))
-            pass.accesses.push_back({(*list)[c], use.usage, use.target, use.index, static_cast<int>(c)});
+        for (int c = 0; c < span.count; ++c)  // none for an optional input left unlinked
+          if (use.component < 0 || use.component == c)
+            pass.accesses.push_back({span[c], use.usage, use.target, use.index, c});
       }
       out_.passes.push_back(std::move(pass));
     }
-    drop_unwritten_internal_reads(first_pass);
+    if (dropped_any) drop_unwritten_internal_reads(first_pass);
   }
 
   // A dropped pass (say, shadows in a scene without shadow casters) leaves internal resources
@@ -244,26 +258,27 @@ class Lowerer {
   // A history input reads a previous-frame copy of its source, made once per source port.
   void bind_history(int pass, size_t slot, int link) {
     const ResolvedLink& l = r_.links[link];
-    std::vector<int>& previous = previous_[l.from_node][l.from_port];
-    const std::vector<int>& current = port_res_[l.from_node][l.from_port];
+    Span& previous = previous_[port_base_[l.from_node] + l.from_port];
+    Span current = port(l.from_node, l.from_port);
     if (previous.empty()) {
-      for (int res : current) {
-        out_.resources[res].lifetime = ResourceLifetime::history;
-        LoweredResource copy = out_.resources[res];
+      previous.first = static_cast<int>(out_.resources.size());
+      for (int c = 0; c < current.count; ++c) {
+        out_.resources[current[c]].lifetime = ResourceLifetime::history;
+        LoweredResource copy = out_.resources[current[c]];
         copy.name += "@previous";
-        copy.history_of = res;
-        previous.push_back(static_cast<int>(out_.resources.size()));
+        copy.history_of = current[c];
         out_.resources.push_back(std::move(copy));
+        ++previous.count;
       }
     }
     auto& accesses = out_.passes[pass].accesses;
     LoweredAccess placeholder = accesses[slot];  // its component: one, or -1 for all
     accesses.erase(accesses.begin() + static_cast<long>(slot));
-    for (size_t c = previous.size(); c-- > 0;) {
-      if (placeholder.component >= 0 && placeholder.component != static_cast<int>(c)) continue;
+    for (int c = previous.count; c-- > 0;) {
+      if (placeholder.component >= 0 && placeholder.component != c) continue;
       LoweredAccess a = placeholder;
       a.resource = previous[c];
-      a.component = static_cast<int>(c);
+      a.component = c;
       accesses.insert(accesses.begin() + static_cast<long>(slot), a);
     }
   }
