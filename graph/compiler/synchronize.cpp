@@ -96,9 +96,17 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
       first.src_stages |= last.stages;
       first.src_access |= last.access & access_write_mask;
     };
+    bool needed = image;
     if (res.history_of >= 0) {
-      wait_for(res.history_of);  // written last frame, in the layout it ended that frame in
-      if (!groups[res.history_of].empty()) first.old_layout = groups[res.history_of].back().info.layout;
+      // Last frame this was the current half: its last access there precedes this one. Reads
+      // in the same layout after reads need nothing; a write or a new layout does.
+      const auto& partner = groups[res.history_of];
+      if (!partner.empty()) {
+        const AccessInfo& last = partner.back().info;
+        wait_for(res.history_of);
+        first.old_layout = last.layout;
+        needed = last.writes || list.front().info.writes || last.layout != list.front().info.layout;
+      }
       first.reason = BarrierReason::history;
     } else if (previous_copy[r] >= 0) {
       wait_for(previous_copy[r]);  // last frame's reads of these bytes, before this frame writes
@@ -107,7 +115,8 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
       for (int p : memory.placements[r].predecessors) wait_for(p);
       first.reason = BarrierReason::alias;
     }
-    if (image || first.reason != BarrierReason::first_use) out.push_back(first);
+    if (res.history_of < 0 && first.reason != BarrierReason::first_use) needed = true;
+    if (needed) out.push_back(first);
 
     for (size_t g = 1; g < list.size(); ++g) {
       const AccessInfo& before = list[g - 1].info;

@@ -3,7 +3,8 @@
 // barrier separates consecutive groups (read after write, write after read, write after write,
 // or a layout change between reads), and one precedes the first group of an image (its layout
 // transition, waiting for whatever held its bytes before: an aliased resource, or the other
-// half of a history pair).
+// half of a history pair). A previous-frame copy whose last access last frame was a read in
+// the layout it is now read in needs no barrier at all.
 #pragma once
 
 #include <vector>
