@@ -50,7 +50,14 @@ class Lowerer {
       else lower_node(n);
     }
     for (const auto& [pass, access, link] : deferred_history_) bind_history(pass, access, link);
-    for (const auto& [node, output] : r_.outputs) export_resources(port(node, output));
+    for (size_t k = 0; k < r_.outputs.size(); ++k) {
+      auto [node, output] = r_.outputs[k];
+      if (port(node, output).empty())
+        d_.error(r_.graph->outputs[k].pos, json_pointer_append("/outputs", k),
+                 "output '" + r_.graph->outputs[k].port.text() + "' is empty: '" + id(node) + "' is bypassed (" +
+                     s_[node].reason + ") and forwards an input that is not linked");
+      export_resources(port(node, output));
+    }
     for (int n : order)
       if (s_[n].kind == NodeState::Kind::active && r_.nodes[n].schema->is_output)
         for (int li : r_.nodes[n].input_link)
@@ -168,10 +175,23 @@ class Lowerer {
     return texels * r.layers * bytes_per_texel;
   }
 
+  // A bypassed node that forwards an unlinked input leaves its consumers with nothing.
+  void check_fed(int n, int input, int link) {
+    if (link < 0 || r_.links[link].history || !source_of(link).empty()) return;
+    const ResolvedLink& l = r_.links[link];
+    const NodeSchema& producer = *r_.nodes[l.from_node].schema;
+    int forwarded = forwarded_input(r_, s_, l.from_node, l.from_port);
+    d_.error(r_.graph->links[l.source].to_pos, json_pointer_append("/links", static_cast<size_t>(l.source)) + "/to",
+             "input '" + id(n) + "." + r_.nodes[n].schema->inputs[input].name + "' gets nothing: '" + id(l.from_node) +
+                 "' is bypassed (" + s_[l.from_node].reason + ") and its input '" + producer.inputs[forwarded].name +
+                 "' is not linked");
+  }
+
   void lower_node(int n) {
     const ResolvedNode& rn = r_.nodes[n];
     const NodeSchema& s = *rn.schema;
     LoweredNode& node = out_.nodes[n];
+    for (size_t i = 0; i < s.inputs.size(); ++i) check_fed(n, static_cast<int>(i), rn.input_link[i]);
 
     // Static when the schema says so and every input is static; the key covers the type,
     // the params and the inputs' keys, so it changes whenever the result could.
