@@ -49,7 +49,11 @@ class Lowerer {
       if (s_[n].kind == NodeState::Kind::bypassed) forward(n);
       else lower_node(n);
     }
-    for (const auto& [pass, access, link] : deferred_history_) bind_history(pass, access, link);
+    // Backwards: binding a bundle inserts accesses, which would move the later slots.
+    for (auto it = deferred_history_.rbegin(); it != deferred_history_.rend(); ++it) {
+      auto [pass, access, link] = *it;
+      bind_history(pass, access, link);
+    }
     for (size_t k = 0; k < r_.outputs.size(); ++k) {
       auto [node, output] = r_.outputs[k];
       if (port(node, output).empty())
