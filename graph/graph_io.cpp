@@ -5,6 +5,7 @@
 #include "graph/json_reader.h"
 #include "graph/json_writer.h"
 #include "graph/limits.h"
+#include "graph/spelling.h"
 
 namespace lg {
 namespace {
@@ -42,26 +43,13 @@ class GraphParser {
   void unknown_key(const std::string& key, const JsonValue& v, const std::string& p,
                    const std::vector<std::string>& known) {
     std::string message = "unknown key '" + key + "'";
-    std::string guess = closest_key(key, known);
+    std::string guess = closest_name(key, known);
     if (!guess.empty()) message += "; did you mean '" + guess + "'?";
     else {
       message += "; expected";
       for (size_t k = 0; k < known.size(); ++k) message += (k ? ", " : " ") + known[k];
     }
     d_.error(v.pos(), p, message);
-  }
-
-  static std::string closest_key(const std::string& key, const std::vector<std::string>& known) {
-    for (const auto& k : known)
-      if (k.size() > 2 && (key.rfind(k, 0) == 0 || k.rfind(key, 0) == 0)) return k;
-    size_t best = 3;
-    std::string out;
-    for (const auto& k : known) {
-      size_t d = 0, n = std::max(k.size(), key.size());
-      for (size_t i = 0; i < n; ++i) d += i >= k.size() || i >= key.size() || k[i] != key[i];
-      if (d < best) best = d, out = k;
-    }
-    return out;
   }
 
   void format(const JsonValue& v, const std::string& p) {

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -232,6 +233,7 @@ class Reader {
       if (out.size() >= limits::max_string_bytes)
         fail_at(start, "string longer than " + std::to_string(limits::max_string_bytes) + " bytes");
       if (c == '\\') {
+        SourcePos escape = here();
         advance();
         char e = peek();
         if (at_end()) fail_at(start, "unterminated string");
@@ -247,21 +249,21 @@ class Reader {
           case 't': out += '\t'; break;
           case 'u': {
             uint32_t cp = hex4();
+            const char* unpaired = "unpaired UTF-16 surrogate in \\u escape";
             if (cp >= 0xD800 && cp <= 0xDBFF) {
-              if (peek() != '\\' || i_ + 1 >= s_.size() || s_[i_ + 1] != 'u')
-                fail("unpaired UTF-16 surrogate in \\u escape");
+              if (peek() != '\\' || i_ + 1 >= s_.size() || s_[i_ + 1] != 'u') fail_at(escape, unpaired);
               advance();
               advance();
               uint32_t lo = hex4();
-              if (lo < 0xDC00 || lo > 0xDFFF) fail("unpaired UTF-16 surrogate in \\u escape");
+              if (lo < 0xDC00 || lo > 0xDFFF) fail_at(escape, unpaired);
               cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
             } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
-              fail("unpaired UTF-16 surrogate in \\u escape");
+              fail_at(escape, unpaired);
             }
             append_utf8(out, cp);
             break;
           }
-          default: fail(std::string("invalid escape \\") + e + " in a string");
+          default: fail_at(escape, std::string("invalid escape \\") + e + " in a string");
         }
         continue;
       }
@@ -303,9 +305,12 @@ class Reader {
     std::string text(s_.substr(begin, i_ - begin));
     double v = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec == std::errc::result_out_of_range && std::fabs(v) < 1.0) v = 0;  // underflow: 0 is exact enough
-    else if (ec != std::errc() || !std::isfinite(v))
-      fail_at(start, "number " + text + " is out of range (the largest is about 1.8e308)");
+    if (ec == std::errc::result_out_of_range) {
+      // from_chars leaves v alone when out of range; strtod tells overflow (inf) from
+      // underflow (0 or a denormal, which is as close as a double gets).
+      v = std::strtod(text.c_str(), nullptr);
+      if (!std::isfinite(v)) fail_at(start, "number " + text + " is out of range (the largest is about 1.8e308)");
+    }
     return JsonValue::number_with_text(v, std::move(text));
   }
 

@@ -28,9 +28,4 @@ class Registry {
   std::map<std::string, std::unique_ptr<NodeSchema>, std::less<>> schemas_;
 };
 
-// Levenshtein distance, for "did you mean" suggestions.
-size_t edit_distance(std::string_view a, std::string_view b);
-// The candidate closest to `word` when it is close enough to be a likely typo.
-std::string closest_name(std::string_view word, const std::vector<std::string>& candidates);
-
 }  // namespace lg

@@ -2,6 +2,8 @@
 
 #include <unordered_map>
 
+#include "graph/spelling.h"
+
 namespace lg {
 namespace {
 
