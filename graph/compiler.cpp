@@ -46,18 +46,21 @@ std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
 }
 
 Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, LoweredGraph&& lowered,
-              const std::vector<int>& order, const std::vector<Lifetime>& lives, MemoryLayout&& memory,
+              const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives, MemoryLayout&& memory,
               std::vector<Barrier> barriers, const CompileOptions& options) {
   Plan plan;
   plan.name = graph.name;
   plan.file = graph.file;
   plan.scene = options.scene.name;
   plan.frame = options.frame;
-  for (size_t n = 0; n < graph.nodes.size(); ++n) {
+  // Nodes in topological order (ties by id), so the plan does not depend on the file's order.
+  std::vector<int> plan_index(graph.nodes.size());
+  for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
+  for (int n : node_order) {
     const NodeSchema& s = *resolved.nodes[n].schema;
     PlanNode node{graph.nodes[n].id, s.type, states[n].kind, states[n].reason, {}, JsonValue::object(),
                   lowered.nodes[n].is_static};
-    if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, static_cast<int>(n), options.roots);
+    if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, n, options.roots);
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (!states[n].dropped_passes[p].empty()) node.dropped.emplace_back(s.passes[p].name, states[n].dropped_passes[p]);
     plan.nodes.push_back(std::move(node));
@@ -65,7 +68,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    PlanPass pass{std::move(lp.name), lp.node, s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.is_static ? hex(lp.cache_key) : ""};
+    PlanPass pass{std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.is_static ? hex(lp.cache_key) : ""};
     for (const auto& a : lp.accesses) pass.accesses.push_back({a.resource, a.usage, slot_name(s, a), a.component});
     plan.passes.push_back(std::move(pass));
   }
@@ -75,6 +78,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
     bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
     if (lives[r].used() && !persistent) plan.memory.transient_unaliased += lowered.resources[r].bytes;
     plan.resources.push_back({std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r])});
+    plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
   }
   plan.passes.reserve(order.size());
   plan.blocks = memory.blocks;
@@ -148,7 +152,7 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   dump("synchronize", [&] { return barriers_dump(*lowered, order, barriers); });
 
   result.plan = timer.run("assemble", [&] {
-    return assemble(graph, resolved, states, std::move(*lowered), order, lives, std::move(memory), std::move(barriers), options);
+    return assemble(graph, resolved, states, std::move(*lowered), *order_nodes, order, lives, std::move(memory), std::move(barriers), options);
   });
   return result;
 }

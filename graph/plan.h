@@ -55,7 +55,7 @@ struct MemoryTotals {
 struct Plan {
   std::string name, file, scene;
   FrameSize frame;
-  std::vector<PlanNode> nodes;
+  std::vector<PlanNode> nodes;  // in topological order, ties broken by id
   std::vector<PlanPass> passes;
   std::vector<PlanResource> resources;
   std::vector<Barrier> barriers;  // sorted by Barrier::before
