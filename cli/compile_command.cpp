@@ -65,7 +65,7 @@ int compile_command(const std::vector<std::string>& argv) {
   Diagnostics diagnostics;
   CompileOptions options;
   if (auto bad = read_compile_options(*args, options, diagnostics)) return usage_error("compile", *bad);
-  options.keep_dumps = args->has("--dump-phases");
+  options.keep_dumps = args->value("--dump-phases").has_value();
 
   auto start = std::chrono::steady_clock::now();
   auto graph = diagnostics.has_errors() ? std::nullopt : load_graph_argument(*args, diagnostics);

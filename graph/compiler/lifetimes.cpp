@@ -23,4 +23,15 @@ std::vector<Lifetime> lifetimes(const LoweredGraph& lowered, const std::vector<i
   return out;
 }
 
+JsonValue dump_lifetimes(const LoweredGraph& lowered, const std::vector<Lifetime>& lives) {
+  JsonValue out = JsonValue::object();
+  for (size_t r = 0; r < lives.size(); ++r) {
+    JsonValue range = JsonValue::array();
+    range.push(lives[r].first);
+    range.push(lives[r].last);
+    out.set(lowered.resources[r].name, range);
+  }
+  return out;
+}
+
 }  // namespace lg

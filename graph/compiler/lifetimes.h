@@ -15,4 +15,6 @@ struct Lifetime {
 
 std::vector<Lifetime> lifetimes(const LoweredGraph& lowered, const std::vector<int>& order);
 
+JsonValue dump_lifetimes(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes);
+
 }  // namespace lg

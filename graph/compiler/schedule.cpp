@@ -70,4 +70,10 @@ std::vector<int> schedule(const LoweredGraph& lowered) {
   return order;
 }
 
+JsonValue dump_schedule(const LoweredGraph& lowered, const std::vector<int>& order) {
+  JsonValue out = JsonValue::array();
+  for (int p : order) out.push(lowered.passes[p].name);
+  return out;
+}
+
 }  // namespace lg

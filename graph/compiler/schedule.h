@@ -19,4 +19,6 @@ std::vector<int> schedule(const LoweredGraph& lowered);
 // writer before it of what it writes.
 std::vector<std::vector<int>> pass_dependencies(const LoweredGraph& lowered);
 
+JsonValue dump_schedule(const LoweredGraph& lowered, const std::vector<int>& order);
+
 }  // namespace lg

@@ -129,4 +129,18 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
   return out;
 }
 
+JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order, const std::vector<Barrier>& barriers) {
+  JsonValue out = JsonValue::array();
+  for (const auto& b : barriers) {
+    JsonValue& item = out.push(JsonValue::object());
+    item.set("before", lowered.passes[order[b.before]].name);
+    item.set("resource", lowered.resources[b.resource].name);
+    item.set("reason", std::string(barrier_reason_name(b.reason)));
+    item.set("src", stage_names(b.src_stages) + " " + access_names(b.src_access));
+    item.set("dst", stage_names(b.dst_stages) + " " + access_names(b.dst_access));
+    item.set("layout", std::string(layout_name(b.old_layout)) + " -> " + std::string(layout_name(b.new_layout)));
+  }
+  return out;
+}
+
 }  // namespace lg

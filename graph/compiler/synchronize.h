@@ -25,4 +25,6 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
 
 std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory);
 
+JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order, const std::vector<Barrier>& barriers);
+
 }  // namespace lg

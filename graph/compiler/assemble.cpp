@@ -1,0 +1,68 @@
+#include "graph/compiler/assemble.h"
+
+#include <cstdio>
+
+namespace lg {
+namespace {
+
+std::string hex(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
+  switch (a.target) {
+    case PassUse::Target::input: return "in." + s.inputs[a.port].name;
+    case PassUse::Target::output: return "out." + s.outputs[a.port].name;
+    case PassUse::Target::internal: return "tmp." + s.resources[a.port].name;
+  }
+  return {};
+}
+
+}  // namespace
+
+Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, LoweredGraph&& lowered,
+              const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
+              MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options) {
+  Plan plan;
+  plan.name = graph.name;
+  plan.file = graph.file;
+  plan.scene = options.scene_name;
+  plan.frame = options.frame;
+  // Nodes in topological order (ties by id), so the plan does not depend on the file's order.
+  std::vector<int> plan_index(graph.nodes.size());
+  for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
+  for (int n : node_order) {
+    const NodeSchema& s = *resolved.nodes[n].schema;
+    PlanNode node{graph.nodes[n].id, s.type, states[n].kind, states[n].reason, {}, JsonValue::object(),
+                  lowered.nodes[n].is_static};
+    if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, n, options.roots);
+    for (size_t p = 0; p < s.passes.size(); ++p)
+      if (!states[n].dropped_passes[p].empty()) node.dropped.emplace_back(s.passes[p].name, states[n].dropped_passes[p]);
+    plan.nodes.push_back(std::move(node));
+  }
+  for (int index : order) {
+    LoweredPass& lp = lowered.passes[index];
+    const NodeSchema& s = *resolved.nodes[lp.node].schema;
+    PlanPass pass{std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.is_static ? hex(lp.cache_key) : ""};
+    for (const auto& a : lp.accesses) pass.accesses.push_back({a.resource, a.usage, slot_name(s, a), a.component});
+    plan.passes.push_back(std::move(pass));
+  }
+  plan.resources.reserve(lowered.resources.size());
+  for (size_t r = 0; r < lowered.resources.size(); ++r) {
+    auto lifetime = lowered.resources[r].lifetime;
+    bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
+    if (lives[r].used() && !persistent) plan.memory.transient_unaliased += lowered.resources[r].bytes;
+    plan.resources.push_back({std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r])});
+    plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
+  }
+  plan.blocks = memory.blocks;
+  plan.memory.transient = memory.blocks[0].size;
+  plan.memory.persistent = memory.blocks[1].size;
+  plan.barriers = std::move(barriers);
+  return plan;
+}
+
+
+}  // namespace lg

@@ -1,0 +1,29 @@
+// The last step: gathers every phase's result into the Plan, plain data that owns its strings
+// and needs neither the graph nor the registry to be read.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "graph/asset_paths.h"
+#include "graph/compiler/alias.h"
+#include "graph/compiler/barrier.h"
+#include "graph/compiler/lifetimes.h"
+#include "graph/compiler/lower.h"
+#include "graph/compiler/node_states.h"
+#include "graph/compiler/resolved_graph.h"
+#include "graph/plan.h"
+
+namespace lg {
+
+struct AssembleOptions {
+  std::string scene_name;
+  FrameSize frame;
+  AssetRoots roots;  // to make path params absolute
+};
+
+Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, LoweredGraph&& lowered,
+              const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
+              MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options);
+
+}  // namespace lg
