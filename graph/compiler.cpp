@@ -44,6 +44,7 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   dump("resolve", [&] { return dump_resolved(resolved); });
   auto order_nodes = timer.run("validate", [&] { return validate(resolved, options.roots, diagnostics); });
   if (!order_nodes || diagnostics.has_errors()) return result;
+  dump("validate", [&] { return dump_node_order(resolved, *order_nodes); });
 
   NodeStates states = timer.run("specialize", [&] { return specialize(resolved, options.scene); });
   dump("specialize", [&] { return dump_node_states(resolved, states); });

@@ -166,4 +166,10 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
   return order;
 }
 
+JsonValue dump_node_order(const ResolvedGraph& resolved, const std::vector<int>& order) {
+  JsonValue out = JsonValue::array();
+  for (int n : order) out.push(resolved.graph->nodes[n].id);
+  return out;
+}
+
 }  // namespace lg

@@ -16,6 +16,9 @@ namespace lg {
 std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
                                          Diagnostics& diagnostics);
 
+// The topological order as node ids.
+JsonValue dump_node_order(const ResolvedGraph& resolved, const std::vector<int>& order);
+
 // Checks one param value against its spec; empty when valid, else what was expected.
 std::string check_param_value(const ParamSpec& spec, const JsonValue& value);
 
