@@ -53,17 +53,16 @@ class StabbingTree {
 class GreedyPlacer {
  public:
   GreedyPlacer(int passes, const std::vector<int>& resources, const std::vector<Lifetime>& lives)
-      : alive_(passes), by_first_(resources), seen_(lives.size(), 0), placed_(lives.size(), 0) {
+      : alive_(passes), by_first_(resources), placed_(lives.size(), 0) {
     std::sort(by_first_.begin(), by_first_.end(), [&](int a, int b) { return lives[a].first < lives[b].first; });
     for (int r : by_first_) firsts_.push_back(lives[r].first);
   }
 
   uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment, std::vector<Placement>& placements) {
-    ++stamp_;
+    // The two sources are disjoint (first use at or before this one's, or after it) and the
+    // tree holds each interval once on any root path, so nothing is counted twice.
     conflicts_.clear();
     auto note = [&](int other) {
-      if (seen_[other] == stamp_) return;
-      seen_[other] = stamp_;
       conflicts_.push_back({placements[other].offset, placements[other].offset + placements[other].size});
     };
     alive_.stab(life.first, note);
@@ -90,9 +89,7 @@ class GreedyPlacer {
  private:
   StabbingTree alive_;
   std::vector<int> by_first_, firsts_;  // resources to place, sorted by first use
-  std::vector<uint32_t> seen_;
   std::vector<char> placed_;
-  uint32_t stamp_ = 0;
   std::vector<std::pair<uint64_t, uint64_t>> conflicts_;
   uint64_t size_ = 0;
 };
