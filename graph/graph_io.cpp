@@ -1,5 +1,6 @@
 #include "graph/graph_io.h"
 
+#include <algorithm>
 #include <unordered_map>
 
 #include "graph/json_reader.h"
@@ -95,7 +96,11 @@ class GraphParser {
       if (key == "id") {
         n.id = string_value(value, kp);
         if (value.is_string() && !is_valid_id(n.id)) {
-          d_.error(value.pos(), kp, "invalid node id '" + n.id + "': use 1 to " + std::to_string(limits::max_id_length) +
+          // A long id is only wrong by its length: say so rather than make the reader count.
+          bool only_length = std::all_of(n.id.begin(), n.id.end(), [](const char& c) { return is_valid_id({&c, 1}); });
+          std::string what = only_length ? "invalid node id: it is " + std::to_string(n.id.size()) + " characters long"
+                                         : "invalid node id '" + n.id + "'";
+          d_.error(value.pos(), kp, what + ": use 1 to " + std::to_string(limits::max_id_length) +
                                         " letters, digits, '_' or '-'");
           n.id.clear();
         }

@@ -70,10 +70,14 @@ class Reader {
     }
   }
 
-  static std::string describe(char c) {
-    if (c == '\0') return "the end of the file";
+  // What `c` (the character at the current position) is, for "found ..." in messages: a NUL
+  // byte is not the end of the file, and a non-ASCII character is quoted whole, not as one byte.
+  std::string describe(char c) const {
+    if (at_end()) return "the end of the file";
     if (static_cast<unsigned char>(c) < 0x20) return "a control character";
-    return std::string("'") + c + "'";
+    size_t n = utf8_length();
+    if (n == 0) return "a byte that is not valid UTF-8";
+    return "'" + std::string(s_.substr(i_, n)) + "'";
   }
 
   JsonValue value(size_t depth) {
@@ -205,7 +209,9 @@ class Reader {
     return cp;
   }
 
-  // Length of a valid UTF-8 sequence starting at i_, or 0 when it is malformed.
+  // Length of a valid UTF-8 sequence starting at i_, or 0 when it is malformed (RFC 3629): a
+  // bad lead or continuation byte, an overlong form (C0 AF for '/'), a UTF-16 surrogate or a
+  // code point past U+10FFFF.
   size_t utf8_length() const {
     auto byte = [&](size_t k) { return static_cast<unsigned char>(s_[i_ + k]); };
     unsigned char c = byte(0);
@@ -213,6 +219,9 @@ class Reader {
     if (n == 0 || i_ + n > s_.size()) return 0;
     for (size_t k = 1; k < n; ++k)
       if ((byte(k) & 0xC0) != 0x80) return 0;
+    if (n == 2 && c < 0xC2) return 0;
+    if (n == 3 && ((c == 0xE0 && byte(1) < 0xA0) || (c == 0xED && byte(1) >= 0xA0))) return 0;
+    if (n == 4 && ((c == 0xF0 && byte(1) < 0x90) || c > 0xF4 || (c == 0xF4 && byte(1) >= 0x90))) return 0;
     return n;
   }
 

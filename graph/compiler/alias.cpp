@@ -149,6 +149,8 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     block.size = p.offset + res.bytes;
   }
   if (!options.enabled) return out;
+  uint64_t stacked = 0;  // block 0's size with aliasing off: what aliasing must never exceed
+  for (int r : shared) stacked = align_up(stacked, alignment(lowered.resources[r])) + lowered.resources[r].bytes;
 
   std::sort(shared.begin(), shared.end(), [&](int a, int b) {
     uint64_t sa = lowered.resources[a].bytes, sb = lowered.resources[b].bytes;
@@ -159,6 +161,17 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   for (int r : shared)
     out.placements[r].offset = placer.place(r, lifetimes[r], out.placements[r].size, alignment(lowered.resources[r]), out.placements);
   out.blocks[0].size = placer.size();
+  if (out.blocks[0].size > stacked) {
+    // Packing by size lost to plain stacking on alignment padding (little overlaps in time):
+    // stack them in resource order, as with aliasing off.
+    std::sort(shared.begin(), shared.end());
+    uint64_t end = 0;
+    for (int r : shared) {
+      out.placements[r].offset = align_up(end, alignment(lowered.resources[r]));
+      end = out.placements[r].offset + out.placements[r].size;
+    }
+    out.blocks[0].size = end;
+  }
 
   std::sort(shared.begin(), shared.end(), [&](int a, int b) {
     return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;

@@ -33,6 +33,8 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   // Nodes in topological order (ties by id), so the plan does not depend on the file's order.
   std::vector<int> plan_index(graph.nodes.size());
   for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
+  plan.nodes.reserve(node_order.size());
+  plan.passes.reserve(order.size());
   for (int n : node_order) {
     const NodeSchema& s = *resolved.nodes[n].schema;
     PlanNode node{graph.nodes[n].id, s.type, states[n].kind, states[n].reason, {}, JsonValue::object(),

@@ -1,5 +1,8 @@
 #include "graph/compiler/cull.h"
 
+#include <algorithm>
+#include <string_view>
+
 namespace lg {
 
 int forwarded_input(const ResolvedGraph& resolved, const NodeStates& states, int node, int port) {
@@ -34,16 +37,24 @@ NodeStates cull(const ResolvedGraph& resolved, NodeStates states) {
       visit(resolved.links[li].from_node);
     }
   }
-  std::vector<int> bypassed_consumer(count, -1);
+  // Every bypassed node that would have used a dead one, named in id order so the reason does
+  // not depend on the order of the file's links.
+  std::vector<std::vector<std::string_view>> bypassed_consumers(count);
   for (const auto& l : resolved.links)
     if (!live[l.from_node] && live[l.to_node] && states[l.to_node].kind == NodeState::Kind::bypassed)
-      bypassed_consumer[l.from_node] = l.to_node;
+      bypassed_consumers[l.from_node].push_back(resolved.graph->nodes[l.to_node].id);
   for (size_t n = 0; n < count; ++n) {
     if (live[n]) continue;
     states[n].kind = NodeState::Kind::culled;
-    int consumer = bypassed_consumer[n];
-    states[n].reason = consumer < 0 ? "no output depends on it"
-                                    : "only '" + resolved.graph->nodes[consumer].id + "' uses it, and that node is bypassed";
+    auto& consumers = bypassed_consumers[n];
+    std::sort(consumers.begin(), consumers.end());
+    consumers.erase(std::unique(consumers.begin(), consumers.end()), consumers.end());
+    std::string names;
+    for (size_t k = 0; k < consumers.size(); ++k)
+      names += (k == 0 ? "'" : k + 1 == consumers.size() ? " and '" : ", '") + std::string(consumers[k]) + "'";
+    states[n].reason = consumers.empty()      ? "no output depends on it"
+                       : consumers.size() == 1 ? "only " + names + " uses it, and that node is bypassed"
+                                               : "only " + names + " use it, and those nodes are bypassed";
   }
   return states;
 }

@@ -55,15 +55,20 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
 std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory) {
   const size_t count = lowered.resources.size();
   std::vector<std::vector<Group>> groups(count);
+  std::vector<std::pair<int, AccessInfo>> uses;  // one pass's uses, one per resource
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
     const LoweredPass& pass = lowered.passes[order[pos]];
+    // A pass that uses a resource twice (sampled and as storage, say) needs both at once: merge
+    // them before grouping, so they join a group or start one together, never one of each.
+    uses.clear();
     for (const auto& a : pass.accesses) {
       AccessInfo info = access_info(a.usage, pass.queue, lowered.resources[a.resource]);
-      auto& list = groups[a.resource];
-      if (!list.empty() && list.back().first == pos) {  // the same pass uses it twice
-        list.back().info = merge(list.back().info, info);
-        continue;
-      }
+      auto same = std::find_if(uses.begin(), uses.end(), [&](const auto& u) { return u.first == a.resource; });
+      if (same != uses.end()) same->second = merge(same->second, info);
+      else uses.emplace_back(a.resource, info);
+    }
+    for (const auto& [resource, info] : uses) {
+      auto& list = groups[resource];
       bool joins = !list.empty() && !info.writes && !list.back().info.writes && list.back().info.layout == info.layout;
       if (joins) list.back().info = merge(list.back().info, info);
       else list.push_back({pos, info});

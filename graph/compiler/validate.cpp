@@ -80,7 +80,16 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
     for (size_t p = 0; p < s.params.size(); ++p) {
       const ParamSpec& spec = s.params[p];
       const JsonValue* written = gn.params.find(spec.name);
-      if (!written) continue;  // defaults are valid by construction (tests check every schema)
+      if (!written) {
+        // Defaults are valid by construction (tests check every schema), but a default path
+        // names a file that may not be there: check it like a written one.
+        std::string why;
+        if (spec.type == ParamType::path &&
+            !resolve_asset_path(g.file, spec.default_value.as_string(), roots, spec.extensions, &why))
+          diagnostics.error(gn.pos, node_pointer(n),
+                            "param '" + spec.name + "' of node '" + gn.id + "' is not set, so its default is used: " + why);
+        continue;
+      }
       std::string pointer = node_pointer(n) + "/params/" + spec.name;
       std::string expected = check_param_value(spec, *written);
       if (!expected.empty()) {
@@ -112,7 +121,11 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
     }
   }
 
-  if (!has_root && diagnostics.error_count() == before)
+  // Not when a node type or a listed output did not resolve (already reported): the unknown
+  // type or the misspelt output may be what the graph asks for.
+  bool unresolved = resolved.outputs.size() < g.outputs.size();
+  for (const ResolvedNode& rn : resolved.nodes) unresolved |= !rn.schema;
+  if (!has_root && !unresolved && diagnostics.error_count() == before)
     diagnostics.error({1, 1}, "/outputs", "the graph asks for nothing: list ports under \"outputs\" or add an output node");
 
   // Kahn's algorithm over non-history links, ties broken by id so file order does not matter.
