@@ -1,0 +1,160 @@
+// Specialization seen in the Plan: a scene without what a node or pass needs gets a smaller
+// plan, the plan says why, and what is left still reads only what it wrote.
+#include <gtest/gtest.h>
+
+#include "graph/plan_format.h"
+#include "tests/compiler/compiler_fixtures.h"
+
+namespace lg {
+namespace {
+
+using test::pass_at;
+using test::resource_at;
+
+// Every resource a pass reads was written earlier in the frame, except previous-frame copies
+// (and cached results, which are written by the static prefix of the same plan).
+void expect_nothing_read_before_written(const Plan& plan) {
+  std::vector<char> written(plan.resources.size(), 0);
+  for (const auto& p : plan.passes) {
+    for (const auto& a : p.accesses) {
+      const LoweredResource& r = plan.resources[a.resource].desc;
+      if (usage_reads(a.usage) && r.history_of < 0) {
+        EXPECT_TRUE(written[a.resource]) << p.name << " reads " << r.name << " before anything writes it";
+      }
+    }
+    for (const auto& a : p.accesses)
+      if (usage_writes(a.usage)) written[a.resource] = 1;
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> dropped(const Plan& plan, std::string_view id) {
+  const PlanNode* n = test::plan_node(plan, id);
+  return n ? n->dropped : std::vector<std::pair<std::string, std::string>>{};
+}
+
+TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
+  Plan plan = test::compile_example("examples/default.json", "examples/scenes/sun-only.json");
+  const PlanNode* light = test::plan_node(plan, "light");
+  ASSERT_NE(light, nullptr);
+  EXPECT_EQ(light->state, NodeState::Kind::active);
+  EXPECT_EQ(dropped(plan, "light"),
+            (std::vector<std::pair<std::string, std::string>>{{"area", "the scene has no area lights"}}));
+  EXPECT_EQ(pass_at(plan, "light/area"), -1);
+  EXPECT_GE(pass_at(plan, "light/direct"), 0);
+  // light.color is now written once, by direct, and read by ibl.
+  int color = resource_at(plan, "light.color");
+  ASSERT_GE(color, 0);
+  int writers = 0;
+  for (const auto& p : plan.passes)
+    for (const auto& a : p.accesses) writers += a.resource == color && usage_writes(a.usage);
+  EXPECT_EQ(writers, 1);
+  EXPECT_NE(
+      plan_to_text(plan).find("passes dropped:\n  light/area (lighting.deferred): the scene has no area lights\n"),
+      std::string::npos)
+      << plan_to_text(plan);
+  expect_nothing_read_before_written(plan);
+
+  // The default room has a sphere and a tube light: the pass stays.
+  Plan room = test::compile_example("examples/default.json");
+  EXPECT_GE(pass_at(room, "light/area"), 0);
+  EXPECT_TRUE(dropped(room, "light").empty());
+}
+
+TEST(CompilerSpecialization, PinholeCameraBypassesDepthOfField) {
+  Plan plan = test::compile_example("examples/post.json");  // default scene: aperture 0
+  const PlanNode* dof = test::plan_node(plan, "dof");
+  ASSERT_NE(dof, nullptr);
+  EXPECT_EQ(dof->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(dof->reason, "the camera is a pinhole (aperture 0): nothing is out of focus");
+  for (const auto& p : plan.passes) EXPECT_NE(p.node, dof - plan.nodes.data()) << p.name;
+  // bloom, which consumed dof.color, reads dof's input (ibl.color) directly.
+  int ibl = resource_at(plan, "ibl.color");
+  ASSERT_GE(ibl, 0);
+  EXPECT_EQ(test::resource_in_slot(plan, "bloom/downsample", "in.color"), ibl);
+  EXPECT_EQ(test::resource_in_slot(plan, "bloom/composite", "in.color"), ibl);
+  EXPECT_EQ(resource_at(plan, "dof.color"), -1);
+  EXPECT_NE(plan_to_text(plan).find(
+                "bypassed:\n  dof (post.dof): the camera is a pinhole (aperture 0): nothing is out of focus\n"),
+            std::string::npos);
+  expect_nothing_read_before_written(plan);
+}
+
+TEST(CompilerSpecialization, ThinLensCameraKeepsDepthOfField) {
+  Plan plan = test::compile_example("examples/post.json", "examples/scenes/thin-lens.json");
+  const PlanNode* dof = test::plan_node(plan, "dof");
+  ASSERT_NE(dof, nullptr);
+  EXPECT_EQ(dof->state, NodeState::Kind::active);
+  EXPECT_EQ(dof->reason, "");
+  for (const char* pass : {"dof/coc", "dof/gather", "dof/composite"}) EXPECT_GE(pass_at(plan, pass), 0) << pass;
+  int color = resource_at(plan, "dof.color");
+  ASSERT_GE(color, 0);
+  EXPECT_EQ(test::resource_in_slot(plan, "bloom/downsample", "in.color"), color);
+  EXPECT_EQ(test::resource_in_slot(plan, "dof/gather", "in.color"), resource_at(plan, "ibl.color"));
+  EXPECT_EQ(test::resource_in_slot(plan, "dof/coc", "in.gbuffer"), resource_at(plan, "gbuf.gbuffer.depth"));
+  expect_nothing_read_before_written(plan);
+}
+
+TEST(CompilerSpecialization, BloomAtIntensityZeroIsBypassed) {
+  for (const char* scene : {"", "examples/scenes/thin-lens.json"}) {
+    SCOPED_TRACE(scene);
+    Graph g = test::load_example("examples/post.json");
+    test::node_named(g, "bloom").params.set("intensity", 0);
+    CompileOptions o;
+    o.scene = test::load_scene(scene);
+    Plan plan = test::compile_ok(g, builtin_registry(), o);
+    const PlanNode* bloom = test::plan_node(plan, "bloom");
+    ASSERT_NE(bloom, nullptr);
+    EXPECT_EQ(bloom->state, NodeState::Kind::bypassed);
+    EXPECT_TRUE(bloom->reason.starts_with("intensity is 0")) << bloom->reason;
+    EXPECT_EQ(bloom->reason, "intensity is 0: bloom would add nothing");
+    EXPECT_EQ(pass_at(plan, "bloom/downsample"), -1);
+    EXPECT_EQ(resource_at(plan, "bloom/chain"), -1);
+    // tonemap reads what bloom would have read: dof's output, or ibl's when dof is bypassed too.
+    const char* upstream = *scene ? "dof.color" : "ibl.color";
+    EXPECT_EQ(test::resource_name(plan, test::resource_in_slot(plan, "tonemap/map", "in.color")), upstream);
+    expect_nothing_read_before_written(plan);
+  }
+}
+
+TEST(CompilerSpecialization, NoShadowCastersDropsTheShadowPass) {
+  SceneSummary no_shadows = default_scene_summary();
+  no_shadows.shadows = false;
+  SceneSummary area_only = default_scene_summary();
+  area_only.directional_lights = 0;  // sphere and tube lights cast no shadow map here
+  for (const SceneSummary& scene : {no_shadows, area_only})
+    for (const auto& path : test::example_paths()) {
+      SCOPED_TRACE(path);
+      CompileOptions o;
+      o.scene = scene;
+      Plan plan = test::compile_ok(test::load_example(path), builtin_registry(), o);
+      EXPECT_EQ(dropped(plan, "light"),
+                (std::vector<std::pair<std::string, std::string>>{{"shadows", "no light in the scene casts shadows"}}));
+      EXPECT_EQ(pass_at(plan, "light/shadows"), -1);
+      // The shadow map is neither drawn nor sampled, so it takes no memory.
+      int map = resource_at(plan, "light/shadow_map");
+      if (map >= 0) {
+        EXPECT_EQ(plan.resources[map].first, -1);
+        EXPECT_EQ(plan.resources[map].placement.block, -1);
+      }
+      for (const auto& b : plan.barriers) EXPECT_NE(b.resource, map) << "a barrier for a resource nobody uses";
+      expect_nothing_read_before_written(plan);
+    }
+}
+
+TEST(CompilerSpecialization, NoEnvironmentBypassesImageBasedLighting) {
+  SceneSummary dark = default_scene_summary();
+  dark.environment = false;
+  CompileOptions o;
+  o.scene = dark;
+  Plan plan = test::compile_ok(test::load_example("examples/default.json"), builtin_registry(), o);
+  EXPECT_EQ(test::plan_node(plan, "ibl")->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(test::plan_node(plan, "ibl")->reason, "the scene has no environment light");
+  EXPECT_EQ(test::resource_name(plan, test::resource_in_slot(plan, "tonemap/map", "in.color")), "light.color");
+  // Nothing static is left to compute, and gtao only fed ibl.
+  for (const auto& p : plan.passes) EXPECT_FALSE(p.is_static) << p.name;
+  EXPECT_EQ(test::plan_node(plan, "gtao")->state, NodeState::Kind::culled);
+  expect_nothing_read_before_written(plan);
+}
+
+}  // namespace
+}  // namespace lg
