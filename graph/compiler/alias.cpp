@@ -6,7 +6,10 @@
 namespace lg {
 namespace {
 
-uint64_t align_up(uint64_t v, uint64_t a) { return (v + a - 1) / a * a; }
+uint64_t align_up(uint64_t v, uint64_t a) {
+  a = std::max<uint64_t>(a, 1);  // an alignment of 0 means none
+  return (v + a - 1) / a * a;
+}
 
 bool is_persistent(const LoweredResource& r) {
   return r.lifetime == ResourceLifetime::cached || r.lifetime == ResourceLifetime::history;

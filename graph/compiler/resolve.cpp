@@ -45,6 +45,9 @@ class Resolver {
   Diagnostics& d_;
   ResolvedGraph out_;
   std::unordered_map<std::string_view, int> ids_;
+  // Node ids compared for "did you mean" suggestions. Each unknown reference compares against
+  // every id, so without a bound a file with many nodes and many bad links took hours.
+  size_t guess_budget_ = 100'000;
 
   static std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
 
@@ -80,9 +83,13 @@ class Resolver {
   int find_node(const PortRef& ref, SourcePos pos, const std::string& pointer) {
     auto it = ids_.find(ref.node);
     if (it == ids_.end()) {
-      std::vector<std::string> ids;
-      for (const auto& n : g_.nodes) ids.push_back(n.id);
-      std::string guess = closest_name(ref.node, ids);
+      std::string guess;
+      if (guess_budget_ >= g_.nodes.size()) {
+        guess_budget_ -= g_.nodes.size();
+        std::vector<std::string> ids;
+        for (const auto& n : g_.nodes) ids.push_back(n.id);
+        guess = closest_name(ref.node, ids);
+      }
       d_.error(pos, pointer, "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
       return -1;
     }
