@@ -123,6 +123,9 @@ std::vector<Case> cases() {
   return c;
 }
 
+// What gtest prints for a case: its name, not its bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 class MalformedGraph : public testing::TestWithParam<Case> {};
 
 TEST_P(MalformedGraph, ReportsWhatWhereAndWhy) {
