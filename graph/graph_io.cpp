@@ -98,9 +98,9 @@ class GraphParser {
         if (value.is_string() && !is_valid_id(n.id)) {
           // A long id is only wrong by its length: say so rather than make the reader count.
           bool only_length = std::all_of(n.id.begin(), n.id.end(), [](const char& c) { return is_valid_id({&c, 1}); });
-          std::string what = only_length ? "invalid node id: it is " + std::to_string(n.id.size()) + " characters long"
-                                         : "invalid node id '" + n.id + "'";
-          d_.error(value.pos(), kp, what + ": use 1 to " + std::to_string(limits::max_id_length) +
+          std::string what = only_length ? "invalid node id: it has " + std::to_string(n.id.size()) + " characters; "
+                                         : "invalid node id '" + n.id + "': ";
+          d_.error(value.pos(), kp, what + "use 1 to " + std::to_string(limits::max_id_length) +
                                         " letters, digits, '_' or '-'");
           n.id.clear();
         }

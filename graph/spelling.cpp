@@ -25,7 +25,8 @@ std::string closest_name(std::string_view word, const std::vector<std::string>& 
   size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
   for (const auto& c : candidates) {
     size_t d = edit_distance(word, c);
-    if (d < best_distance) {
+    // Every letter replaced is no near miss: 'x' is not a typo of 'g' (but 't' may be of 'tm').
+    if (d < best_distance && d < std::max(word.size(), c.size())) {
       best_distance = d;
       best = c;
     }
