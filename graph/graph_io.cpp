@@ -26,7 +26,7 @@ class GraphParser {
       if (key == "format") format(value, p);
       else if (key == "name") g_.name = string_value(value, p);
       else if (key == "nodes") list(value, p, limits::max_nodes, "nodes", [&](const JsonValue& v, const std::string& ip) { node(v, ip); });
-      else if (key == "links") list(value, p, limits::max_links, "links", [&](const JsonValue& v, const std::string& ip) { link(v, ip); });
+      else if (key == "links") list(value, p, limits::max_array_items, "links", [&](const JsonValue& v, const std::string& ip) { link(v, ip); });
       else if (key == "outputs") list(value, p, limits::max_nodes, "outputs", [&](const JsonValue& v, const std::string& ip) { output(v, ip); });
       else if (key == "editor") editor(value, p);
       else unknown_key(key, value, p, {"format", "name", "nodes", "links", "outputs", "editor"});

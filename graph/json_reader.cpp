@@ -3,7 +3,9 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -50,7 +52,8 @@ class Reader {
 
   void advance() {
     unsigned char c = static_cast<unsigned char>(s_[i_++]);
-    if (c == '\n') {
+    // "\n", "\r\n" and a lone "\r" (old Mac files) each end a line.
+    if (c == '\n' || (c == '\r' && (at_end() || s_[i_] != '\n'))) {
       ++line_;
       column_ = 1;
     } else if ((c & 0xC0) != 0x80) {  // continuation bytes do not start a new character
@@ -367,7 +370,7 @@ std::optional<JsonValue> read_json(std::string_view text, Diagnostics& diagnosti
 std::optional<JsonValue> read_json_file(const std::string& path, Diagnostics& diagnostics) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    diagnostics.error({}, "", "cannot open the file");
+    diagnostics.error({}, "", std::string("cannot open the file: ") + std::strerror(errno));
     return std::nullopt;
   }
   std::string text;

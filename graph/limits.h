@@ -13,7 +13,6 @@ inline constexpr size_t max_json_values = 1'000'000;    // values in one documen
 inline constexpr size_t max_array_items = 262'144;      // items in one array or object
 inline constexpr size_t max_string_bytes = 65'536;      // bytes in one string
 inline constexpr size_t max_nodes = 65'536;
-inline constexpr size_t max_links = 262'144;
 inline constexpr size_t max_id_length = 64;             // node ids: [A-Za-z0-9_-]
 inline constexpr size_t max_image_extent = 16'384;      // texels along one axis
 inline constexpr size_t max_resource_bytes = 4ull << 30;

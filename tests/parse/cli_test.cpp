@@ -136,7 +136,7 @@ TEST(ParseCli, ValidateAMissingFileExits2AndNamesIt) {
   TempDir dir;
   Outcome r = lumagraph({"validate", dir.file("absent.json")});
   EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(starts_with(r.err, dir.file("absent.json") + ": error: cannot open the file\n")) << r.err;
+  EXPECT_TRUE(starts_with(r.err, dir.file("absent.json") + ": error: cannot open the file: No such file or directory\n")) << r.err;
 }
 
 TEST(ParseCli, CompileAnInvalidGraphExits2AndCountsTheErrors) {

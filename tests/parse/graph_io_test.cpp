@@ -210,7 +210,7 @@ TEST(ParseGraphIo, LoadingAMissingFileNamesIt) {
   EXPECT_FALSE(load_graph_file(dir.file("absent.json"), d));
   ASSERT_EQ(d.items().size(), 1u);
   EXPECT_EQ(d.items()[0].file, dir.file("absent.json"));
-  EXPECT_EQ(d.items()[0].message, "cannot open the file");
+  EXPECT_EQ(d.items()[0].message, "cannot open the file: No such file or directory");
 }
 
 TEST(ParseGraphIo, IdsAreOneTo64LettersDigitsUnderscoresOrDashes) {

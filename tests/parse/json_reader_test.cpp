@@ -398,7 +398,7 @@ TEST(ParseJson, ReadsAFileAndReportsOneThatIsMissing) {
   Diagnostics missing(dir.file("none.json"));
   EXPECT_FALSE(read_json_file(dir.file("none.json"), missing));
   ASSERT_EQ(missing.items().size(), 1u);
-  EXPECT_EQ(missing.items()[0].to_string(), dir.file("none.json") + ": error: cannot open the file");
+  EXPECT_EQ(missing.items()[0].to_string(), dir.file("none.json") + ": error: cannot open the file: No such file or directory");
 }
 
 TEST(ParseJson, DiagnosticTextNamesFileLineColumnAndPointer) {
@@ -412,6 +412,24 @@ TEST(ParseJson, DiagnosticTextNamesFileLineColumnAndPointer) {
   d.pointer.clear();
   d.pos = {};
   EXPECT_EQ(d.to_string(), "g.json: warning: param 'order' is bad");
+}
+
+}  // namespace
+}  // namespace lg
+
+namespace lg {
+namespace {
+
+TEST(ParseJsonPositions, EveryLineEndingStartsALine) {
+  // "\n", "\r\n" and a lone "\r" (old Mac files) each end a line.
+  for (const char* newline : {"\n", "\r\n", "\r"}) {
+    std::string text = std::string("{") + newline + "\"a\": 1," + newline + "  x}";
+    Diagnostics d;
+    EXPECT_FALSE(read_json(text, d));
+    ASSERT_EQ(d.items().size(), 1u);
+    EXPECT_EQ(d.items()[0].pos.line, 3u) << "newline " << (newline[0] == '\r' ? "CR" : "LF");
+    EXPECT_EQ(d.items()[0].pos.column, 3u);
+  }
 }
 
 }  // namespace
