@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -60,9 +61,11 @@ int nodes_command(const std::vector<std::string>& argv) {
   }
   for (const NodeSchema* s : registry.all()) {
     std::printf("%s%s\n  %s\n", s->type.c_str(), s->is_static ? "  [static, cached]" : "", s->doc.c_str());
-    for (const auto& p : s->inputs)
-      std::printf("  in  %-14s %-16s%s%s\n", p.name.c_str(), p.type.name().c_str(), p.optional ? " optional" : "",
-                  p.history ? " history" : "");
+    for (const auto& p : s->inputs) {
+      std::string flags = std::string(p.optional ? " optional" : "") + (p.history ? " history" : "");
+      std::printf("  in  %-14s %s%s\n", p.name.c_str(), p.type.name().c_str(),
+                  flags.empty() ? "" : (std::string(16 - std::min<size_t>(16, p.type.name().size()), ' ') + flags).c_str());
+    }
     for (const auto& p : s->outputs) std::printf("  out %-14s %s\n", p.name.c_str(), p.type.name().c_str());
     if (!s->params.empty()) std::printf("  params:\n");
     for (const auto& p : s->params) std::fputs(param_line(p).c_str(), stdout);
