@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <map>
+#include <memory_resource>
 
 namespace lg {
 namespace {
 
 uint64_t align_up(uint64_t v, uint64_t a) {
-  a = std::max<uint64_t>(a, 1);  // an alignment of 0 means none
+  if ((a & (a - 1)) == 0) return a == 0 ? v : (v + a - 1) & ~(a - 1);  // powers of two: no division
   return (v + a - 1) / a * a;
 }
 
@@ -102,6 +103,8 @@ class GreedyPlacer {
 // have conflicted).
 class LastOwners {
  public:
+  explicit LastOwners(size_t resources) : pool_(resources * 3 * sizeof(std::pair<const uint64_t, std::pair<uint64_t, int>>) + 4096), owners_(&pool_) {}
+
   void take(uint64_t start, uint64_t end, int owner, std::vector<int>& predecessors) {
     auto it = owners_.upper_bound(start);
     if (it != owners_.begin() && std::prev(it)->second.first > start) --it;
@@ -119,7 +122,9 @@ class LastOwners {
   }
 
  private:
-  std::map<uint64_t, std::pair<uint64_t, int>> owners_;  // start -> (end, owner)
+  // Nodes come from one arena: the map is rebuilt for every plan and dropped whole.
+  std::pmr::monotonic_buffer_resource pool_;
+  std::pmr::map<uint64_t, std::pair<uint64_t, int>> owners_;  // start -> (end, owner)
 };
 
 }  // namespace
@@ -155,11 +160,19 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   uint64_t stacked = 0;  // block 0's size with aliasing off: what aliasing must never exceed
   for (int r : shared) stacked = align_up(stacked, alignment(lowered.resources[r])) + lowered.resources[r].bytes;
 
-  std::sort(shared.begin(), shared.end(), [&](int a, int b) {
-    uint64_t sa = lowered.resources[a].bytes, sb = lowered.resources[b].bytes;
-    if (sa != sb) return sa > sb;
-    return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;
+  // Largest first; sorting compact keys rather than whole resources keeps the caches warm.
+  struct Key {
+    uint64_t bytes;
+    int first, index;
+  };
+  std::vector<Key> keys;
+  keys.reserve(shared.size());
+  for (int r : shared) keys.push_back({lowered.resources[r].bytes, lifetimes[r].first, r});
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    if (a.bytes != b.bytes) return a.bytes > b.bytes;
+    return a.first != b.first ? a.first < b.first : a.index < b.index;
   });
+  for (size_t k = 0; k < keys.size(); ++k) shared[k] = keys[k].index;
   GreedyPlacer placer(passes, shared, lifetimes);
   for (int r : shared)
     out.placements[r].offset = placer.place(r, lifetimes[r], out.placements[r].size, alignment(lowered.resources[r]), out.placements);
@@ -179,7 +192,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   std::sort(shared.begin(), shared.end(), [&](int a, int b) {
     return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;
   });
-  LastOwners owners;
+  LastOwners owners(shared.size());
   for (int r : shared) {
     Placement& p = out.placements[r];
     owners.take(p.offset, p.offset + p.size, r, p.predecessors);
