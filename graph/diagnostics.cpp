@@ -17,10 +17,6 @@ void Diagnostics::error(SourcePos pos, std::string pointer, std::string message)
   items_.push_back({Severity::error, file_, pos, std::move(pointer), std::move(message)});
 }
 
-void Diagnostics::warning(SourcePos pos, std::string pointer, std::string message) {
-  items_.push_back({Severity::warning, file_, pos, std::move(pointer), std::move(message)});
-}
-
 void Diagnostics::sort_by_position() {
   std::stable_sort(items_.begin(), items_.end(), [](const Diagnostic& a, const Diagnostic& b) {
     return a.pos.line != b.pos.line ? a.pos.line < b.pos.line : a.pos.column < b.pos.column;

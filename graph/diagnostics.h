@@ -26,7 +26,6 @@ class Diagnostics {
   explicit Diagnostics(std::string file = {}) : file_(std::move(file)) {}
 
   void error(SourcePos pos, std::string pointer, std::string message);
-  void warning(SourcePos pos, std::string pointer, std::string message);
   void add(Diagnostic d) { items_.push_back(std::move(d)); }
 
   const std::string& file() const { return file_; }

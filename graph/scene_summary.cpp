@@ -73,8 +73,6 @@ const std::vector<Field>& fields() {
 
 }  // namespace
 
-std::string_view scene_feature_name(SceneFeature f) { return feature_names[static_cast<size_t>(f)]; }
-
 std::optional<SceneFeature> parse_scene_feature(std::string_view name) {
   for (size_t k = 0; k < feature_names.size(); ++k)
     if (feature_names[k] == name) return static_cast<SceneFeature>(k);

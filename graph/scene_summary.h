@@ -29,7 +29,6 @@ enum class SceneFeature : uint8_t {
   count
 };
 
-std::string_view scene_feature_name(SceneFeature f);
 std::optional<SceneFeature> parse_scene_feature(std::string_view name);
 // Why a node that needs `f` is skipped when the scene lacks it, e.g. "the scene has no area lights".
 std::string scene_lacks_reason(SceneFeature f);
