@@ -118,6 +118,7 @@ JsonValue plan_to_json(const Plan& plan) {
       barrier.set("old_layout", std::string(layout_name(b.old_layout)));
       barrier.set("new_layout", std::string(layout_name(b.new_layout)));
     }
+    if (b.skip_when_cached) barrier.set("skip_when_cached", true);
   }
 
   JsonValue& memory = root.set("memory", JsonValue::object());

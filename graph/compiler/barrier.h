@@ -47,6 +47,10 @@ struct Barrier {
   uint32_t src_stages = 0, src_access = 0, dst_stages = 0, dst_access = 0;
   Layout old_layout = Layout::none, new_layout = Layout::none;
   BarrierReason reason = BarrierReason::first_use;
+  // Hands a cached result from its static pass to its first reader. On a frame whose cached
+  // passes are skipped (their keys unchanged) it is skipped too: the image already sits in its
+  // readers' layout from the frames before.
+  bool skip_when_cached = false;
 };
 
 std::string stage_names(uint32_t stages);

@@ -126,8 +126,10 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     for (size_t g = 1; g < list.size(); ++g) {
       const AccessInfo& before = list[g - 1].info;
       const AccessInfo& after = list[g].info;
+      bool handoff = res.lifetime == ResourceLifetime::cached && lowered.passes[order[list[g - 1].first]].is_static &&
+                     !lowered.passes[order[list[g].first]].is_static;
       out.push_back({list[g].first, static_cast<int>(r), before.stages, before.access & access_write_mask, after.stages,
-                     after.access, before.layout, after.layout, reason_between(before, after)});
+                     after.access, before.layout, after.layout, reason_between(before, after), handoff});
     }
   }
   std::stable_sort(out.begin(), out.end(), [](const Barrier& a, const Barrier& b) { return a.before < b.before; });
