@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -368,6 +369,11 @@ std::optional<JsonValue> read_json(std::string_view text, Diagnostics& diagnosti
 }
 
 std::optional<JsonValue> read_json_file(const std::string& path, Diagnostics& diagnostics) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    diagnostics.error({}, "", "this is a folder; expected a JSON file");
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     diagnostics.error({}, "", std::string("cannot open the file: ") + std::strerror(errno));
