@@ -37,7 +37,7 @@ struct PlanPass {
   Queue queue = Queue::compute;
   std::vector<PlanAccess> accesses;
   bool is_static = false;
-  std::string cache_key;  // hex; empty unless static
+  uint64_t cache_key = 0;  // 0 unless static
 };
 
 struct PlanResource {

@@ -7,6 +7,12 @@
 namespace lg {
 namespace {
 
+std::string hex(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
 std::string_view state_name(NodeState::Kind k) {
   constexpr std::string_view names[] = {"active", "bypassed", "culled"};
   return names[static_cast<int>(k)];
@@ -74,7 +80,7 @@ JsonValue plan_to_json(const Plan& plan) {
     pass.set("node", plan.nodes[p.node].id);
     pass.set("pass", p.pass);
     pass.set("queue", std::string(queue_name(p.queue)));
-    if (p.is_static) pass.set("cache_key", p.cache_key);
+    if (p.is_static) pass.set("cache_key", hex(p.cache_key));
     JsonValue& uses = pass.set("uses", JsonValue::array());
     for (const auto& a : p.accesses) {
       JsonValue& use = uses.push(JsonValue::object());

@@ -54,15 +54,18 @@ std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildca
     if (error) *error = "unknown port kind '" + std::string(kind) + "'";
     return std::nullopt;
   }
-  if (cls == "*" && allow_wildcard && !it->second.classes.contains("")) return PortType{std::string(kind), "*"};
-  if (!it->second.classes.contains(cls)) {
+  static const std::vector<PortComponent> none;  // wildcards have no layout of their own
+  const KindInfo& info = it->second;
+  if (cls == "*" && allow_wildcard && !info.classes.contains("")) return PortType{std::string(kind), "*", info.resource, &none};
+  auto layout = info.classes.find(cls);
+  if (layout == info.classes.end()) {
     if (error) {
       *error = "'" + std::string(kind) + "' has no format class '" + std::string(cls) + "'; expected one of";
-      for (const auto& [name, _] : it->second.classes) *error += " '" + std::string(kind) + (name.empty() ? "" : ":" + name) + "'";
+      for (const auto& [name, _] : info.classes) *error += " '" + std::string(kind) + (name.empty() ? "" : ":" + name) + "'";
     }
     return std::nullopt;
   }
-  return PortType{std::string(kind), std::string(cls)};
+  return PortType{std::string(kind), std::string(cls), info.resource, &layout->second};
 }
 
 bool port_types_compatible(const PortType& from, const PortType& to, std::string* why) {
@@ -75,19 +78,10 @@ bool port_types_compatible(const PortType& from, const PortType& to, std::string
   return false;
 }
 
-ResourceKind resource_kind_of(const PortType& type) { return kinds().at(type.kind).resource; }
-
-const std::vector<PortComponent>& port_components(const PortType& type) {
-  static const std::vector<PortComponent> none;  // wildcards have no layout of their own
-  const auto& classes = kinds().at(type.kind).classes;
-  auto it = classes.find(type.format_class);
-  return it == classes.end() ? none : it->second;
-}
-
 std::vector<PortType> all_port_types() {
   std::vector<PortType> out;
   for (const auto& [kind, info] : kinds())
-    for (const auto& [cls, _] : info.classes) out.push_back({kind, cls});
+    for (const auto& [cls, layout] : info.classes) out.push_back({kind, cls, info.resource, &layout});
   return out;
 }
 

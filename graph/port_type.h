@@ -24,6 +24,11 @@ struct PortComponent {
 struct PortType {
   std::string kind;          // "texture2d", "cube", "texture3d", "sh", "gbuffer", "scalar"
   std::string format_class;  // "hdr", "ldr", "mask", ... or "*" (inputs only); empty if none
+  // Looked up once by parse_port_type, as lowering asks for them at every port.
+  ResourceKind resource = ResourceKind::texture2d;
+  const std::vector<PortComponent>* layout = nullptr;  // empty for wildcards
+
+  const std::vector<PortComponent>& components() const { return *layout; }
 
   std::string name() const { return format_class.empty() ? kind : kind + ':' + format_class; }
   bool is_wildcard() const { return format_class == "*"; }
@@ -37,9 +42,6 @@ std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildca
 // Whether an output of type `from` may feed an input of type `to`; when not, `why` says so in
 // words a user understands.
 bool port_types_compatible(const PortType& from, const PortType& to, std::string* why);
-
-ResourceKind resource_kind_of(const PortType& type);
-const std::vector<PortComponent>& port_components(const PortType& type);
 
 // All known concrete port types, for `lumagraph nodes` and the editor's port colours.
 std::vector<PortType> all_port_types();

@@ -230,7 +230,7 @@ class SchemaReader {
         if (!port) {
           d_.error(usage.pos(), up, "'" + target + "' names no in.PORT, out.PORT or tmp.RESOURCE");
         } else if (!component.empty()) {
-          const auto& components = port_components(port->type);
+          const auto& components = port->type.components();
           for (size_t c = 0; c < components.size(); ++c)
             if (components[c].name == component) use.component = static_cast<int>(c);
           if (use.component < 0) d_.error(usage.pos(), up, "'" + port->type.name() + "' has no component '" + component + "'");

@@ -56,24 +56,26 @@ class StabbingTree {
 // sorted by first use). A placement costs about the size of the live set.
 class GreedyPlacer {
  public:
-  GreedyPlacer(int passes, const std::vector<int>& resources, const std::vector<Lifetime>& lives)
-      : alive_(passes), by_first_(resources), placed_(lives.size(), 0) {
-    std::sort(by_first_.begin(), by_first_.end(), [&](int a, int b) { return lives[a].first < lives[b].first; });
-    for (int r : by_first_) firsts_.push_back(lives[r].first);
+  // `by_first`: the resources to place, sorted by first use. Internally a resource is its
+  // position in that order, so the scan below reads placed spans from one contiguous array.
+  GreedyPlacer(int passes, const std::vector<int>& by_first, const std::vector<Lifetime>& lives)
+      : alive_(passes), position_(lives.size(), -1), spans_(by_first.size()), placed_(by_first.size(), 0) {
+    firsts_.reserve(by_first.size());
+    for (size_t k = 0; k < by_first.size(); ++k) {
+      position_[by_first[k]] = static_cast<int>(k);
+      firsts_.push_back(lives[by_first[k]].first);
+    }
   }
 
-  uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment, std::vector<Placement>& placements) {
+  uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment) {
     // The two sources are disjoint (first use at or before this one's, or after it) and the
     // tree holds each interval once on any root path, so nothing is counted twice.
     conflicts_.clear();
-    auto note = [&](int other) {
-      conflicts_.push_back({placements[other].offset, placements[other].offset + placements[other].size});
-    };
-    alive_.stab(life.first, note);
-    auto begin = std::upper_bound(firsts_.begin(), firsts_.end(), life.first) - firsts_.begin();
-    for (auto k = begin; k < static_cast<long>(firsts_.size()) && firsts_[k] <= life.last; ++k)
-      if (placed_[by_first_[k]]) note(by_first_[k]);
-    std::sort(conflicts_.begin(), conflicts_.end());
+    alive_.stab(life.first, [&](int k) { conflicts_.push_back(spans_[k]); });
+    for (auto k = std::upper_bound(firsts_.begin(), firsts_.end(), life.first) - firsts_.begin();
+         k < static_cast<long>(firsts_.size()) && firsts_[k] <= life.last; ++k)
+      if (placed_[k]) conflicts_.push_back(spans_[k]);
+    sort_by_start(conflicts_);
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
     for (const auto& [start, end] : conflicts_) {
@@ -82,8 +84,10 @@ class GreedyPlacer {
       cursor = std::max(cursor, end);
     }
     if (best == UINT64_MAX) best = align_up(cursor, alignment);
-    alive_.insert(life.first, life.last, r);
-    placed_[r] = 1;
+    const int k = position_[r];
+    alive_.insert(life.first, life.last, k);
+    spans_[k] = {best, best + bytes};
+    placed_[k] = 1;
     size_ = std::max(size_, best + bytes);
     return best;
   }
@@ -91,10 +95,31 @@ class GreedyPlacer {
   uint64_t size() const { return size_; }
 
  private:
-  StabbingTree alive_;
-  std::vector<int> by_first_, firsts_;  // resources to place, sorted by first use
-  std::vector<char> placed_;
-  std::vector<std::pair<uint64_t, uint64_t>> conflicts_;
+  struct Span {
+    uint64_t start, end;
+  };
+
+  // The gap scan does not care how equal starts are ordered. The lists are usually a dozen or
+  // two long, where insertion sort beats std::sort.
+  static void sort_by_start(std::vector<Span>& spans) {
+    if (spans.size() > 32) {
+      std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.start < b.start; });
+      return;
+    }
+    for (size_t i = 1; i < spans.size(); ++i) {
+      Span s = spans[i];
+      size_t j = i;
+      for (; j > 0 && spans[j - 1].start > s.start; --j) spans[j] = spans[j - 1];
+      spans[j] = s;
+    }
+  }
+
+  StabbingTree alive_;          // holds positions
+  std::vector<int> position_;   // resource -> position in first-use order
+  std::vector<int> firsts_;     // by position: first use
+  std::vector<Span> spans_;     // by position: bytes, once placed
+  std::vector<char> placed_;    // by position
+  std::vector<Span> conflicts_;
   uint64_t size_ = 0;
 };
 
@@ -172,15 +197,24 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     if (a.bytes != b.bytes) return a.bytes > b.bytes;
     return a.first != b.first ? a.first < b.first : a.index < b.index;
   });
-  for (size_t k = 0; k < keys.size(); ++k) shared[k] = keys[k].index;
-  GreedyPlacer placer(passes, shared, lifetimes);
-  for (int r : shared)
-    out.placements[r].offset = placer.place(r, lifetimes[r], out.placements[r].size, alignment(lowered.resources[r]), out.placements);
+  // By first use, ties by index: the order the placer scans and the order bytes change hands.
+  std::vector<std::pair<int, int>> firsts;
+  firsts.reserve(shared.size());
+  for (int r : shared) firsts.emplace_back(lifetimes[r].first, r);
+  std::sort(firsts.begin(), firsts.end());
+  std::vector<int> by_first;
+  by_first.reserve(shared.size());
+  for (const auto& [first, r] : firsts) by_first.push_back(r);
+
+  GreedyPlacer placer(passes, by_first, lifetimes);
+  for (const Key& key : keys) {
+    Placement& p = out.placements[key.index];
+    p.offset = placer.place(key.index, lifetimes[key.index], p.size, alignment(lowered.resources[key.index]));
+  }
   out.blocks[0].size = placer.size();
   if (out.blocks[0].size > stacked) {
     // Packing by size lost to plain stacking on alignment padding (little overlaps in time):
     // stack them in resource order, as with aliasing off.
-    std::sort(shared.begin(), shared.end());
     uint64_t end = 0;
     for (int r : shared) {
       out.placements[r].offset = align_up(end, alignment(lowered.resources[r]));
@@ -189,11 +223,8 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     out.blocks[0].size = end;
   }
 
-  std::sort(shared.begin(), shared.end(), [&](int a, int b) {
-    return lifetimes[a].first != lifetimes[b].first ? lifetimes[a].first < lifetimes[b].first : a < b;
-  });
   LastOwners owners(shared.size());
-  for (int r : shared) {
+  for (int r : by_first) {
     Placement& p = out.placements[r];
     owners.take(p.offset, p.offset + p.size, r, p.predecessors);
   }

@@ -1,15 +1,7 @@
 #include "graph/compiler/assemble.h"
 
-#include <cstdio>
-
 namespace lg {
 namespace {
-
-std::string hex(uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
 
 std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
   switch (a.target) {
@@ -41,13 +33,13 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
                   lowered.nodes[n].is_static};
     if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, n, options.roots);
     for (size_t p = 0; p < s.passes.size(); ++p)
-      if (!states[n].dropped_passes[p].empty()) node.dropped.emplace_back(s.passes[p].name, states[n].dropped_passes[p]);
+      if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
     plan.nodes.push_back(std::move(node));
   }
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    PlanPass pass{std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.is_static ? hex(lp.cache_key) : ""};
+    PlanPass pass{std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.cache_key};
     for (const auto& a : lp.accesses) pass.accesses.push_back({a.resource, a.usage, slot_name(s, a), a.component});
     plan.passes.push_back(std::move(pass));
   }

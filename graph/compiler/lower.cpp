@@ -44,6 +44,7 @@ class Lowerer {
       port_base_[n + 1] = port_base_[n] + static_cast<int>(r_.nodes[n].schema->outputs.size());
     ports_.resize(port_base_[count]);
     previous_.resize(port_base_[count]);
+    reserve(order);
     for (int n : order) {
       if (s_[n].kind == NodeState::Kind::culled) continue;
       if (s_[n].kind == NodeState::Kind::bypassed) forward(n);
@@ -81,6 +82,21 @@ class Lowerer {
   std::vector<Span> previous_;   // per output port: previous-frame copies, made on demand
   std::vector<Span> internal_;   // the node being lowered: its internal resources
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
+
+  // Room for what the active nodes make (previous-frame copies aside): growing the arrays
+  // instead copies them and touches twice the memory.
+  void reserve(const std::vector<int>& order) {
+    size_t passes = 0, resources = 0;
+    for (int n : order) {
+      if (s_[n].kind != NodeState::Kind::active) continue;
+      const NodeSchema& s = *r_.nodes[n].schema;
+      passes += s.passes.size();
+      for (const auto& port : s.outputs) resources += port.type.components().size();
+      for (const auto& port : s.resources) resources += port.type.components().size();
+    }
+    out_.passes.reserve(passes);
+    out_.resources.reserve(resources);
+  }
 
   const std::string& id(int n) const { return r_.graph->nodes[n].id; }
   Span& port(int node, int output) { return ports_[port_base_[node] + output]; }
@@ -157,11 +173,11 @@ class Lowerer {
 
   Span make_resources(int n, const PortSpec& spec, const std::string& name) {
     Span span{static_cast<int>(out_.resources.size()), 0};
-    for (const PortComponent& c : port_components(spec.type)) {
+    for (const PortComponent& c : spec.type.components()) {
       LoweredResource res;
       res.name = c.name.empty() ? name : name + '.' + c.name;
       res.node = n;
-      res.kind = resource_kind_of(spec.type);
+      res.kind = spec.type.resource;
       res.format = c.format;
       res.depth_format = c.depth;
       size(n, spec, res);
@@ -231,7 +247,7 @@ class Lowerer {
 
     bool dropped_any = false;
     for (size_t p = 0; p < s.passes.size(); ++p) {
-      if (!s_[n].dropped_passes[p].empty()) {
+      if (!s_[n].why_dropped(p).empty()) {
         dropped_any = true;
         continue;
       }
@@ -313,13 +329,14 @@ class Lowerer {
 JsonValue node_params(const ResolvedGraph& resolved, int node, const AssetRoots& roots) {
   const ResolvedNode& rn = resolved.nodes[node];
   JsonValue params = JsonValue::object();
+  params.members().reserve(rn.params.size());
   for (size_t p = 0; p < rn.params.size(); ++p) {
     const ParamSpec& spec = rn.schema->params[p];
     const JsonValue& value = *rn.params[p];
     std::optional<std::string> path;
     if (spec.type == ParamType::path && value.is_string())
       path = resolve_asset_path(resolved.graph->file, value.as_string(), roots, spec.extensions, nullptr);
-    params.set(spec.name, path ? JsonValue(*path) : value);
+    params.members().emplace_back(spec.name, path ? JsonValue(*path) : value);  // schema names are unique
   }
   return params;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lg {
@@ -10,7 +11,11 @@ struct NodeState {
   enum class Kind : uint8_t { active, bypassed, culled } kind = Kind::active;
   std::string reason;                      // for bypassed and culled nodes
   int bypass_rule = -1;                    // index into NodeSchema::bypass when bypassed
-  std::vector<std::string> dropped_passes; // per schema pass: why it is dropped, empty if kept
+  std::vector<std::string> dropped_passes; // per schema pass: why it is dropped; empty if none is
+
+  std::string_view why_dropped(size_t pass) const {
+    return pass < dropped_passes.size() ? std::string_view(dropped_passes[pass]) : std::string_view();
+  }
 };
 
 using NodeStates = std::vector<NodeState>;

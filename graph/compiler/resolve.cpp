@@ -1,6 +1,8 @@
 #include "graph/compiler/resolve.h"
 
-#include <unordered_map>
+#include <bit>
+#include <functional>
+#include <type_traits>
 
 #include "graph/spelling.h"
 
@@ -22,6 +24,32 @@ std::vector<std::string> names_of(const std::vector<T>& items) {
   return out;
 }
 
+// Node index by id: open addressing in one array, as a map with a node per entry costs an
+// allocation per graph node.
+class NodeIds {
+ public:
+  explicit NodeIds(const Graph& g) : g_(g), slots_(std::bit_ceil(2 * g.nodes.size() + 1), -1) {
+    for (size_t k = 0; k < g.nodes.size(); ++k) {
+      size_t s = slot(g.nodes[k].id);
+      if (slots_[s] < 0) slots_[s] = static_cast<int>(k);  // a repeated id (already reported) keeps its first node
+    }
+  }
+
+  int find(std::string_view id) const { return slots_[slot(id)]; }
+
+ private:
+  const Graph& g_;
+  std::vector<int> slots_;  // node index, or -1 for an empty slot; never more than half full
+
+  // The slot holding `id`, or the empty one where it would go.
+  size_t slot(std::string_view id) const {
+    const size_t mask = slots_.size() - 1;
+    size_t s = std::hash<std::string_view>{}(id) & mask;
+    while (slots_[s] >= 0 && g_.nodes[slots_[s]].id != id) s = (s + 1) & mask;
+    return s;
+  }
+};
+
 class Resolver {
  public:
   Resolver(const Graph& g, const Registry& r, Diagnostics& d) : g_(g), r_(r), d_(d) {}
@@ -29,11 +57,16 @@ class Resolver {
   ResolvedGraph run() {
     out_.graph = &g_;
     out_.nodes.resize(g_.nodes.size());
-    ids_.reserve(g_.nodes.size());
+    size_t params = 0, inputs = 0;
     for (size_t k = 0; k < g_.nodes.size(); ++k) {
-      ids_.emplace(g_.nodes[k].id, static_cast<int>(k));
-      node(static_cast<int>(k));
+      if (const NodeSchema* s = out_.nodes[k].schema = r_.find(g_.nodes[k].type)) {
+        params += s->params.size();
+        inputs += s->inputs.size();
+      }
     }
+    out_.param_values.reserve(params);  // reserved whole: the spans must not move
+    out_.input_links.reserve(inputs);
+    for (size_t k = 0; k < g_.nodes.size(); ++k) node(static_cast<int>(k));
     for (size_t k = 0; k < g_.links.size(); ++k) link(static_cast<int>(k));
     for (size_t k = 0; k < g_.outputs.size(); ++k) output(static_cast<int>(k));
     return std::move(out_);
@@ -44,17 +77,30 @@ class Resolver {
   const Registry& r_;
   Diagnostics& d_;
   ResolvedGraph out_;
-  std::unordered_map<std::string_view, int> ids_;
+  NodeIds ids_{g_};
   // Node ids compared for "did you mean" suggestions. Each unknown reference compares against
   // every id, so without a bound a file with many nodes and many bad links took hours.
   size_t guess_budget_ = 100'000;
 
+  template <class T>
+  static std::span<T> append(std::vector<T>& all, size_t count, std::type_identity_t<T> value) {
+    all.resize(all.size() + count, value);
+    return {all.data() + all.size() - count, count};
+  }
+
   static std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
+
+  // Where a reference sits in the file. Its JSON pointer is spelled out only for an error.
+  struct RefPlace {
+    const char* list;   // "/links" or "/outputs"
+    int index;
+    const char* field;  // "/from", "/to" or ""
+    std::string pointer() const { return json_pointer_append(list, static_cast<size_t>(index)) + field; }
+  };
 
   void node(int n) {
     const GraphNode& gn = g_.nodes[n];
     ResolvedNode& rn = out_.nodes[n];
-    rn.schema = r_.find(gn.type);
     if (!rn.schema) {
       std::string message = "unknown node type '" + gn.type + "'";
       std::string guess = r_.closest_type(gn.type);
@@ -63,9 +109,9 @@ class Resolver {
       return;
     }
     const NodeSchema& s = *rn.schema;
-    rn.input_link.assign(s.inputs.size(), -1);
-    rn.params.reserve(s.params.size());
-    for (const auto& p : s.params) rn.params.push_back(&p.default_value);
+    rn.input_link = append(out_.input_links, s.inputs.size(), -1);
+    rn.params = append(out_.param_values, s.params.size(), nullptr);
+    for (size_t p = 0; p < s.params.size(); ++p) rn.params[p] = &s.params[p].default_value;
     for (const auto& [name, value] : gn.params.members()) {
       int index = s.find_param(name);
       if (index >= 0) {
@@ -80,9 +126,9 @@ class Resolver {
   }
 
   // Finds the node of a reference, or reports it. Returns -1 when unknown or untyped.
-  int find_node(const PortRef& ref, SourcePos pos, const std::string& pointer) {
-    auto it = ids_.find(ref.node);
-    if (it == ids_.end()) {
+  int find_node(const PortRef& ref, SourcePos pos, RefPlace place) {
+    int found = ids_.find(ref.node);
+    if (found < 0) {
       std::string guess;
       if (guess_budget_ >= g_.nodes.size()) {
         guess_budget_ -= g_.nodes.size();
@@ -90,13 +136,13 @@ class Resolver {
         for (const auto& n : g_.nodes) ids.push_back(n.id);
         guess = closest_name(ref.node, ids);
       }
-      d_.error(pos, pointer, "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+      d_.error(pos, place.pointer(), "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
       return -1;
     }
-    return out_.nodes[it->second].schema ? it->second : -1;
+    return out_.nodes[found].schema ? found : -1;
   }
 
-  int find_port(const PortRef& ref, int node, bool output, SourcePos pos, const std::string& pointer) {
+  int find_port(const PortRef& ref, int node, bool output, SourcePos pos, RefPlace place) {
     const NodeSchema& s = *out_.nodes[node].schema;
     int index = output ? s.find_output(ref.port) : s.find_input(ref.port);
     if (index >= 0) return index;
@@ -112,19 +158,19 @@ class Resolver {
       message += guess.empty() ? std::string("; its ") + (output ? "outputs" : "inputs") + " are: " + name_list(ports)
                                : "; did you mean '" + guess + "'?";
     }
-    d_.error(pos, pointer, message);
+    d_.error(pos, place.pointer(), message);
     return -1;
   }
 
   void link(int k) {
     const GraphLink& gl = g_.links[k];
-    std::string p = json_pointer_append("/links", static_cast<size_t>(k));
+    const RefPlace from{"/links", k, "/from"}, to{"/links", k, "/to"};
     ResolvedLink rl;
     rl.source = k;
-    rl.from_node = find_node(gl.from, gl.from_pos, p + "/from");
-    rl.to_node = find_node(gl.to, gl.to_pos, p + "/to");
-    if (rl.from_node >= 0) rl.from_port = find_port(gl.from, rl.from_node, true, gl.from_pos, p + "/from");
-    if (rl.to_node >= 0) rl.to_port = find_port(gl.to, rl.to_node, false, gl.to_pos, p + "/to");
+    rl.from_node = find_node(gl.from, gl.from_pos, from);
+    rl.to_node = find_node(gl.to, gl.to_pos, to);
+    if (rl.from_node >= 0) rl.from_port = find_port(gl.from, rl.from_node, true, gl.from_pos, from);
+    if (rl.to_node >= 0) rl.to_port = find_port(gl.to, rl.to_node, false, gl.to_pos, to);
     if (rl.to_port >= 0 && rl.from_port < 0 && out_.nodes[rl.to_node].input_link[rl.to_port] == -1)
       out_.nodes[rl.to_node].input_link[rl.to_port] = broken_link;
     if (rl.from_port < 0 || rl.to_port < 0) return;
@@ -134,7 +180,7 @@ class Resolver {
     if (slot == broken_link) slot = -1;
     if (slot >= 0) {
       const GraphLink& first = g_.links[out_.links[slot].source];
-      d_.error(gl.to_pos, p + "/to",
+      d_.error(gl.to_pos, to.pointer(),
                "input '" + gl.to.text() + "' is already linked from '" + first.from.text() + "' (line " +
                    std::to_string(first.to_pos.line) + "); an input takes one link");
       return;
@@ -145,10 +191,10 @@ class Resolver {
 
   void output(int k) {
     const GraphOutput& o = g_.outputs[k];
-    std::string p = json_pointer_append("/outputs", static_cast<size_t>(k));
-    int node = find_node(o.port, o.pos, p);
+    const RefPlace place{"/outputs", k, ""};
+    int node = find_node(o.port, o.pos, place);
     if (node < 0) return;
-    int port = find_port(o.port, node, true, o.pos, p);
+    int port = find_port(o.port, node, true, o.pos, place);
     if (port >= 0) out_.outputs.emplace_back(node, port);
   }
 };

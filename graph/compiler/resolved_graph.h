@@ -2,6 +2,7 @@
 // params filled in with their defaults. Indices refer to Graph::nodes and schema port lists.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "graph/graph.h"
@@ -20,16 +21,23 @@ struct ResolvedLink {
   bool history = false;                // into a history input: reads the previous frame
 };
 
+// The spans view ResolvedGraph's flat arrays: one allocation per graph, not two per node.
 struct ResolvedNode {
   const NodeSchema* schema = nullptr;  // null when the type is unknown (already reported)
-  std::vector<const JsonValue*> params;  // per schema param: the value written, or the default
+  std::span<const JsonValue*> params;  // per schema param: the value written, or the default
   const JsonValue& param(int index) const { return *params[index]; }
-  std::vector<int> input_link;         // per schema input: index into links, -1 or broken_link
+  std::span<int> input_link;           // per schema input: index into links, -1 or broken_link
 };
 
 struct ResolvedGraph {
+  ResolvedGraph() = default;
+  ResolvedGraph(ResolvedGraph&&) = default;  // moving keeps the arrays the spans point into
+  ResolvedGraph& operator=(ResolvedGraph&&) = default;
+
   const Graph* graph = nullptr;
   std::vector<ResolvedNode> nodes;
+  std::vector<const JsonValue*> param_values;  // every node's params, back to back
+  std::vector<int> input_links;                // every node's input links, back to back
   std::vector<ResolvedLink> links;
   std::vector<std::pair<int, int>> outputs;  // (node, output port) requested by the file
 };

@@ -4,44 +4,58 @@
 
 namespace lg {
 
-std::vector<std::vector<int>> pass_dependencies(const LoweredGraph& lowered) {
+PassDependencies pass_dependencies(const LoweredGraph& lowered) {
   const int count = static_cast<int>(lowered.passes.size());
-  std::vector<std::vector<int>> before(count);
-  std::vector<int> last_writer(lowered.resources.size(), -1);
-  std::vector<std::vector<int>> readers(lowered.resources.size());
+  PassDependencies out;
+  out.start.reserve(count + 1);
+  // Per resource: its last writer, and the passes that read it since, as linked lists in one pool.
+  struct Reader {
+    int pass, next;
+  };
+  std::vector<int> last_writer(lowered.resources.size(), -1), first_reader(lowered.resources.size(), -1);
+  std::vector<Reader> readers;
   auto depend = [&](int p, int on) {
-    if (on >= 0 && on != p) before[p].push_back(on);
+    if (on >= 0 && on != p) out.passes.push_back(on);
   };
   for (int p = 0; p < count; ++p) {
+    out.start.push_back(static_cast<int>(out.passes.size()));
     for (const auto& a : lowered.passes[p].accesses) {
       if (usage_reads(a.usage)) depend(p, last_writer[a.resource]);
       if (!usage_writes(a.usage)) {
-        readers[a.resource].push_back(p);
+        readers.push_back({p, first_reader[a.resource]});
+        first_reader[a.resource] = static_cast<int>(readers.size()) - 1;
         continue;
       }
       depend(p, last_writer[a.resource]);
-      for (int r : readers[a.resource]) depend(p, r);
-      readers[a.resource].clear();
+      for (int r = first_reader[a.resource]; r >= 0; r = readers[r].next) depend(p, readers[r].pass);
+      first_reader[a.resource] = -1;
       last_writer[a.resource] = p;
     }
   }
-  return before;
+  out.start.push_back(static_cast<int>(out.passes.size()));
+  return out;
 }
 
 std::vector<int> schedule(const LoweredGraph& lowered) {
   const int count = static_cast<int>(lowered.passes.size());
-  std::vector<std::vector<int>> before = pass_dependencies(lowered);
+  PassDependencies before = pass_dependencies(lowered);
   std::vector<char> needed(count, 0);
-  for (const auto& list : before)
-    for (int p : list) needed[p] = 1;
+  for (int p : before.passes) needed[p] = 1;
   // Visit the deepest producer first (as Sethi and Ullman order register allocation): a long
   // chain runs before the short side branches that join it, so their results do not wait
   // through the whole chain. Lowering order is topological, so one forward pass finds depths.
   std::vector<int> depth(count, 0);
   for (int p = 0; p < count; ++p)
     for (int q : before[p]) depth[p] = std::max(depth[p], depth[q] + 1);
-  for (auto& list : before)
-    std::stable_sort(list.begin(), list.end(), [&](int a, int b) { return depth[a] > depth[b]; });
+  std::vector<std::pair<int, int>> keyed;  // (-depth, place in the list): a stable sort, one buffer
+  for (int p = 0; p < count; ++p) {
+    std::span<int> list = before[p];
+    keyed.clear();
+    for (size_t k = 0; k < list.size(); ++k) keyed.emplace_back(-depth[list[k]], static_cast<int>(k));
+    std::sort(keyed.begin(), keyed.end());
+    for (size_t k = 0; k < keyed.size(); ++k) keyed[k].first = list[keyed[k].second];
+    for (size_t k = 0; k < keyed.size(); ++k) list[k] = keyed[k].first;
+  }
 
   // Iterative post-order (graphs may be chains of 10,000 passes).
   std::vector<int> order;

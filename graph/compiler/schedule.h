@@ -6,6 +6,7 @@
 // order depends only on lowering order, which does not depend on the order of the file.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "graph/compiler/lowered_graph.h"
@@ -16,8 +17,14 @@ namespace lg {
 std::vector<int> schedule(const LoweredGraph& lowered);
 
 // For each pass, the passes it must follow: the writer of what it reads, and the readers and
-// writer before it of what it writes.
-std::vector<std::vector<int>> pass_dependencies(const LoweredGraph& lowered);
+// writer before it of what it writes. All lists in one array (a pass may list one twice).
+struct PassDependencies {
+  std::vector<int> start;  // pass p's list is passes[start[p] .. start[p + 1])
+  std::vector<int> passes;
+  std::span<const int> operator[](size_t p) const { return {passes.data() + start[p], passes.data() + start[p + 1]}; }
+  std::span<int> operator[](size_t p) { return {passes.data() + start[p], passes.data() + start[p + 1]}; }
+};
+PassDependencies pass_dependencies(const LoweredGraph& lowered);
 
 JsonValue dump_schedule(const LoweredGraph& lowered, const std::vector<int>& order);
 

@@ -29,9 +29,11 @@ NodeStates specialize(const ResolvedGraph& resolved, const SceneSummary& scene) 
       state.reason = s.bypass[r].reason;
       break;
     }
-    state.dropped_passes.resize(s.passes.size());
-    for (size_t p = 0; p < s.passes.size(); ++p)
-      if (s.passes[p].needs && !scene.has(*s.passes[p].needs)) state.dropped_passes[p] = scene_lacks_reason(*s.passes[p].needs);
+    for (size_t p = 0; p < s.passes.size(); ++p) {
+      if (!s.passes[p].needs || scene.has(*s.passes[p].needs)) continue;
+      state.dropped_passes.resize(s.passes.size());  // only for nodes that drop a pass
+      state.dropped_passes[p] = scene_lacks_reason(*s.passes[p].needs);
+    }
   }
   return states;
 }

@@ -5,9 +5,12 @@
 namespace lg {
 namespace {
 
+// Consecutive accesses to one resource that need no barrier between them. A resource's groups
+// are a linked list in one pool, in schedule order.
 struct Group {
   int first = -1;  // schedule position of its first pass
   AccessInfo info;
+  int next = -1;
 };
 
 AccessInfo merge(AccessInfo a, const AccessInfo& b) {
@@ -23,6 +26,17 @@ BarrierReason reason_between(const AccessInfo& before, const AccessInfo& after) 
   if (before.writes) return BarrierReason::read_after_write;
   if (after.writes) return BarrierReason::write_after_read;
   return BarrierReason::layout_transition;
+}
+
+// Barriers by the pass they precede, in the order they were made (a counting sort: stable,
+// linear, one buffer).
+std::vector<Barrier> sorted_by_pass(std::vector<Barrier> barriers, size_t passes) {
+  std::vector<int> start(passes + 1, 0);
+  for (const Barrier& b : barriers) ++start[b.before + 1];
+  for (size_t p = 0; p < passes; ++p) start[p + 1] += start[p];
+  std::vector<Barrier> out(barriers.size());
+  for (Barrier& b : barriers) out[start[b.before]++] = b;
+  return out;
 }
 
 }  // namespace
@@ -54,7 +68,8 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
 
 std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory) {
   const size_t count = lowered.resources.size();
-  std::vector<std::vector<Group>> groups(count);
+  std::vector<Group> groups;
+  std::vector<int> head(count, -1), tail(count, -1);  // per resource: its first and last group
   std::vector<std::pair<int, AccessInfo>> uses;  // one pass's uses, one per resource
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
     const LoweredPass& pass = lowered.passes[order[pos]];
@@ -68,10 +83,14 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
       else uses.emplace_back(a.resource, info);
     }
     for (const auto& [resource, info] : uses) {
-      auto& list = groups[resource];
-      bool joins = !list.empty() && !info.writes && !list.back().info.writes && list.back().info.layout == info.layout;
-      if (joins) list.back().info = merge(list.back().info, info);
-      else list.push_back({pos, info});
+      int last = tail[resource];
+      if (last >= 0 && !info.writes && !groups[last].info.writes && groups[last].info.layout == info.layout) {
+        groups[last].info = merge(groups[last].info, info);
+        continue;
+      }
+      groups.push_back({pos, info});
+      tail[resource] = static_cast<int>(groups.size()) - 1;
+      (last >= 0 ? groups[last].next : head[resource]) = tail[resource];
     }
   }
   // A current history resource's partner (its previous-frame copy).
@@ -81,23 +100,23 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
 
   std::vector<Barrier> out;
   for (size_t r = 0; r < count; ++r) {
-    const auto& list = groups[r];
-    if (list.empty()) continue;
+    if (head[r] < 0) continue;
+    const Group& front = groups[head[r]];
     const LoweredResource& res = lowered.resources[r];
     const bool image = res.kind != ResourceKind::buffer;
 
     // Before the first group: wait for whoever held these bytes last.
     Barrier first;
-    first.before = list.front().first;
+    first.before = front.first;
     first.resource = static_cast<int>(r);
-    first.dst_stages = list.front().info.stages;
-    first.dst_access = list.front().info.access;
+    first.dst_stages = front.info.stages;
+    first.dst_access = front.info.access;
     first.old_layout = image ? Layout::undefined : Layout::none;
-    first.new_layout = list.front().info.layout;
+    first.new_layout = front.info.layout;
     first.reason = BarrierReason::first_use;
     auto wait_for = [&](int other) {
-      if (groups[other].empty()) return;
-      const AccessInfo& last = groups[other].back().info;
+      if (tail[other] < 0) return;
+      const AccessInfo& last = groups[tail[other]].info;
       first.src_stages |= last.stages;
       first.src_access |= last.access & access_write_mask;
     };
@@ -105,12 +124,11 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     if (res.history_of >= 0) {
       // Last frame this was the current half: its last access there precedes this one. Reads
       // in the same layout after reads need nothing; a write or a new layout does.
-      const auto& partner = groups[res.history_of];
-      if (!partner.empty()) {
-        const AccessInfo& last = partner.back().info;
+      if (int partner = tail[res.history_of]; partner >= 0) {
+        const AccessInfo& last = groups[partner].info;
         wait_for(res.history_of);
         first.old_layout = last.layout;
-        needed = last.writes || list.front().info.writes || last.layout != list.front().info.layout;
+        needed = last.writes || front.info.writes || last.layout != front.info.layout;
       }
       first.reason = BarrierReason::history;
     } else if (previous_copy[r] >= 0) {
@@ -123,17 +141,17 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     if (res.history_of < 0 && first.reason != BarrierReason::first_use) needed = true;
     if (needed) out.push_back(first);
 
-    for (size_t g = 1; g < list.size(); ++g) {
-      const AccessInfo& before = list[g - 1].info;
-      const AccessInfo& after = list[g].info;
-      bool handoff = res.lifetime == ResourceLifetime::cached && lowered.passes[order[list[g - 1].first]].is_static &&
-                     !lowered.passes[order[list[g].first]].is_static;
-      out.push_back({list[g].first, static_cast<int>(r), before.stages, before.access & access_write_mask, after.stages,
+    for (const Group* g = &front; g->next >= 0; g = &groups[g->next]) {
+      const Group& next = groups[g->next];
+      const AccessInfo& before = g->info;
+      const AccessInfo& after = next.info;
+      bool handoff = res.lifetime == ResourceLifetime::cached && lowered.passes[order[g->first]].is_static &&
+                     !lowered.passes[order[next.first]].is_static;
+      out.push_back({next.first, static_cast<int>(r), before.stages, before.access & access_write_mask, after.stages,
                      after.access, before.layout, after.layout, reason_between(before, after), handoff});
     }
   }
-  std::stable_sort(out.begin(), out.end(), [](const Barrier& a, const Barrier& b) { return a.before < b.before; });
-  return out;
+  return sorted_by_pass(std::move(out), order.size());
 }
 
 JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order, const std::vector<Barrier>& barriers) {

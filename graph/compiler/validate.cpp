@@ -90,16 +90,16 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
                             "param '" + spec.name + "' of node '" + gn.id + "' is not set, so its default is used: " + why);
         continue;
       }
-      std::string pointer = node_pointer(n) + "/params/" + spec.name;
+      auto pointer = [&] { return node_pointer(n) + "/params/" + spec.name; };
       std::string expected = check_param_value(spec, *written);
       if (!expected.empty()) {
-        diagnostics.error(written->pos(), pointer,
+        diagnostics.error(written->pos(), pointer(),
                           "param '" + spec.name + "' of node '" + gn.id + "' (" + s.type + ") must be " + expected +
                               (spec.unit.empty() ? "" : " (" + spec.unit + ")"));
       } else if (spec.type == ParamType::path) {
         std::string why;
         if (!resolve_asset_path(g.file, written->as_string(), roots, spec.extensions, &why))
-          diagnostics.error(written->pos(), pointer, "param '" + spec.name + "' of node '" + gn.id + "': " + why);
+          diagnostics.error(written->pos(), pointer(), "param '" + spec.name + "' of node '" + gn.id + "': " + why);
       }
     }
     for (size_t i = 0; i < s.inputs.size(); ++i)
@@ -129,15 +129,18 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
     diagnostics.error({1, 1}, "/outputs", "the graph asks for nothing: list ports under \"outputs\" or add an output node");
 
   // Kahn's algorithm over non-history links, ties broken by id so file order does not matter.
-  std::vector<std::vector<int>> consumers(node_count);
-  std::vector<int> pending(node_count, 0);
-  for (const auto& l : resolved.links) {
-    if (l.history) continue;
-    consumers[l.from_node].push_back(l.to_node);
-    ++pending[l.to_node];
-  }
+  // Each node's consumers, all in one array: node n's are consumers[start[n] .. start[n + 1]).
+  std::vector<int> start(node_count + 1, 0), pending(node_count, 0);
+  for (const auto& l : resolved.links)
+    if (!l.history) ++start[l.from_node + 1], ++pending[l.to_node];
+  for (int n = 0; n < node_count; ++n) start[n + 1] += start[n];
+  std::vector<int> consumers(start[node_count]), fill(start.begin(), start.end() - 1);
+  for (const auto& l : resolved.links)
+    if (!l.history) consumers[fill[l.from_node]++] = l.to_node;
   auto later = [&](int a, int b) { return g.nodes[a].id > g.nodes[b].id; };
-  std::priority_queue<int, std::vector<int>, decltype(later)> ready(later);
+  std::vector<int> heap;
+  heap.reserve(node_count);
+  std::priority_queue<int, std::vector<int>, decltype(later)> ready(later, std::move(heap));
   for (int n = 0; n < node_count; ++n)
     if (pending[n] == 0) ready.push(n);
   std::vector<int> order;
@@ -146,8 +149,8 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
     int n = ready.top();
     ready.pop();
     order.push_back(n);
-    for (int c : consumers[n])
-      if (--pending[c] == 0) ready.push(c);
+    for (int k = start[n]; k < start[n + 1]; ++k)
+      if (--pending[consumers[k]] == 0) ready.push(consumers[k]);
   }
   if (static_cast<int>(order.size()) < node_count) {
     // Walk back along unfinished inputs from an unfinished node until a node repeats: a cycle.

@@ -79,7 +79,8 @@ TEST(CompilerSchedule, PassDependenciesOfOneResource) {
   pass("w2", Usage::storage_read_write);
   pass("r3", Usage::sampled);
   auto deps = pass_dependencies(g);
-  auto sorted = [](std::vector<int> v) {  // as a set: listing a dependency twice is harmless
+  auto sorted = [](std::span<const int> list) {  // as a set: listing a dependency twice is harmless
+    std::vector<int> v(list.begin(), list.end());
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
     return v;

@@ -27,7 +27,7 @@ struct States {
     int n = index(id);
     const NodeSchema& s = *resolved.nodes[n].schema;
     for (size_t p = 0; p < s.passes.size(); ++p)
-      if (s.passes[p].name == pass) return specialized[n].dropped_passes[p];
+      if (s.passes[p].name == pass) return std::string(specialized[n].why_dropped(p));
     throw std::runtime_error("no pass " + std::string(pass));
   }
 };
