@@ -159,9 +159,13 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   MemoryLayout out;
   out.blocks = {{0, options.enabled}, {0, false}};
   out.placements.resize(count);
-  auto alignment = [&](const LoweredResource& r) {
-    return r.kind == ResourceKind::buffer ? options.buffer_alignment : options.image_alignment;
-  };
+  std::vector<ResourceMemory> needs(count);
+  for (size_t r = 0; r < count; ++r) {
+    const LoweredResource& res = lowered.resources[r];
+    if (!lifetimes[r].used()) continue;
+    if (options.memory) needs[r] = options.memory(res);
+    else needs[r] = {res.bytes, res.kind == ResourceKind::buffer ? options.buffer_alignment : options.image_alignment};
+  }
 
   // Persistent resources, and everything when aliasing is off: one after another.
   std::vector<int> shared;
@@ -171,19 +175,19 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     if (!lifetimes[r].used()) continue;
     passes = std::max(passes, lifetimes[r].last + 1);
     Placement& p = out.placements[r];
-    p.size = res.bytes;
+    p.size = needs[r].bytes;
     p.block = is_persistent(res) ? 1 : 0;
     if (p.block == 0 && options.enabled) {
       shared.push_back(static_cast<int>(r));
       continue;
     }
     MemoryBlock& block = out.blocks[p.block];
-    p.offset = align_up(block.size, alignment(res));
-    block.size = p.offset + res.bytes;
+    p.offset = align_up(block.size, needs[r].alignment);
+    block.size = p.offset + p.size;
   }
   if (!options.enabled) return out;
   uint64_t stacked = 0;  // block 0's size with aliasing off: what aliasing must never exceed
-  for (int r : shared) stacked = align_up(stacked, alignment(lowered.resources[r])) + lowered.resources[r].bytes;
+  for (int r : shared) stacked = align_up(stacked, needs[r].alignment) + needs[r].bytes;
 
   // Largest first; sorting compact keys rather than whole resources keeps the caches warm.
   struct Key {
@@ -192,7 +196,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   };
   std::vector<Key> keys;
   keys.reserve(shared.size());
-  for (int r : shared) keys.push_back({lowered.resources[r].bytes, lifetimes[r].first, r});
+  for (int r : shared) keys.push_back({needs[r].bytes, lifetimes[r].first, r});
   std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
     if (a.bytes != b.bytes) return a.bytes > b.bytes;
     return a.first != b.first ? a.first < b.first : a.index < b.index;
@@ -209,7 +213,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   GreedyPlacer placer(passes, by_first, lifetimes);
   for (const Key& key : keys) {
     Placement& p = out.placements[key.index];
-    p.offset = placer.place(key.index, lifetimes[key.index], p.size, alignment(lowered.resources[key.index]));
+    p.offset = placer.place(key.index, lifetimes[key.index], p.size, needs[key.index].alignment);
   }
   out.blocks[0].size = placer.size();
   if (out.blocks[0].size > stacked) {
@@ -217,7 +221,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     // stack them in resource order, as with aliasing off.
     uint64_t end = 0;
     for (int r : shared) {
-      out.placements[r].offset = align_up(end, alignment(lowered.resources[r]));
+      out.placements[r].offset = align_up(end, needs[r].alignment);
       end = out.placements[r].offset + out.placements[r].size;
     }
     out.blocks[0].size = end;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "graph/compiler/lifetimes.h"
@@ -12,10 +13,21 @@
 
 namespace lg {
 
+// Bytes and alignment a resource takes in device memory.
+struct ResourceMemory {
+  uint64_t bytes = 0;
+  uint64_t alignment = 1;
+};
+
 struct AliasOptions {
   bool enabled = true;
   uint64_t image_alignment = 4096;
   uint64_t buffer_alignment = 256;
+  // What the device needs for a resource (drivers pad images: tiles, mip tails), so that
+  // placements hold what the runtime binds there. Empty: the resource's own `bytes` and the
+  // alignments above. The runtime provides one (runtime/gpu/plan_resources.h); graph/ stays
+  // free of Vulkan.
+  std::function<ResourceMemory(const LoweredResource&)> memory{};
 };
 
 struct MemoryBlock {

@@ -47,7 +47,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   for (size_t r = 0; r < lowered.resources.size(); ++r) {
     auto lifetime = lowered.resources[r].lifetime;
     bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
-    if (lives[r].used() && !persistent) plan.memory.transient_unaliased += lowered.resources[r].bytes;
+    if (lives[r].used() && !persistent) plan.memory.transient_unaliased += memory.placements[r].size;
     plan.resources.push_back({std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r])});
     plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
   }

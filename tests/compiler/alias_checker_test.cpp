@@ -38,15 +38,19 @@ std::string check_memory(const Plan& plan, const AliasOptions& options) {
       fail(name(r) + ": in block " + std::to_string(p.block) + ", expected " + std::to_string(block));
       continue;
     }
-    if (p.size != pr.desc.bytes)
-      fail(name(r) + ": reserves " + std::to_string(p.size) + " bytes for " + std::to_string(pr.desc.bytes));
-    uint64_t alignment = pr.desc.kind == ResourceKind::buffer ? options.buffer_alignment : options.image_alignment;
-    if (p.offset % alignment != 0)
-      fail(name(r) + ": offset " + std::to_string(p.offset) + " not aligned to " + std::to_string(alignment));
+    // The device's needs when the options give them, else the resource's bytes.
+    const ResourceMemory need =
+        options.memory ? options.memory(pr.desc)
+                       : ResourceMemory{pr.desc.bytes, pr.desc.kind == ResourceKind::buffer ? options.buffer_alignment
+                                                                                            : options.image_alignment};
+    if (p.size != need.bytes)
+      fail(name(r) + ": reserves " + std::to_string(p.size) + " bytes for " + std::to_string(need.bytes));
+    if (p.offset % need.alignment != 0)
+      fail(name(r) + ": offset " + std::to_string(p.offset) + " not aligned to " + std::to_string(need.alignment));
     if (p.offset + p.size > plan.blocks[block].size) fail(name(r) + ": ends past its block");
     end[block] = std::max(end[block], p.offset + p.size);
     if (persistent && !p.predecessors.empty()) fail(name(r) + ": persistent but takes over bytes");
-    if (!persistent) unaliased += pr.desc.bytes;
+    if (!persistent) unaliased += need.bytes;
   }
   for (int b = 0; b < 2; ++b)
     if (end[b] != plan.blocks[b].size)
@@ -143,9 +147,10 @@ Plan check_graph(const Graph& g, const Registry& registry, const CompileOptions&
   uint64_t bound = 0;
   for (const auto& r : on.resources)
     if (r.placement.block == 0)
-      bound += r.desc.bytes +
-               (r.desc.kind == ResourceKind::buffer ? options.alias.buffer_alignment : options.alias.image_alignment) -
-               1;
+      bound += r.placement.size - 1 +
+               (options.alias.memory ? options.alias.memory(r.desc).alignment
+                : r.desc.kind == ResourceKind::buffer ? options.alias.buffer_alignment
+                                                      : options.alias.image_alignment);
   EXPECT_LE(on.memory.transient, bound) << what;
   EXPECT_EQ(on.blocks[1].size, off.blocks[1].size) << what << ": aliasing changed the persistent block";
   EXPECT_EQ(on.memory.transient_unaliased, off.memory.transient_unaliased) << what;
@@ -171,6 +176,23 @@ TEST(CompilerAliasChecker, ExamplesAtSeveralSizesAndAlignments) {
         }
   EXPECT_EQ(checked, static_cast<int>(test::example_paths().size() * test::scene_paths().size() * 5 * 4));
   EXPECT_GE(checked, 3 * 4 * 5 * 4);
+}
+
+// A runtime hands in what its driver needs: padded sizes, coarse image alignment.
+TEST(CompilerAliasChecker, DeviceSizesAndAlignments) {
+  CompileOptions o;
+  o.frame = {999, 333};
+  o.alias.memory = [](const LoweredResource& r) {
+    const bool buffer = r.kind == ResourceKind::buffer;
+    return ResourceMemory{buffer ? r.bytes : (r.bytes + 4095) / 4096 * 4096 + 512, buffer ? 64u : 65536u};
+  };
+  for (const auto& path : test::example_paths()) {
+    Plan plan = check_graph(test::load_example(path), builtin_registry(), o, path + " with device sizes");
+    for (const auto& r : plan.resources) {
+      if (r.first < 0 || r.desc.kind == ResourceKind::buffer) continue;
+      EXPECT_EQ(r.placement.size % 4096, 512u) << r.desc.name;
+    }
+  }
 }
 
 TEST(CompilerAliasChecker, ThousandRandomDags) {
