@@ -1,0 +1,127 @@
+// The world as one frame's passes see it: the camera, every drawable mesh with its material and
+// transform, and every light, flattened out of the ECS world (runtime/scene/world.h) by
+// make_scene_view(). Kernels read only this, never the world, so a host engine may also fill it
+// itself. Units: metres; light colours are linear RGB (Rec.709 primaries).
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "graph/scene_summary.h"
+
+namespace lg {
+
+// Triangles in the mesh's own space; counter-clockwise seen from outside.
+struct MeshData {
+  std::string name;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;  // one per position, unit length
+  std::vector<glm::vec2> uvs;      // empty, or one per position
+  std::vector<uint32_t> indices;   // three per triangle
+};
+
+// An RGBA8 texture in sRGB (base colour) as decoded from a file, rows top to bottom.
+struct TextureData {
+  std::string name;
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> rgba8;
+};
+
+// glTF 2.0 metallic-roughness.
+struct PbrMaterial {
+  std::string name;
+  glm::vec4 base_color{1.0f};  // linear; multiplies the texture
+  float roughness = 0.5f;      // perceptual roughness (alpha = roughness^2)
+  float metalness = 0.0f;
+  glm::vec3 emissive{0.0f};    // radiance, linear RGB
+  int base_color_texture = -1;  // index into SceneView::textures, or -1
+};
+
+struct DrawItem {
+  int mesh = -1;      // index into SceneView::meshes
+  int material = -1;  // index into SceneView::materials
+  glm::mat4 world{1.0f};
+  glm::mat4 previous_world{1.0f};  // last frame's, for motion vectors
+};
+
+// Vulkan clip space with reversed Z: depth 1 at the near plane, 0 at infinity (infinite far
+// plane), y down in clip space as Vulkan has it.
+struct CameraView {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  glm::mat4 previous_view_projection{1.0f};
+  glm::vec3 position{0.0f};
+  float vertical_fov = 1.0f;  // radians
+  float near_plane = 0.05f;
+  float aperture = 0.0f;      // lens diameter in metres; 0 is a pinhole
+  float focus_distance = 5.0f;
+};
+
+struct DirectionalLightData {
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit, the way the light travels
+  glm::vec3 irradiance{1.0f};              // on a surface facing the light, W/m^2 per channel
+  float angular_radius = 0.00465f;         // radians (the sun's)
+  bool casts_shadows = true;
+};
+
+struct PointLightData {
+  glm::vec3 position{0.0f};
+  glm::vec3 intensity{1.0f};  // W/sr per channel
+  float range = 0.0f;         // 0: no cut-off
+};
+
+// Uniform Lambertian emitters; `radiance` is W/(m^2 sr) per channel (see
+// nodes/lighting/deferred/README.md for the formulas).
+struct SphereLightData {
+  glm::vec3 center{0.0f};
+  float radius = 0.1f;
+  glm::vec3 radiance{1.0f};
+};
+
+struct TubeLightData {  // a capsule around the segment end0-end1
+  glm::vec3 end0{0.0f}, end1{1.0f, 0.0f, 0.0f};
+  float radius = 0.05f;
+  glm::vec3 radiance{1.0f};
+};
+
+struct RectLightData {  // one-sided lights emit toward cross(half_x, half_y)
+  glm::vec3 center{0.0f};
+  glm::vec3 half_x{0.5f, 0.0f, 0.0f}, half_y{0.0f, 0.5f, 0.0f};
+  glm::vec3 radiance{1.0f};
+  bool two_sided = false;
+};
+
+struct EnvironmentData {
+  std::string path;        // an HDR/EXR file; empty: the procedural sky of the graph
+  float intensity = 1.0f;  // multiplies the environment's radiance
+};
+
+struct SceneView {
+  std::string name;
+  uint64_t version = 0;  // changes whenever meshes, materials or textures change (GPU re-upload)
+  CameraView camera;
+  std::vector<MeshData> meshes;
+  std::vector<TextureData> textures;
+  std::vector<PbrMaterial> materials;
+  std::vector<DrawItem> draws;
+  std::vector<DirectionalLightData> directional_lights;
+  std::vector<PointLightData> point_lights;
+  std::vector<SphereLightData> sphere_lights;
+  std::vector<TubeLightData> tube_lights;
+  std::vector<RectLightData> rect_lights;
+  bool has_environment = false;
+  EnvironmentData environment;
+  int irradiance_volumes = 0, reflection_probes = 0;
+
+  // What the compiler specializes on: counts of each light kind, probes, glossy materials
+  // (any roughness below 0.9 or any metal), the camera's aperture and focus.
+  SceneSummary summary() const;
+};
+
+}  // namespace lg
