@@ -17,7 +17,7 @@ const std::map<std::string, KindInfo, std::less<>>& kinds() {
        {ResourceKind::texture2d,
         "a 2D texture",
         {{"hdr", {{"", "rgba16f", 8}}},
-         {"ldr", {{"", "rgba8_srgb", 4}}},
+         {"ldr", {{"", "rgba8", 4}}},  // sRGB-encoded by the writer: storage images cannot be sRGB
          {"mask", {{"", "r8", 1}}},
          {"vector", {{"", "rgba8_snorm", 4}}},
          {"float", {{"", "r32f", 4}}},

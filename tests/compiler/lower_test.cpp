@@ -73,7 +73,7 @@ TEST(CompilerLower, GBufferIsTheFrameSizeTimesResolutionScale) {
     EXPECT_EQ(color.width, c.expect_w);
     EXPECT_EQ(color.height, c.expect_h);
     EXPECT_EQ(color.bytes, uint64_t{c.expect_w} * c.expect_h * 8);                            // rgba16f
-    EXPECT_EQ(resource(plan, "tonemap.color").bytes, uint64_t{c.expect_w} * c.expect_h * 4);  // rgba8_srgb
+    EXPECT_EQ(resource(plan, "tonemap.color").bytes, uint64_t{c.expect_w} * c.expect_h * 4);  // rgba8
   }
 }
 
