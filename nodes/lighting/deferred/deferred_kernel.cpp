@@ -1,0 +1,238 @@
+#include "nodes/lighting/deferred/deferred_kernel.h"
+
+#include <glm/vec4.hpp>
+
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/common/compute.h"
+#include "nodes/common/node_shaders.h"
+#include "nodes/lighting/deferred/shadow_projection.h"
+#include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/pipeline.h"
+#include "runtime/gpu/vk_struct.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+// nodes/lighting/deferred/shaders/lights.glsl
+struct Constants {
+  CameraConstants camera;
+  glm::mat4 shadow_from_world;
+  glm::vec4 shadow;  // 1 / map size, map drawn, normal offset, depth bias
+  uint32_t counts[4];
+  uint32_t counts2[4];
+};
+struct GpuDirectional { glm::vec4 direction, irradiance; };
+struct GpuPoint { glm::vec4 position_range, intensity; };
+struct GpuSphere { glm::vec4 center_radius, radiance; };
+struct GpuTube { glm::vec4 end0_radius, end1, radiance; };
+struct GpuRect { glm::vec4 center_two_sided, half_x, half_y, radiance; };
+
+// The first directional light that casts shadows owns the shadow map, or -1.
+int shadow_caster(const SceneView& scene) {
+  for (size_t i = 0; i < scene.directional_lights.size(); ++i)
+    if (scene.directional_lights[i].casts_shadows) return static_cast<int>(i);
+  return -1;
+}
+
+class DeferredKernel final : public NodeKernel {
+ public:
+  explicit DeferredKernel(const PlanNode&) {}
+
+  void record(PassContext& ctx) override {
+    const std::string& pass = ctx.pass().pass;
+    if (pass == "shadows") record_shadows(ctx);
+    else if (pass == "direct") record_direct(ctx);
+    else if (pass == "area") record_area(ctx);
+    else throw std::logic_error("lighting.deferred has no pass '" + pass + "'");
+  }
+
+ private:
+  struct Buffers {
+    HostBuffer constants, directional, points, spheres, tubes, rects, worlds;
+    explicit Buffers(Context& gpu, const std::string& id)
+        : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+          directional(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          points(gpu, id + " point lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          spheres(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          tubes(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          rects(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          worlds(gpu, id + " draw transforms", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
+  };
+
+  // Once per frame, before the frame's first pass of this node: the constants and light lists.
+  void prepare(PassContext& ctx) {
+    if (prepared_frame_ == ctx.frame_index() && buffers_) return;
+    prepared_frame_ = ctx.frame_index();
+    if (!buffers_) buffers_.emplace(ctx.gpu(), ctx.node().id);
+    const SceneView& scene = ctx.scene();
+    if (bounds_version_ != scene.version || !bounds_) {
+      bounds_ = scene_bounds(scene);
+      bounds_version_ = scene.version;
+    }
+    const int caster = shadow_caster(scene);
+    shadow_drawn_ = false;
+    Constants c{};
+    const Image& color = ctx.image("out.color");
+    c.camera = camera_constants(scene.camera, color.desc().width, color.desc().height);
+    if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
+    constants_ = c;
+
+    std::vector<GpuDirectional> directional;
+    for (size_t i = 0; i < scene.directional_lights.size(); ++i) {
+      const auto& l = scene.directional_lights[i];
+      directional.push_back({glm::vec4(l.direction, int(i) == caster ? 1.0f : 0.0f), glm::vec4(l.irradiance, 0.0f)});
+    }
+    std::vector<GpuPoint> points;
+    for (const auto& l : scene.point_lights) points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, 0.0f)});
+    std::vector<GpuSphere> spheres;
+    for (const auto& l : scene.sphere_lights) spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
+    std::vector<GpuTube> tubes;
+    for (const auto& l : scene.tube_lights)
+      tubes.push_back({glm::vec4(l.end0, l.radius), glm::vec4(l.end1, 0.0f), glm::vec4(l.radiance, 0.0f)});
+    std::vector<GpuRect> rects;
+    for (const auto& l : scene.rect_lights)
+      rects.push_back({glm::vec4(l.center, l.two_sided ? 1.0f : 0.0f), glm::vec4(l.half_x, 0.0f),
+                       glm::vec4(l.half_y, 0.0f), glm::vec4(l.radiance, 0.0f)});
+    std::vector<glm::mat4> worlds;
+    for (const DrawItem& d : scene.draws) worlds.push_back(d.world);
+    constants_.counts[0] = uint32_t(directional.size());
+    constants_.counts[1] = uint32_t(points.size());
+    constants_.counts[2] = uint32_t(spheres.size());
+    constants_.counts[3] = uint32_t(tubes.size());
+    constants_.counts2[0] = uint32_t(rects.size());
+    buffers_->directional.write(directional);
+    buffers_->points.write(points);
+    buffers_->spheres.write(spheres);
+    buffers_->tubes.write(tubes);
+    buffers_->rects.write(rects);
+    buffers_->worlds.write(worlds);
+  }
+
+  void record_shadows(PassContext& ctx) {
+    prepare(ctx);
+    const SceneView& scene = ctx.scene();
+    if (shadow_caster(scene) < 0) return;
+    Image& map = ctx.image("tmp.shadow_map");
+    const uint32_t size = map.desc().width;
+    // Half a texel of normal offset at the map's resolution hides acne on surfaces facing the
+    // light; the depth bias covers the slope within one texel of the filter.
+    const float world_per_texel = 2.0f * 0.5f * glm::length(bounds_->hi - bounds_->lo) / float(size);
+    constants_.shadow = glm::vec4(1.0f / float(size), 1.0f, 1.5f * world_per_texel, 2.0f / float(size));
+    shadow_drawn_ = true;
+
+    auto depth = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    depth.imageView = map.view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {0.0f, 0};  // reversed: 0 is farthest from the light
+    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    rendering.renderArea = {{0, 0}, {size, size}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+
+    GraphicsPipelineDesc desc;
+    desc.name = ctx.pass().name;
+    desc.vertex_shader = node_shader("nodes/lighting/deferred/shaders/shadow.vert");
+    desc.fragment_shader = node_shader("nodes/lighting/deferred/shaders/shadow.frag");
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    desc.push_constant_bytes = sizeof(ShadowPush);
+    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)}};
+    desc.depth_format = map.desc().format;
+    desc.depth_test = desc.depth_write = true;
+    const Pipeline& pipeline = ctx.pipelines().graphics(desc);
+
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBeginRendering(cmd, &rendering);
+    const VkViewport viewport{0, 0, float(size), float(size), 0, 1};
+    const VkRect2D scissor{{0, 0}, {size, size}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    const DescriptorWrite writes[] = {storage_buffer(0, buffers_->worlds.handle())};
+    bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+      push_constants(cmd, pipeline, ShadowPush{constants_.shadow_from_world, i, {}});
+      const GpuMesh& mesh = ctx.gpu_scene().mesh(scene.draws[i].mesh);
+      const VkDeviceSize offset = 0;
+      const VkBuffer vertices = mesh.vertices.handle();
+      vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+      vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+    }
+    vkCmdEndRendering(cmd);
+  }
+
+  // The G-buffer's four surface images at bindings 1 to 4, as lights.glsl declares them.
+  void add_gbuffer(PassContext& ctx, std::vector<DescriptorWrite>& writes) {
+    for (int c = 0; c < 4; ++c)
+      writes.push_back(sampled_image(uint32_t(1 + c), ctx.image("in.gbuffer", c).view(), ctx.nearest_sampler()));
+  }
+
+  void record_direct(PassContext& ctx) {
+    prepare(ctx);
+    if (!shadow_drawn_) constants_.shadow = glm::vec4(0.0f);
+    buffers_->constants.write_value(constants_);
+    Image& color = ctx.image("out.color");
+    std::vector<DescriptorWrite> writes = {uniform_buffer(0, buffers_->constants.handle())};
+    add_gbuffer(ctx, writes);
+    // Without a shadow pass (no shadow-casting light) any depth image binds; shadow.y = 0 skips it.
+    Image& shadow_map = ctx.has("tmp.shadow_map") ? ctx.image("tmp.shadow_map") : ctx.image("in.gbuffer", 0);
+    writes.push_back(sampled_image(5, shadow_map.view(), ctx.nearest_sampler()));
+    writes.push_back(storage_image(6, color.view()));
+    writes.push_back(storage_buffer(7, buffers_->directional.handle()));
+    writes.push_back(storage_buffer(8, buffers_->points.handle()));
+    dispatch(ctx, "direct", writes, color);
+  }
+
+  void record_area(PassContext& ctx) {
+    prepare(ctx);
+    Image& color = ctx.image("out.color");
+    std::vector<DescriptorWrite> writes = {uniform_buffer(0, buffers_->constants.handle())};
+    add_gbuffer(ctx, writes);
+    writes.push_back(storage_image(5, color.view()));
+    writes.push_back(storage_buffer(6, buffers_->spheres.handle()));
+    writes.push_back(storage_buffer(7, buffers_->tubes.handle()));
+    writes.push_back(storage_buffer(8, buffers_->rects.handle()));
+    dispatch(ctx, "area", writes, color);
+  }
+
+  void dispatch(PassContext& ctx, const std::string& shader, const std::vector<DescriptorWrite>& writes, const Image& target) {
+    ComputePipelineDesc desc;
+    desc.name = ctx.pass().name;
+    desc.shader = node_shader("nodes/lighting/deferred/shaders/" + shader + ".comp");
+    for (const DescriptorWrite& w : writes) desc.bindings.push_back({w.binding, w.type});
+    const Pipeline& pipeline = ctx.pipelines().compute(desc);
+    bind_pipeline(ctx.gpu(), ctx.cmd(), pipeline, writes);
+    dispatch_texels(ctx.cmd(), target.desc().width, target.desc().height);
+  }
+
+  struct ShadowPush {
+    glm::mat4 shadow_from_world;
+    uint32_t draw_index;
+    uint32_t pad[3];
+  };
+
+  std::optional<Buffers> buffers_;
+  Constants constants_{};
+  std::optional<Bounds> bounds_;
+  uint64_t bounds_version_ = 0;
+  uint64_t prepared_frame_ = ~uint64_t{0};
+  bool shadow_drawn_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_deferred_kernel(const PlanNode& node) {
+  return std::make_unique<DeferredKernel>(node);
+}
+
+}  // namespace lg

@@ -1,0 +1,46 @@
+// The light lists of the deferred node (std430, one buffer per kind; deferred_kernel.cpp fills
+// them from the scene) and the constants its passes share.
+#ifndef LG_DEFERRED_LIGHTS_GLSL
+#define LG_DEFERRED_LIGHTS_GLSL
+
+#include "nodes/common/shaders/camera.glsl"
+
+struct DirectionalLight {
+  vec4 direction;  // xyz: unit, the way the light travels; w: 1 when it uses the shadow map
+  vec4 irradiance;
+};
+struct PointLight {
+  vec4 position_range;  // range 0: no cut-off
+  vec4 intensity;
+};
+struct SphereLight {
+  vec4 center_radius;
+  vec4 radiance;
+};
+struct TubeLight {
+  vec4 end0_radius;
+  vec4 end1;
+  vec4 radiance;
+};
+struct RectLight {
+  vec4 center_two_sided;  // w: 1 when it emits both ways
+  vec4 half_x;
+  vec4 half_y;
+  vec4 radiance;
+};
+
+layout(std140, binding = 0) uniform Constants {
+  Camera camera;
+  mat4 shadow_from_world;  // to the shadow map's clip space (reversed depth)
+  vec4 shadow;             // 1 / map size, 1 when the map was drawn, normal offset (world units), depth bias
+  uvec4 counts;            // directional, point, sphere, tube (the rectangles' count is in counts2)
+  uvec4 counts2;           // rectangles
+};
+
+// Surfaces the G-buffer holds: depth > 0 (0 is the far plane, where no surface was drawn).
+layout(binding = 1) uniform sampler2D gbuffer_depth;
+layout(binding = 2) uniform sampler2D gbuffer_normal;
+layout(binding = 3) uniform sampler2D gbuffer_albedo;
+layout(binding = 4) uniform sampler2D gbuffer_material;
+
+#endif

@@ -1,0 +1,3 @@
+#version 460
+// Depth only: the fixed-function depth write is all the shadow map needs.
+void main() {}

@@ -1,0 +1,27 @@
+// Reads the surface at a texel of the G-buffer for the deferred passes.
+#ifndef LG_DEFERRED_SURFACE_GLSL
+#define LG_DEFERRED_SURFACE_GLSL
+
+#include "nodes/common/shaders/brdf.glsl"
+#include "nodes/common/shaders/gbuffer.glsl"
+#include "nodes/lighting/deferred/shaders/lights.glsl"
+
+// False where no surface was drawn (the far plane) or the depth is not a finite number.
+bool read_surface(ivec2 texel, out Surface s) {
+  float depth = texelFetch(gbuffer_depth, texel, 0).r;
+  if (!(depth > 0.0 && depth <= 1.0)) return false;
+  vec3 p = world_position(camera, texel, depth);
+  vec3 n = decode_normal(texelFetch(gbuffer_normal, texel, 0).rgb);
+  vec3 albedo = texelFetch(gbuffer_albedo, texel, 0).rgb;
+  vec2 material = texelFetch(gbuffer_material, texel, 0).rg;
+  s = make_surface(p, n, camera.position.xyz, albedo, material.r, material.g);
+  return true;
+}
+
+// NaN and Inf become 0, so one broken light or texel cannot spread through later passes.
+vec3 finite_or_zero3(vec3 c) {
+  bvec3 bad = bvec3((floatBitsToUint(c) & 0x7f800000u) == uvec3(0x7f800000u));
+  return any(bad) ? vec3(0.0) : c;
+}
+
+#endif

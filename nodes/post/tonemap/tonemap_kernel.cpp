@@ -1,0 +1,56 @@
+#include "nodes/post/tonemap/tonemap_kernel.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
+#include "nodes/common/node_shaders.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/pipeline.h"
+
+namespace lg {
+namespace {
+
+struct Push {  // nodes/post/tonemap/shaders/tonemap.comp
+  float exposure_scale;
+  uint32_t curve;
+};
+
+uint32_t curve_index(const PlanNode& node) {
+  const std::string& curve = param_string(node, "curve");
+  if (curve == "aces_fitted") return 0;
+  if (curve == "neutral") return 1;
+  if (curve == "clamp") return 2;
+  throw std::logic_error("post.tonemap has no curve '" + curve + "'");
+}
+
+class TonemapKernel final : public NodeKernel {
+ public:
+  explicit TonemapKernel(const PlanNode& node)
+      : push_{float(std::exp2(param_number(node, "exposure"))), curve_index(node)} {}
+
+  void record(PassContext& ctx) override {
+    Image& display = ctx.image("out.color");
+    const DescriptorWrite writes[] = {sampled_image(0, ctx.image("in.color").view(), ctx.nearest_sampler()),
+                                      storage_image(1, display.view())};
+    const Pipeline& pipeline = ctx.pipelines().compute(
+        {ctx.pass().name, node_shader("nodes/post/tonemap/shaders/tonemap.comp"),
+         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}, sizeof(Push)});
+    bind_pipeline(ctx.gpu(), ctx.cmd(), pipeline, writes);
+    push_constants(ctx.cmd(), pipeline, push_);
+    dispatch_texels(ctx.cmd(), display.desc().width, display.desc().height);
+  }
+
+ private:
+  Push push_;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_tonemap_kernel(const PlanNode& node) {
+  return std::make_unique<TonemapKernel>(node);
+}
+
+}  // namespace lg

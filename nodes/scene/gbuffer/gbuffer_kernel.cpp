@@ -1,0 +1,134 @@
+#include "nodes/scene/gbuffer/gbuffer_kernel.h"
+
+#include <glm/matrix.hpp>
+
+#include <optional>
+#include <vector>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/common/node_params.h"
+#include "nodes/common/node_shaders.h"
+#include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/pipeline.h"
+#include "runtime/gpu/vk_struct.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+struct DrawConstants {  // nodes/scene/gbuffer/shaders/draw.glsl
+  glm::mat4 world, previous_world, normal_matrix;
+  glm::vec4 base_color, material;
+};
+
+VkRenderingAttachmentInfo cleared(VkImageView view, VkClearValue clear) {
+  auto a = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  a.imageView = view;
+  a.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.clearValue = clear;
+  return a;
+}
+
+std::vector<DrawConstants> draw_constants(const SceneView& scene) {
+  std::vector<DrawConstants> out;
+  out.reserve(scene.draws.size());
+  for (const DrawItem& d : scene.draws) {
+    const PbrMaterial& m = scene.materials.at(d.material);
+    out.push_back({d.world, d.previous_world, glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world)))),
+                   m.base_color, glm::vec4(m.roughness, m.metalness, 0.0f, 0.0f)});
+  }
+  return out;
+}
+
+class GbufferKernel final : public NodeKernel {
+ public:
+  explicit GbufferKernel(const PlanNode& node) : cull_backfaces_(param_bool(node, "cull_backfaces")) {}
+
+  void record(PassContext& ctx) override {
+    Image* targets[5];
+    for (int c = 0; c < 5; ++c) targets[c] = &ctx.image("out.gbuffer", c);  // depth, normal, albedo, material, motion
+    const uint32_t w = targets[0]->desc().width, h = targets[0]->desc().height;
+    const SceneView& scene = ctx.scene();
+    if (!camera_) {
+      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    }
+    camera_->write_value(camera_constants(scene.camera, w, h));
+    draws_->write(draw_constants(scene));
+
+    VkRenderingAttachmentInfo colors[4];
+    for (int c = 0; c < 4; ++c) colors[c] = cleared(targets[c + 1]->view(), {});
+    VkRenderingAttachmentInfo depth = cleared(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
+    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    rendering.renderArea = {{0, 0}, {w, h}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 4;
+    rendering.pColorAttachments = colors;
+    rendering.pDepthAttachment = &depth;
+
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBeginRendering(cmd, &rendering);
+    const Pipeline& pipeline = this->pipeline(ctx, targets);
+    const VkViewport viewport{0, 0, float(w), float(h), 0, 1};
+    const VkRect2D scissor{{0, 0}, {w, h}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    GpuScene& gpu_scene = ctx.gpu_scene();
+    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+      const DrawItem& d = scene.draws[i];
+      const int texture = scene.materials.at(d.material).base_color_texture;
+      Image& base_color = texture >= 0 ? gpu_scene.texture(texture) : gpu_scene.white_texture();
+      const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
+                                        sampled_image(2, base_color.view(), ctx.linear_sampler())};
+      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+      push_constants(cmd, pipeline, i);
+      const GpuMesh& mesh = gpu_scene.mesh(d.mesh);
+      const VkDeviceSize offset = 0;
+      const VkBuffer vertices = mesh.vertices.handle();
+      vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+      vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+    }
+    vkCmdEndRendering(cmd);
+  }
+
+ private:
+  const Pipeline& pipeline(PassContext& ctx, Image* const* targets) {
+    GraphicsPipelineDesc desc;
+    desc.name = ctx.pass().name;
+    desc.vertex_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.vert");
+    desc.fragment_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.frag");
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                     {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+    desc.push_constant_bytes = sizeof(uint32_t);
+    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
+                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
+                              {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
+    // Meshes wind counter-clockwise seen from outside; the projection flips y for Vulkan, which
+    // keeps that winding counter-clockwise in framebuffer terms.
+    desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    desc.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    for (int c = 1; c < 5; ++c) desc.color_formats.push_back(targets[c]->desc().format);
+    desc.depth_format = targets[0]->desc().format;
+    desc.depth_test = desc.depth_write = true;
+    return ctx.pipelines().graphics(desc);
+  }
+
+  bool cull_backfaces_;
+  std::optional<HostBuffer> camera_, draws_;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_gbuffer_kernel(const PlanNode& node) {
+  return std::make_unique<GbufferKernel>(node);
+}
+
+}  // namespace lg
