@@ -109,7 +109,8 @@ void Executor::clear_history(VkCommandBuffer cmd) {
   const VkClearColorValue zero_color{};
   const VkClearDepthStencilValue zero_depth{};
   for (size_t r = 0; r < plan_.resources.size(); ++r) {
-    if (plan_.resources[r].desc.history_of < 0) continue;
+    const int current = plan_.resources[r].desc.history_of;
+    if (current < 0) continue;
     PlacedResource& placed = memory_.resources[r];
     if (auto* buffer = std::get_if<Buffer>(&placed)) {
       vkCmdFillBuffer(cmd, buffer->handle(), 0, VK_WHOLE_SIZE, 0);
@@ -121,7 +122,7 @@ void Executor::clear_history(VkCommandBuffer cmd) {
         vkCmdClearDepthStencilImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero_depth, 1, &range);
       else
         vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero_color, 1, &range);
-      image_barrier(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, vk_layout(layouts_[r]));
+      image_barrier(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, vk_layout(layouts_[current]));
     }
   }
 }

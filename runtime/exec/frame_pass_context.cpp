@@ -17,10 +17,10 @@ void FramePassContext::missing(std::string_view slot, int component, std::string
   std::string bound;
   for (const PlanAccess& a : pass_.accesses)
     bound += (bound.empty() ? "" : ", ") + a.slot + (a.component ? "." + std::to_string(a.component) : "");
-  throw ExecutorError("pass '" + pass_.name + "' of node '" + node().id + "' (" + node().type + ") has no " +
-                      std::string(what) + " at '" + std::string(slot) +
-                      (component ? "' component " + std::to_string(component) : "'") + "; it binds " +
-                      (bound.empty() ? "nothing" : bound));
+  // The executor prefixes the pass's name.
+  throw ExecutorError("node '" + node().id + "' (" + node().type + ") has no " + std::string(what) + " at '" +
+                      std::string(slot) + (component ? "' component " + std::to_string(component) : "'") +
+                      " in this pass; it binds " + (bound.empty() ? "nothing" : bound));
 }
 
 Image& FramePassContext::image(std::string_view slot, int component) {
