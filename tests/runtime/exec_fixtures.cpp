@@ -1,14 +1,17 @@
 #include "tests/runtime/exec_fixtures.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 #include "graph/compiler.h"
 #include "graph/graph_io.h"
+#include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/plan_resources.h"
+#include "runtime/gpu/vk_struct.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -45,6 +48,9 @@ constexpr std::string_view schemas[] = {
                      { "name": "value", "type": "float", "default": 3, "doc": "Second component." } ],
          "outputs": [ { "name": "sh", "type": "sh", "sh_order": "param:order", "doc": "(order + 1)^2 vec4." } ],
          "passes": [ { "name": "write", "queue": "compute", "uses": { "out.sh": "buffer_write" } } ] })",
+    R"({ "type": "test.raster", "doc": "Draws the scene's first mesh.",
+         "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "doc": "Drawn." } ],
+         "passes": [ { "name": "draw", "queue": "graphics", "uses": { "out.color": "attachment_write" } } ] })",
     R"({ "type": "test.boom", "doc": "Its kernel throws.",
          "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "doc": "Never written." } ],
          "passes": [ { "name": "explode", "queue": "compute", "uses": { "out.color": "storage_write" } } ] })",
@@ -131,6 +137,49 @@ class TestKernel final : public NodeKernel {
   std::shared_ptr<std::map<std::string, int>> calls_;
 };
 
+// Draws mesh 0 of the GpuScene with its index buffer into a cleared colour attachment.
+class RasterKernel final : public NodeKernel {
+ public:
+  void record(PassContext& pc) override {
+    Image& target = pc.image("out.color");
+    const GpuMesh& mesh = pc.gpu_scene().mesh(0);
+    GraphicsPipelineDesc desc;
+    desc.name = "exec_mesh";
+    desc.vertex_shader = test_shader("exec_mesh.vert");
+    desc.fragment_shader = test_shader("exec_mesh.frag");
+    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
+                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
+                              {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
+    desc.color_formats = {target.desc().format};
+    const Pipeline& p = pc.pipelines().graphics(desc);
+    auto color = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    color.imageView = target.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    const uint32_t w = target.desc().width, h = target.desc().height;
+    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    rendering.renderArea = {{0, 0}, {w, h}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    VkCommandBuffer cmd = pc.cmd();
+    vkCmdBeginRendering(cmd, &rendering);
+    bind_pipeline(pc.gpu(), cmd, p);
+    const VkViewport viewport{0, 0, float(w), float(h), 0, 1};
+    const VkRect2D scissor{{0, 0}, {w, h}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    const VkDeviceSize offset = 0;
+    const VkBuffer vertices = mesh.vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+    vkCmdEndRendering(cmd);
+  }
+};
+
 class ThrowingKernel final : public NodeKernel {
  public:
   void record(PassContext&) override { throw std::runtime_error("the shader is missing"); }
@@ -151,6 +200,7 @@ TestKernels test_kernels() {
   add("test.accumulate", {{"accumulate", "in.history", "out.color", 1}});
   add("test.two_pass", {{"first", "in.src", "tmp.tmp", 1}, {"second", "tmp.tmp", "out.color", 1}});
   add("test.sh", {{"write", "", "out.sh"}});
+  k.registry.add("test.raster", [](const PlanNode&) { return std::make_unique<RasterKernel>(); });
   k.registry.add("test.boom", [](const PlanNode&) { return std::make_unique<ThrowingKernel>(); });
   return k;
 }

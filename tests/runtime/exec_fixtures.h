@@ -1,7 +1,8 @@
 // What the executor tests share: small node schemas (fill an image from a param, add to an
 // image read through a sampler, accumulate through a history input, a static bake, two passes
-// through an internal resource, a buffer writer, an output node), kernels for them made of one
-// tiny compute dispatch per pass, and compiling a graph text against them for a device.
+// through an internal resource, a buffer writer, a rasterizer of the scene's first mesh, an output
+// node), kernels for them made of one
+// tiny compute dispatch or draw per pass, and compiling a graph text against them for a device.
 #pragma once
 
 #include <map>

@@ -198,6 +198,27 @@ TEST_F(ExecTest, StaticPassesRunOnceThenAreSkippedAsCached) {
   EXPECT_TRUE(exec->run_frame(scene, gpu_scene).passes[0].cached);
 }
 
+TEST_F(ExecTest, DrawsTheGpuScenesMeshIntoAnAttachment) {
+  auto exec = executor(R"({ "format": "lumagraph/1",
+    "nodes": [ { "id": "raster", "type": "test.raster" }, { "id": "out", "type": "test.display" } ],
+    "links": [ { "from": "raster.color", "to": "out.color" } ] })");
+  // One triangle covering the frame, in clip space; no uvs (they read as 0).
+  scene.version = 1;
+  MeshData& mesh = scene.meshes.emplace_back();
+  mesh.name = "cover";
+  mesh.positions = {{-1, -1, 0.5f}, {3, -1, 0.5f}, {-1, 3, 0.5f}};
+  mesh.normals.assign(3, {0.25f, 0.5f, 0.75f});
+  mesh.indices = {0, 1, 2};
+  GpuScene gpu_scene(context(), exec->submitter());
+  for (int frame = 0; frame < 2; ++frame) {
+    exec->run_frame(scene, gpu_scene);
+    EXPECT_EQ(wrong_texels(exec->read_image("raster.color"),
+                           [](uint32_t, uint32_t) { return Texel{0.25f, 0.5f, 0.75f, 1}; }),
+              0);
+  }
+  EXPECT_EQ(exec->layout("raster.color"), VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL);
+}
+
 TEST_F(ExecTest, ReadsBuffersAsBytes) {
   auto exec = executor(R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "sh", "type": "test.sh", "params": { "order": 2, "value": 3 } } ],
