@@ -51,6 +51,12 @@ constexpr std::string_view schemas[] = {
     R"({ "type": "test.raster", "doc": "Draws the scene's first mesh.",
          "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "doc": "Drawn." } ],
          "passes": [ { "name": "draw", "queue": "graphics", "uses": { "out.color": "attachment_write" } } ] })",
+    R"({ "type": "test.lit", "doc": "A fill, and a pass that only scenes with area lights keep.",
+         "params": [ { "name": "value", "type": "float", "default": 0.75, "doc": "Red." } ],
+         "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "doc": "Filled." } ],
+         "passes": [ { "name": "direct", "queue": "compute", "uses": { "out.color": "storage_write" } },
+                     { "name": "area", "queue": "compute", "needs": "area_lights",
+                       "uses": { "out.color": "storage_read_write" } } ] })",
     R"({ "type": "test.boom", "doc": "Its kernel throws.",
          "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "doc": "Never written." } ],
          "passes": [ { "name": "explode", "queue": "compute", "uses": { "out.color": "storage_write" } } ] })",
@@ -200,16 +206,19 @@ TestKernels test_kernels() {
   add("test.accumulate", {{"accumulate", "in.history", "out.color", 1}});
   add("test.two_pass", {{"first", "in.src", "tmp.tmp", 1}, {"second", "tmp.tmp", "out.color", 1}});
   add("test.sh", {{"write", "", "out.sh"}});
+  add("test.lit", {{"direct", "", "out.color"}});  // "area" has no step: running it throws
   k.registry.add("test.raster", [](const PlanNode&) { return std::make_unique<RasterKernel>(); });
   k.registry.add("test.boom", [](const PlanNode&) { return std::make_unique<ThrowingKernel>(); });
   return k;
 }
 
-Plan compile_test_graph(const Context& context, std::string_view graph_json, bool alias, FrameSize frame) {
+Plan compile_test_graph(const Context& context, std::string_view graph_json, bool alias, FrameSize frame,
+                        const SceneSummary& scene) {
   Diagnostics d("test graph");
   std::optional<Graph> graph = parse_graph_text(graph_json, d);
   if (!graph) throw std::runtime_error(d.to_string());
   CompileOptions options;
+  options.scene = scene;
   options.frame = frame;
   options.alias = device_alias_options(context);
   options.alias.enabled = alias;

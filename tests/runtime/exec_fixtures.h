@@ -1,6 +1,7 @@
 // What the executor tests share: small node schemas (fill an image from a param, add to an
 // image read through a sampler, accumulate through a history input, a static bake, two passes
-// through an internal resource, a buffer writer, a rasterizer of the scene's first mesh, an output
+// through an internal resource, a buffer writer, a pass only
+// scenes with area lights keep, a rasterizer of the scene's first mesh, an output
 // node), kernels for them made of one
 // tiny compute dispatch or draw per pass, and compiling a graph text against them for a device.
 #pragma once
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "graph/plan.h"
+#include "graph/scene_summary.h"
 #include "runtime/exec/node_kernel.h"
 
 namespace lg {
@@ -39,6 +41,6 @@ TestKernels test_kernels();
 
 // Compiles `graph_json` against the test schemas for `context`'s device, aliasing on or off.
 Plan compile_test_graph(const Context& context, std::string_view graph_json, bool alias = true,
-                        FrameSize frame = {40, 24});
+                        FrameSize frame = {40, 24}, const SceneSummary& scene = default_scene_summary());
 
 }  // namespace lg::test

@@ -332,6 +332,25 @@ TEST_F(ExecTest, StatsNameSkippedNodesAndWriteJsonAndText) {
   EXPECT_NE(text.find("culled:\n  unused (test.fill): "), std::string::npos) << text;
 }
 
+TEST_F(ExecTest, StatsNameDroppedPasses) {
+  SceneSummary no_area_lights = default_scene_summary();
+  no_area_lights.sphere_lights = no_area_lights.tube_lights = 0;
+  Executor exec(context(), kernels.registry, compile_test_graph(context(), R"({ "format": "lumagraph/1",
+    "nodes": [ { "id": "light", "type": "test.lit" }, { "id": "out", "type": "test.display" } ],
+    "links": [ { "from": "light.color", "to": "out.color" } ] })", true, {width, height}, no_area_lights));
+  GpuScene gpu_scene(context(), exec.submitter());
+  FrameStats stats = exec.run_frame(scene, gpu_scene);
+  ASSERT_EQ(stats.passes.size(), 1u);
+  EXPECT_EQ(stats.passes[0].name, "light/direct");
+  ASSERT_EQ(stats.dropped_passes.size(), 1u);
+  EXPECT_EQ(stats.dropped_passes[0].pass, "light/area");
+  EXPECT_EQ(stats.dropped_passes[0].type, "test.lit");
+  EXPECT_FALSE(stats.dropped_passes[0].reason.empty());
+  EXPECT_NE(frame_stats_text(stats).find("passes dropped:\n  light/area (test.lit): " + stats.dropped_passes[0].reason),
+            std::string::npos);
+  EXPECT_EQ(wrong_texels(exec.read_image("light.color"), filled(0.75f)), 0);
+}
+
 TEST_F(ExecTest, RunsOnADeviceAdoptedFromAHost) {
   Context host(HostDevice{context().instance(), context().physical_device(), context().device(), context().queue(),
                           context().queue_family()});
