@@ -23,6 +23,10 @@ namespace {
 
 constexpr uint32_t width = 40, height = 24;  // not multiples of the 8x8 groups
 
+struct NodeKernelStub final : NodeKernel {
+  void record(PassContext&) override {}
+};
+
 using Texel = std::array<float, 4>;
 
 // Counts texels that differ from `want(x, y)`, reporting the first few.
@@ -238,13 +242,13 @@ TEST_F(ExecTest, ReadsBuffersAsBytes) {
 }
 
 TEST_F(ExecTest, ANodeWithoutAKernelIsAnErrorAtConstruction) {
-  TestKernels partial;
-  partial.registry.add("test.add", [](const PlanNode&) -> std::unique_ptr<NodeKernel> { return nullptr; });
+  KernelRegistry partial;
+  partial.add("test.add", [](const PlanNode&) { return std::make_unique<NodeKernelStub>(); });
   Plan plan = compile_test_graph(context(), R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "light", "type": "test.fill" }, { "id": "out", "type": "test.display" } ],
     "links": [ { "from": "light.color", "to": "out.color" } ] })");
   try {
-    Executor exec(context(), partial.registry, std::move(plan));
+    Executor exec(context(), partial, std::move(plan));
     ADD_FAILURE() << "no throw";
   } catch (const ExecutorError& e) {
     EXPECT_STREQ(e.what(), "node 'light' (test.fill) has no kernel in this build");
