@@ -231,6 +231,14 @@ std::vector<std::byte> Executor::read_buffer(std::string_view resource) {
   return lg::read_buffer(submitter_, *buffer);
 }
 
+std::vector<std::string> Executor::readable_resources() const {
+  std::vector<std::string> out;
+  for (size_t r = 0; r < plan_.resources.size(); ++r)
+    if (plan_.resources[r].first >= 0 && !bytes_taken_over(plan_, static_cast<int>(r)))
+      out.push_back(plan_.resources[r].desc.name);
+  return out;
+}
+
 std::vector<std::string> Executor::output_names() const {
   std::vector<std::string> out;
   for (const PlanOutput& o : plan_.outputs)

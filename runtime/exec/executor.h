@@ -69,6 +69,8 @@ class Executor {
   // without aliasing to read those).
   std::vector<float> read_image(std::string_view resource, ImageLocation where = {});
   std::vector<std::byte> read_buffer(std::string_view resource);
+  // The resources those two can read after a frame, in plan order (for `render --dump DIR`).
+  std::vector<std::string> readable_resources() const;
 
   // Results of output nodes (output.display) by their "name" param ("main" by default).
   std::vector<std::string> output_names() const;

@@ -134,6 +134,9 @@ TEST_F(ExecTest, AliasedResourcesKeepResultsExact) {
     exec->run_frame(scene, gpu_scene);
     EXPECT_EQ(wrong_texels(exec->read_image("c.color"), filled(6.5f)), 0) << "frame " << frame;
   }
+  const std::vector<std::string> readable = exec->readable_resources();
+  EXPECT_NE(std::find(readable.begin(), readable.end(), "c.color"), readable.end());
+  EXPECT_EQ(std::find(readable.begin(), readable.end(), "fill.color"), readable.end());
   // fill.color's bytes are reused later in the frame: reading it would show another image.
   try {
     exec->read_image("fill.color");
@@ -148,6 +151,7 @@ TEST_F(ExecTest, WithoutAliasingEveryIntermediateReadsBack) {
   auto exec = executor(aliased_graph, false);
   GpuScene gpu_scene(context(), exec->submitter());
   exec->run_frame(scene, gpu_scene);
+  EXPECT_EQ(exec->readable_resources().size(), exec->plan().resources.size());
   EXPECT_EQ(wrong_texels(exec->read_image("fill.color"), filled(0.5f)), 0);
   EXPECT_EQ(wrong_texels(exec->read_image("a/tmp"), filled(1.5f)), 0);
   EXPECT_EQ(wrong_texels(exec->read_image("b.color"), filled(4.5f)), 0);
