@@ -46,6 +46,13 @@ struct PlanResource {
   Placement placement;
 };
 
+// A result of the frame: what an output node reads, or a port the file lists in "outputs".
+struct PlanOutput {
+  int node = -1;               // the output node (index into Plan::nodes), or -1 for a file output
+  std::string port;            // the port whose resources these are: "tonemap.color"
+  std::vector<int> resources;  // one, or a bundle's components
+};
+
 struct MemoryTotals {
   uint64_t transient_unaliased = 0;  // one allocation per transient resource
   uint64_t transient = 0;            // block 0 with aliasing
@@ -59,6 +66,7 @@ struct Plan {
   std::vector<PlanPass> passes;
   std::vector<PlanResource> resources;
   std::vector<Barrier> barriers;  // sorted by Barrier::before
+  std::vector<PlanOutput> outputs;  // the file's outputs, then output nodes' inputs
   std::vector<MemoryBlock> blocks;
   MemoryTotals memory;
 };

@@ -127,6 +127,15 @@ JsonValue plan_to_json(const Plan& plan) {
     if (b.skip_when_cached) barrier.set("skip_when_cached", true);
   }
 
+  JsonValue& outputs = root.set("outputs", JsonValue::array());
+  for (const auto& o : plan.outputs) {
+    JsonValue& output = outputs.push(JsonValue::object());
+    if (o.node >= 0) output.set("node", plan.nodes[o.node].id);
+    output.set("port", o.port);
+    JsonValue& names = output.set("resources", JsonValue::array());
+    for (int r : o.resources) names.push(plan.resources[r].desc.name);
+  }
+
   JsonValue& memory = root.set("memory", JsonValue::object());
   JsonValue& blocks = memory.set("blocks", JsonValue::array());
   for (const auto& b : plan.blocks) {

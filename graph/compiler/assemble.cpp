@@ -55,6 +55,8 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   plan.memory.transient = memory.blocks[0].size;
   plan.memory.persistent = memory.blocks[1].size;
   plan.barriers = std::move(barriers);
+  for (LoweredOutput& o : lowered.outputs)
+    plan.outputs.push_back({o.node < 0 ? -1 : plan_index[o.node], std::move(o.port), std::move(o.resources)});
   return plan;
 }
 

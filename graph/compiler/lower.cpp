@@ -62,11 +62,16 @@ class Lowerer {
                  "output '" + r_.graph->outputs[k].port.text() + "' is empty: '" + id(node) + "' is bypassed (" +
                      s_[node].reason + ") and forwards an input that is not linked");
       export_resources(port(node, output));
+      add_output(-1, r_.graph->outputs[k].port.text(), port(node, output));
     }
     for (int n : order)
       if (s_[n].kind == NodeState::Kind::active && r_.nodes[n].schema->is_output)
         for (int li : r_.nodes[n].input_link)
-          if (li >= 0) export_resources(source_of(li));
+          if (li >= 0) {
+            export_resources(source_of(li));
+            const ResolvedLink& l = r_.links[li];
+            add_output(n, id(l.from_node) + '.' + r_.nodes[l.from_node].schema->outputs[l.from_port].name, source_of(li));
+          }
     return std::move(out_);
   }
 
@@ -111,6 +116,11 @@ class Lowerer {
       int li = r_.nodes[n].input_link[forwarded_input(r_, s_, n, o)];
       if (li >= 0) port(n, o) = source_of(li);
     }
+  }
+
+  void add_output(int node, std::string port, Span span) {
+    LoweredOutput& out = out_.outputs.emplace_back(LoweredOutput{node, std::move(port), {}});
+    for (int c = 0; c < span.count; ++c) out.resources.push_back(span[c]);
   }
 
   void export_resources(Span span) {

@@ -55,10 +55,19 @@ struct LoweredNode {
   uint64_t cache_key = 0;
 };
 
+// A result of the frame a host looks up: a port the file lists in "outputs", or what an
+// output node (output.display) reads. Output nodes have no passes, so only this names it.
+struct LoweredOutput {
+  int node = -1;               // the output node, or -1 for a port of the file's "outputs"
+  std::string port;            // the port whose resources these are: "tonemap.color"
+  std::vector<int> resources;  // one, or a bundle's components
+};
+
 struct LoweredGraph {
   std::vector<LoweredNode> nodes;  // one per graph node (culled ones stay empty)
   std::vector<LoweredPass> passes;  // in a valid (topological) order
   std::vector<LoweredResource> resources;
+  std::vector<LoweredOutput> outputs;  // the file's outputs, then output nodes' inputs
 };
 
 }  // namespace lg

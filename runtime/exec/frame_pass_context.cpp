@@ -1,0 +1,41 @@
+#include "runtime/exec/frame_pass_context.h"
+
+#include "runtime/exec/executor_error.h"
+#include "runtime/gpu/sampler.h"
+
+namespace lg {
+
+const PlanAccess* FramePassContext::find(std::string_view slot, int component) const {
+  for (const PlanAccess& a : pass_.accesses)
+    if (a.slot == slot && a.component == component) return &a;
+  return nullptr;
+}
+
+bool FramePassContext::has(std::string_view slot, int component) const { return find(slot, component) != nullptr; }
+
+void FramePassContext::missing(std::string_view slot, int component, std::string_view what) const {
+  std::string bound;
+  for (const PlanAccess& a : pass_.accesses)
+    bound += (bound.empty() ? "" : ", ") + a.slot + (a.component ? "." + std::to_string(a.component) : "");
+  // The executor prefixes the pass's name.
+  throw ExecutorError("node '" + node().id + "' (" + node().type + ") has no " + std::string(what) + " at '" +
+                      std::string(slot) + (component ? "' component " + std::to_string(component) : "'") +
+                      " in this pass; it binds " + (bound.empty() ? "nothing" : bound));
+}
+
+Image& FramePassContext::image(std::string_view slot, int component) {
+  if (const PlanAccess* a = find(slot, component))
+    if (auto* image = std::get_if<Image>(&frame_.resources[a->resource])) return *image;
+  missing(slot, component, "image");
+}
+
+Buffer& FramePassContext::buffer(std::string_view slot) {
+  if (const PlanAccess* a = find(slot, 0))
+    if (auto* buffer = std::get_if<Buffer>(&frame_.resources[a->resource])) return *buffer;
+  missing(slot, 0, "buffer");
+}
+
+VkSampler FramePassContext::linear_sampler() { return frame_.linear.handle(); }
+VkSampler FramePassContext::nearest_sampler() { return frame_.nearest.handle(); }
+
+}  // namespace lg

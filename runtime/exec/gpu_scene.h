@@ -1,0 +1,65 @@
+// The scene's meshes and textures on the device, for the kernels that draw or sample them:
+// per mesh an interleaved vertex buffer (GpuVertex) and a uint32 index buffer, per texture an
+// RGBA8 sRGB image in READ_ONLY_OPTIMAL, and a 1x1 white texture for materials without one.
+// update() uploads again only when SceneView::version changes.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "runtime/gpu/buffer.h"
+#include "runtime/gpu/image.h"
+
+namespace lg {
+
+class Context;
+class Submitter;
+struct MeshData;
+struct SceneView;
+struct TextureData;
+
+// One vertex as the vertex buffers hold it; uv is 0 for meshes without uvs.
+struct GpuVertex {
+  float position[3];
+  float normal[3];
+  float uv[2];
+};
+static_assert(sizeof(GpuVertex) == 32);
+
+// A mesh without vertices has no buffers (null handles) and counts of 0.
+struct GpuMesh {
+  Buffer vertices;  // VERTEX_BUFFER usage (and storage, transfer)
+  Buffer indices;   // INDEX_BUFFER usage, VK_INDEX_TYPE_UINT32
+  uint32_t index_count = 0, vertex_count = 0;
+};
+
+class GpuScene {
+ public:
+  GpuScene(Context& context, Submitter& submitter);
+
+  // Uploads the meshes and textures when `scene.version` differs from the last upload (the
+  // first call always uploads). Throws std::invalid_argument naming a malformed mesh or
+  // texture (attribute counts that differ, indices out of range, pixels of the wrong size).
+  void update(const SceneView& scene);
+
+  int mesh_count() const { return static_cast<int>(meshes_.size()); }
+  const GpuMesh& mesh(int index) const { return meshes_.at(index); }
+  int texture_count() const { return static_cast<int>(textures_.size()); }
+  // Texture `index` of SceneView::textures, or the white texture for -1.
+  Image& texture(int index) { return index < 0 ? white_ : textures_.at(index); }
+  Image& white_texture() { return white_; }
+
+ private:
+  GpuMesh upload(const MeshData& mesh);
+  Image upload(const TextureData& texture);
+
+  Context& context_;
+  Submitter& submitter_;
+  std::optional<uint64_t> version_;
+  std::vector<GpuMesh> meshes_;
+  std::vector<Image> textures_;
+  Image white_;
+};
+
+}  // namespace lg
