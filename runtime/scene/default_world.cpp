@@ -1,5 +1,7 @@
 #include "runtime/scene/default_world.h"
 
+#include <glm/geometric.hpp>
+
 #include "runtime/scene/mesh_generators.h"
 
 namespace lg {
@@ -46,7 +48,7 @@ void add_sphere_rows(World& world) {
   int sphere = world.add_mesh(make_sphere(0.3f));
   constexpr int count = 6;
   for (int i = 0; i < count; ++i) {
-    float t = float(i) / float(count - 1), x = -3.0f + 6.0f * t;
+    float t = float(i) / float(count - 1), x = -3.2f + 4.8f * t;
     std::string n = std::to_string(i);
     int rough = world.add_material(material("roughness " + n, {0.80f, 0.12f, 0.08f}, t));
     int metal = world.add_material(material("metalness " + n, {1.00f, 0.78f, 0.34f}, 0.25f, t));
@@ -63,16 +65,18 @@ void add_lights_and_camera(World& world) {
   world.add<EnvironmentLight>(sky, {"", 1.0f});
 
   // About 1.8 W/m^2 at 1 m (pi L (r/d)^2): a warm glow on the bunny and the floor near it.
-  Entity bulb = place(world, "sphere light", {-1.8f, 1.1f, 0.8f});
+  Entity bulb = place(world, "sphere light", {1.5f, 0.9f, 1.0f});
   world.add<SphereLight>(bulb, {{1.0f, 0.7f, 0.4f}, 40.0f, 0.12f});
 
   // A cool strip along the top of the back wall, grazing it and lighting the sphere rows.
   Entity strip = place(world, "tube light", {0.0f, 2.5f, -2.6f});
   world.add<TubeLight>(strip, {{0.6f, 0.8f, 1.0f}, 25.0f, 2.0f, 0.04f});
 
-  Entity camera = place(world, "camera", {0.0f, 1.5f, 4.5f}, look_rotation(glm::vec3(0.0f, 0.7f, -1.0f) - glm::vec3(0.0f, 1.5f, 4.5f)));
-  world.add<Camera>(camera, {glm::radians(40.0f), 0.05f, 0.0f, 5.5f});
+  const glm::vec3 eye{0.0f, 1.5f, 5.2f}, target{0.0f, 0.55f, -1.0f};
+  Entity camera = place(world, "camera", eye, look_rotation(target - eye));
+  world.add<Camera>(camera, {glm::radians(42.0f), 0.05f, 0.0f, glm::length(target - eye)});
   world.add<PostProcessSettings>(camera, {0.0f});
+  world.active_camera = camera;
 }
 
 }  // namespace
@@ -83,7 +87,7 @@ World default_world() {
   add_room(world);
   add_sphere_rows(world);
   int fur = world.add_material(material("bunny", {0.85f, 0.82f, 0.78f}, 0.6f));
-  add_drawable(world, "bunny", world.add_mesh(make_bunny()), fur, {2.0f, 0.0f, 1.0f},
+  add_drawable(world, "bunny", world.add_mesh(make_bunny()), fur, {2.5f, 0.0f, 0.1f},
                glm::angleAxis(glm::radians(-30.0f), glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec3(1.8f));
   add_lights_and_camera(world);
   return world;

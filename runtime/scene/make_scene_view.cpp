@@ -38,7 +38,7 @@ template <class T> Entity first_with(const World& world) {
 }
 
 void add_camera(const World& world, float aspect_ratio, SceneView& view) {
-  Entity chosen = first_with<Camera>(world);
+  Entity chosen = world.has<Camera>(world.active_camera) ? world.active_camera : first_with<Camera>(world);
   Camera camera = chosen.is_null() ? Camera{} : world.get<Camera>(chosen);
   glm::mat4 frame = chosen.is_null() ? glm::mat4(1.0f) : without_scale(world.world_matrix(chosen));
   CameraView& c = view.camera;

@@ -7,11 +7,12 @@
 
 namespace lg {
 
-// The camera is the Camera entity with the lowest index (a default camera at the origin
-// looking down -Z when there is none). Likewise the environment and the exposure come from the
-// lowest-index EnvironmentLight and PostProcessSettings. With `previous` (last frame's view), each draw's
-// previous_world is the matching entity's world matrix then and previous_view_projection the
-// camera's then; otherwise they equal the current ones. version is world.asset_revision().
+// The camera is world.active_camera, else the Camera entity with the lowest index, else a
+// default camera at the origin looking down -Z. The environment and the exposure come from the
+// lowest-index EnvironmentLight and PostProcessSettings. With `previous` (last frame's view),
+// each draw's previous_world is the matching entity's world matrix then and
+// previous_view_projection the camera's then; otherwise they equal the current ones.
+// version is world.asset_revision().
 SceneView make_scene_view(const World& world, float aspect_ratio, const SceneView* previous = nullptr);
 
 }  // namespace lg

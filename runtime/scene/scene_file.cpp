@@ -276,6 +276,7 @@ class SceneFileReader {
       f.number("aperture", c.aperture, 0, 10, "metres");
       f.number("focus_distance", c.focus_distance, 1e-3, max_length, "metres");
       world_.add<Camera>(e, c);
+      if (world_.active_camera.is_null()) world_.active_camera = e;  // the file's, not an imported one
     });
     with("directional_light", {"color", "irradiance", "angular_radius", "shadows"}, [&](const JsonFields& f) {
       DirectionalLight l;

@@ -23,6 +23,9 @@ namespace lg {
 class World {
  public:
   std::string name = "world";
+  // The camera the view is seen through; when it is not alive with a Camera, make_scene_view()
+  // takes the Camera entity with the lowest index.
+  Entity active_camera;
 
   Entity create();
   Entity create(std::string name);  // with a Name component
