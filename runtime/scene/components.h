@@ -1,6 +1,6 @@
 // The components an entity of the world (world.h) may have. Lights and cameras live in their
-// entity's local frame: cameras and directional lights look down local -Z (up is +Y), tubes lie
-// along local X, rectangles span local X and Y and emit toward +Z. Colours are linear Rec.709;
+// entity's local frame: cameras, directional lights and rectangle lights aim down local -Z
+// (up is +Y; a rectangle spans local X and Y), tubes lie along local X. Colours are linear Rec.709;
 // `intensity` multiplies `color` and has the unit of the matching field of scene_view.h.
 #pragma once
 

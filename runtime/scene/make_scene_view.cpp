@@ -74,7 +74,8 @@ void add_lights(const World& world, SceneView& view) {
   world.each<RectLight>([&](Entity e, const RectLight& l) {
     glm::mat4 m = world.world_matrix(e);
     view.rect_lights.push_back({point(m, glm::vec3(0.0f)), vector(m, {l.width * 0.5f, 0.0f, 0.0f}),
-                                vector(m, {0.0f, l.height * 0.5f, 0.0f}), l.color * l.intensity, l.two_sided});
+                                // -Y so that cross(half_x, half_y), the side that emits, is local -Z.
+                                vector(m, {0.0f, -l.height * 0.5f, 0.0f}), l.color * l.intensity, l.two_sided});
   });
 }
 

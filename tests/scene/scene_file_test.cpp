@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
@@ -189,6 +190,42 @@ TEST(SceneFile, AssetRootsAllowPathsOutsideTheScenesFolder) {
   EXPECT_THROW(load_world(scene), SceneError);
   World w = load_world(scene, {AssetRoots{{dir.string(), data_dir()}}});
   EXPECT_EQ(w.count<MeshRenderer>(), 2u);
+}
+
+// The example worlds load; the Stanford bunny one reaches ../shared/data through an asset root.
+TEST(SceneFile, ExampleWorldsLoad) {
+  fs::path examples = fs::path(LUMAGRAPH_SOURCE_DIR) / "examples" / "worlds";
+  fs::path shared = fs::path(LUMAGRAPH_SOURCE_DIR) / ".." / "shared" / "data";
+  size_t loaded = 0;
+  for (const auto& entry : fs::directory_iterator(examples)) {
+    if (entry.path().extension() != ".json") continue;
+    bool needs_shared = entry.path().stem() == "stanford-bunny";
+    if (needs_shared && !fs::exists(shared / "mesh" / "bunny.obj")) {
+      std::cout << "skipping " << entry.path() << ": no " << shared << "\n";
+      continue;
+    }
+    WorldLoadOptions options;
+    if (needs_shared) options.asset_roots.roots = {examples.string(), shared.string()};
+    World w = load_world(entry.path().string(), options);
+    SceneView v = make_scene_view(w, 16.0f / 9.0f);
+    EXPECT_FALSE(v.draws.empty()) << entry.path();
+    EXPECT_FALSE(v.directional_lights.empty()) << entry.path();
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 1u);
+}
+
+TEST(SceneFile, GalleryHasEveryLightKind) {
+  World w = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/gallery.json");
+  SceneSummary s = make_scene_view(w, 16.0f / 9.0f).summary();
+  EXPECT_EQ(s.directional_lights, 1);
+  EXPECT_EQ(s.point_lights, 1);
+  EXPECT_EQ(s.sphere_lights, 1);
+  EXPECT_EQ(s.tube_lights, 1);
+  EXPECT_EQ(s.rectangle_lights, 1);
+  EXPECT_EQ(s.irradiance_volumes, 1);
+  EXPECT_EQ(s.reflection_probes, 1);
+  EXPECT_TRUE(s.has(SceneFeature::thin_lens_camera));
 }
 
 }  // namespace

@@ -98,7 +98,10 @@ TEST(SceneView, LightsAreInWorldSpace) {
   EXPECT_FLOAT_EQ(t.radiance.x, 4.0f);
   ASSERT_EQ(v.rect_lights.size(), 1u);
   EXPECT_NEAR(v.rect_lights[0].half_x.z, -1.0f, 1e-5f);  // width 1 scaled by 2, halved
-  EXPECT_NEAR(v.rect_lights[0].half_y.y, 0.5f, 1e-5f);
+  EXPECT_NEAR(v.rect_lights[0].half_y.y, -0.5f, 1e-5f);
+  // It emits down its local -Z, which the parent's turn makes world -X.
+  glm::vec3 facing = glm::cross(v.rect_lights[0].half_x, v.rect_lights[0].half_y);
+  EXPECT_LT(facing.x, 0.0f);
   EXPECT_TRUE(v.rect_lights[0].two_sided);
   EXPECT_FLOAT_EQ(v.rect_lights[0].radiance.x, 1.0f);
   ASSERT_EQ(v.directional_lights.size(), 1u);
