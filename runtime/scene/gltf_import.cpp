@@ -287,6 +287,30 @@ class GltfImporter {
   std::map<int, int> materials_, images_;
 };
 
+// Files a glTF file refers to (buffers, images) must lie in its folder or below: a downloaded
+// model must not read arbitrary files. tinygltf reads through these callbacks.
+bool inside_folder(const std::string& path, const std::string& folder) {
+  std::error_code ec;
+  std::filesystem::path resolved = std::filesystem::weakly_canonical(path, ec);
+  if (ec) return false;
+  std::filesystem::path root(folder);
+  auto [root_end, unused] = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
+  return root_end == root.end();
+}
+
+bool contained_read(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
+  if (inside_folder(path, *static_cast<std::string*>(folder))) return tinygltf::ReadWholeFile(out, error, path, nullptr);
+  if (error) *error += "'" + path + "' is outside the folder of the glTF file";
+  return false;
+}
+
+std::string unexpanded(const std::string& path, void*) { return path; }
+
+bool no_writes(std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (error) *error += "writing is not allowed";
+  return false;
+}
+
 }  // namespace
 
 std::vector<Entity> import_gltf(World& world, const std::string& path, Entity parent) {
@@ -296,6 +320,9 @@ std::vector<Entity> import_gltf(World& world, const std::string& path, Entity pa
   std::string ext = std::filesystem::path(path).extension().string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "the file does not exist");
+  std::string folder = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).parent_path().string();
+  // Existence is not checked against the folder, so that reading is tried and refused by name.
+  loader.SetFsCallbacks({tinygltf::FileExists, unexpanded, contained_read, no_writes, &folder});
   bool ok = ext == ".glb" || ext == ".GLB" ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                                            : loader.LoadASCIIFromFile(&model, &error, &warning, path);
   if (!ok) {

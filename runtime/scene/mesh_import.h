@@ -13,7 +13,7 @@
 // perspective cameras (orthographic ones are skipped); KHR_lights_punctual directional and
 // point lights, spot lights as point lights (their cone is dropped), intensities taken as the
 // project's units (directional: irradiance, point: W/sr). Sparse accessors, skins and morph
-// targets are not supported.
+// targets are not supported. Buffers and images must lie in the file's folder or below.
 //
 // OBJ: positions, normals (generated when any corner lacks one), uvs (v flipped to glTF's
 // top-left origin); one mesh per object and material. MTL to PBR: Kd is the base colour, d its

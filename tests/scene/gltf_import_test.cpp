@@ -142,6 +142,8 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenGltf{"no_such_light", R"({"light": 1})", R"({"light": 9})", "light 9 does not exist"},
         BrokenGltf{"missing_buffer", R"("uri": "data:application/octet-stream;base64,)", R"("uri": "missing.bin", "x": ")",
                    "missing.bin"},
+        BrokenGltf{"buffer_outside_folder", R"("uri": "data:application/octet-stream;base64,)",
+                   R"("uri": "../CMakeCache.txt", "x": ")", "is outside the folder of the glTF file"},
         BrokenGltf{"missing_image", R"("uri": "data:image/png;base64,)", R"("uri": "missing.png", "x": ")", "missing.png"},
         BrokenGltf{"corrupt_image", R"("uri": "data:image/png;base64,)", R"("uri": "data:image/png;base64,AAAA", "x": ")",
                    "cannot decode image data for image[0]"},
