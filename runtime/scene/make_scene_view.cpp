@@ -4,6 +4,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "runtime/scene/projection.h"
@@ -102,6 +104,8 @@ void add_draws(const World& world, const SceneView* previous, SceneView& view) {
 }  // namespace
 
 SceneView make_scene_view(const World& world, float aspect_ratio, const SceneView* previous) {
+  if (!(aspect_ratio > 0.0f) || !std::isfinite(aspect_ratio))
+    throw std::invalid_argument("make_scene_view: the aspect ratio must be a positive number");
   SceneView view;
   view.name = world.name;
   view.version = world.asset_revision();

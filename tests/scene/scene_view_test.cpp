@@ -135,6 +135,12 @@ TEST(SceneView, PreviousFrameMatricesComeFromThePreviousView) {
   EXPECT_NE(second.camera.view, first.camera.view);
 }
 
+TEST(SceneView, RejectsABadAspectRatio) {
+  World w;
+  EXPECT_THROW(make_scene_view(w, 0.0f), std::invalid_argument);
+  EXPECT_THROW(make_scene_view(w, std::nanf("")), std::invalid_argument);
+}
+
 TEST(SceneView, VersionFollowsAssetChanges) {
   World w;
   w.add_mesh({});
