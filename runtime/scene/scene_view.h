@@ -122,7 +122,8 @@ struct SceneView {
   float exposure = 0.0f;  // EV from the world's PostProcessSettings
 
   // What the compiler specializes on: counts of each light kind, probes, glossy materials
-  // (any roughness below 0.9 or any metal), the camera's aperture and focus.
+  // (any drawn with roughness below 0.9 or any metal; a draw without a material counts as the
+  // default PbrMaterial), the camera's aperture and focus.
   SceneSummary summary() const;
 };
 

@@ -151,6 +151,44 @@ TEST(SceneFile, EveryErrorIsReportedWithItsPosition) {
   EXPECT_EQ(errors.size(), 15u) << testing::PrintToString(errors);
 }
 
+// Euler angles are yaw (Y), pitch (X), roll (Z) applied as R = Ry Rx Rz; quaternions are
+// normalised. Tolerance 1e-5.
+TEST(SceneFile, RotationConventions) {
+  World w = parse_scene_file(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "yaw", "transform": {"rotation": [0, 90, 0]}},
+    {"name": "pitch yaw", "transform": {"rotation": [90, 90, 0]}},
+    {"name": "quat", "transform": {"rotation": [0, 0, 2, 2], "scale": [1, 2, 3]}}
+  ]})", fake_path());
+  auto forward = [&](uint32_t index) {
+    Entity e{index, 0};
+    return glm::vec3(w.world_matrix(e) * glm::vec4(0, 0, -1, 0));
+  };
+  glm::vec3 yaw = forward(0), pitch_yaw = forward(1), quat = forward(2);
+  EXPECT_NEAR(yaw.x, -1.0f, 1e-5f);  // -Z turned 90 degrees left about Y
+  EXPECT_NEAR(pitch_yaw.y, 1.0f, 1e-5f);  // pitched up first, so the yaw leaves it up
+  EXPECT_NEAR(glm::length(quat), 3.0f, 1e-5f);  // 90 degrees about Z leaves -Z, scaled by 3
+  EXPECT_NEAR(quat.z, -3.0f, 1e-5f);
+}
+
+TEST(SceneFile, ConflictsAndDuplicates) {
+  std::vector<std::string> errors = errors_of(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "a", "model": "cube.obj", "shape": {"type": "bunny"}},
+    {"name": "a", "transform": {"rotation": [0, 0, 0], "look_at": [1, 0, 0]}},
+    {"shape": {"radius": 1}, "material": 5},
+    {"material": "x"}
+  ]})");
+  std::vector<std::string> expected = {
+      "2:49: error: an entity has a 'model' or a 'shape', not both (/entities/0/shape)",
+      "3:14: error: another entity is already named 'a' (/entities/1/name)",
+      "3:67: error: a transform has a 'rotation' or a 'look_at', not both (/entities/1/transform/look_at)",
+      "4:15: error: a shape needs 'type' (/entities/2/shape)",
+      "4:42: error: 'material' must be the name of a material in 'materials' (/entities/2/material)",
+      "5:18: error: no material named 'x' in 'materials' (/entities/3/material)",
+      "5:18: error: a material needs a 'model' or a 'shape' to apply to (/entities/3/material)",
+  };
+  EXPECT_EQ(errors, expected);
+}
+
 TEST(SceneFile, StructuralErrors) {
   EXPECT_EQ(errors_of("[]"), std::vector<std::string>{"1:1: error: expected a scene file as an object, found an array"});
   EXPECT_EQ(errors_of(R"({"format": "lumagraph-world/2", "entities": []})"),
