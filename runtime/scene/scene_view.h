@@ -48,6 +48,7 @@ struct DrawItem {
   int material = -1;  // index into SceneView::materials
   glm::mat4 world{1.0f};
   glm::mat4 previous_world{1.0f};  // last frame's, for motion vectors
+  uint64_t entity = 0;  // Entity::id() of its world entity: matches draws across frames
 };
 
 // Vulkan clip space with reversed Z: depth 1 at the near plane, 0 at infinity (infinite far
@@ -118,9 +119,11 @@ struct SceneView {
   bool has_environment = false;
   EnvironmentData environment;
   int irradiance_volumes = 0, reflection_probes = 0;
+  float exposure = 0.0f;  // EV from the world's PostProcessSettings
 
   // What the compiler specializes on: counts of each light kind, probes, glossy materials
-  // (any roughness below 0.9 or any metal), the camera's aperture and focus.
+  // (any drawn with roughness below 0.9 or any metal; a draw without a material counts as the
+  // default PbrMaterial), the camera's aperture and focus.
   SceneSummary summary() const;
 };
 

@@ -1,0 +1,96 @@
+// The components an entity of the world (world.h) may have. Lights and cameras live in their
+// entity's local frame: cameras, directional lights and rectangle lights aim down local -Z
+// (up is +Y; a rectangle spans local X and Y), tubes lie along local X. Colours are linear Rec.709;
+// `intensity` multiplies `color` and has the unit of the matching field of scene_view.h.
+#pragma once
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <string>
+
+#include "runtime/scene/entity.h"
+
+namespace lg {
+
+struct Name {
+  std::string value;
+};
+
+struct Transform {
+  glm::vec3 position{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z: identity
+  glm::vec3 scale{1.0f};
+  Entity parent;  // null: the world's frame; else relative to the parent's Transform
+
+  glm::mat4 local_matrix() const;
+};
+
+// The rotation that turns local -Z toward `direction` with local +Y as close to `up` as it goes.
+glm::quat look_rotation(glm::vec3 direction, glm::vec3 up = {0.0f, 1.0f, 0.0f});
+
+struct Camera {
+  float vertical_fov = 0.8727f;  // radians (50 degrees)
+  float near_plane = 0.05f;      // metres; the far plane is at infinity
+  float aperture = 0.0f;         // lens diameter in metres; 0 is a pinhole
+  float focus_distance = 5.0f;   // metres
+};
+
+struct MeshRenderer {
+  int mesh = -1;      // index into World::meshes()
+  int material = -1;  // index into World::materials(), or -1 for the default material
+};
+
+struct DirectionalLight {
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // irradiance, W/m^2
+  float angular_radius = 0.00465f;
+  bool casts_shadows = true;
+};
+
+struct PointLight {
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // W/sr
+  float range = 0.0f;      // 0: no cut-off
+};
+
+struct SphereLight {
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // radiance, W/(m^2 sr)
+  float radius = 0.1f;
+};
+
+struct TubeLight {
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // radiance, W/(m^2 sr)
+  float length = 1.0f;     // of the segment, along local X, centred on the entity
+  float radius = 0.05f;
+};
+
+struct RectLight {
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;  // radiance, W/(m^2 sr)
+  float width = 1.0f, height = 1.0f;  // along local X and Y
+  bool two_sided = false;
+};
+
+struct EnvironmentLight {
+  std::string path;  // an .hdr or .exr file; empty: the procedural sky
+  float intensity = 1.0f;
+};
+
+struct IrradianceVolume {
+  glm::vec3 size{1.0f};  // of the box, in the local frame, centred on the entity
+  glm::ivec3 probe_counts{4};
+};
+
+struct ReflectionProbe {  // centred on the entity
+  float radius = 1.0f;
+};
+
+struct PostProcessSettings {
+  float exposure = 0.0f;  // EV added to the camera's exposure
+};
+
+}  // namespace lg

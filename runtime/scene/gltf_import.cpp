@@ -1,0 +1,339 @@
+// glTF 2.0 import (see mesh_import.h). tinygltf parses the JSON, buffers and images; every index
+// and byte range it leaves unchecked is checked here before it is read.
+#include <tiny_gltf.h>
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/matrix_decompose.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+
+#include "runtime/scene/mesh_import.h"
+#include "runtime/scene/mesh_tools.h"
+#include "runtime/scene/scene_error.h"
+
+namespace lg {
+namespace {
+
+// What is wrong inside the file; import_gltf() adds the file's name.
+struct Malformed {
+  std::string message;
+};
+
+[[noreturn]] void fail(std::string message) { throw Malformed{std::move(message)}; }
+
+template <class T> const T& item(const std::vector<T>& items, int index, const std::string& what) {
+  if (index < 0 || static_cast<size_t>(index) >= items.size())
+    fail(what + " " + std::to_string(index) + " does not exist (the file has " + std::to_string(items.size()) + ")");
+  return items[static_cast<size_t>(index)];
+}
+
+// An accessor's elements, checked to lie inside its buffer view and buffer.
+struct ElementRange {
+  const unsigned char* data = nullptr;
+  size_t stride = 0, count = 0;
+  int component_type = 0, components = 0;
+  bool normalized = false;
+
+  double component(size_t element, int c) const {
+    const unsigned char* p = data + element * stride;
+    switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p + 4 * c, 4); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalize(p[c], 255.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * c, 2); return normalize(v, 65535.0); }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * c, 4); return v; }
+      default: fail("unsupported component type " + std::to_string(component_type));
+    }
+  }
+  double normalize(double v, double max) const { return normalized ? v / max : v; }
+};
+
+ElementRange elements(const tinygltf::Model& model, int index, const std::string& what, int type,
+                      std::initializer_list<int> component_types) {
+  const auto& a = item(model.accessors, index, what + ": accessor");
+  std::string name = what + " (accessor " + std::to_string(index) + ")";
+  if (a.sparse.isSparse) fail(name + " is sparse, which is not supported");
+  if (a.type != type) fail(name + " has the wrong type");
+  bool type_ok = false;
+  for (int t : component_types) type_ok |= a.componentType == t;
+  if (!type_ok) fail(name + " has an unsupported component type " + std::to_string(a.componentType));
+  const auto& view = item(model.bufferViews, a.bufferView, name + ": buffer view");
+  const auto& buffer = item(model.buffers, view.buffer, name + ": buffer");
+  size_t element_size = static_cast<size_t>(tinygltf::GetComponentSizeInBytes(a.componentType)) *
+                        static_cast<size_t>(tinygltf::GetNumComponentsInType(a.type));
+  size_t stride = view.byteStride ? view.byteStride : element_size;
+  if (stride < element_size) fail(name + ": the byte stride is smaller than an element");
+  if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
+    fail(name + ": buffer view " + std::to_string(a.bufferView) + " runs past the end of buffer " +
+         std::to_string(view.buffer) + " (" + std::to_string(buffer.data.size()) + " bytes)");
+  // Written so that no product can overflow: count is bounded by the view's length first.
+  bool fits = a.byteOffset <= view.byteLength && a.count <= view.byteLength &&
+              (a.count == 0 || (a.count - 1) * stride + element_size <= view.byteLength - a.byteOffset);
+  if (!fits) fail(name + ": " + std::to_string(a.count) + " elements run past the end of buffer view " + std::to_string(a.bufferView));
+  return {buffer.data.data() + view.byteOffset + a.byteOffset, stride, a.count, a.componentType,
+          tinygltf::GetNumComponentsInType(a.type), a.normalized};
+}
+
+glm::vec3 vec3_or(const std::vector<double>& v, glm::vec3 fallback) {
+  return v.size() == 3 ? glm::vec3(v[0], v[1], v[2]) : fallback;
+}
+
+class GltfImporter {
+ public:
+  GltfImporter(World& world, const tinygltf::Model& model, std::string stem)
+      : world_(world), model_(model), stem_(std::move(stem)) {}
+
+  std::vector<Entity> run(Entity parent) {
+    std::vector<int> roots;
+    if (!model_.scenes.empty()) {
+      int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      roots = item(model_.scenes, scene, "scene").nodes;
+    } else {
+      std::vector<bool> is_child(model_.nodes.size(), false);
+      for (const auto& n : model_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && static_cast<size_t>(c) < is_child.size()) is_child[static_cast<size_t>(c)] = true;
+      for (size_t i = 0; i < model_.nodes.size(); ++i)
+        if (!is_child[i]) roots.push_back(static_cast<int>(i));
+    }
+    std::vector<Entity> made;
+    for (int node : roots) made.push_back(add_node(node, parent));
+    return made;
+  }
+
+ private:
+  Entity add_node(int index, Entity parent) {
+    const auto& node = item(model_.nodes, index, "node");
+    if (std::find(path_.begin(), path_.end(), index) != path_.end())
+      fail("node " + std::to_string(index) + " is its own ancestor");
+    if (path_.size() > 256) fail("the node hierarchy is deeper than 256");
+    path_.push_back(index);
+    Entity e = world_.create(node.name.empty() ? stem_ + " node " + std::to_string(index) : node.name);
+    world_.add<Transform>(e, node_transform(node, index, parent));
+    if (node.mesh >= 0) add_mesh(node.mesh, e);
+    if (node.camera >= 0) add_camera(node.camera, e);
+    add_light(node, e);
+    for (int child : node.children) add_node(child, e);
+    path_.pop_back();
+    return e;
+  }
+
+  Transform node_transform(const tinygltf::Node& node, int index, Entity parent) {
+    Transform t;
+    t.parent = parent;
+    std::string name = "node " + std::to_string(index);
+    if (!node.matrix.empty()) {
+      if (node.matrix.size() != 16) fail(name + ": a matrix needs 16 numbers");
+      float values[16];
+      for (int k = 0; k < 16; ++k) values[k] = static_cast<float>(node.matrix[static_cast<size_t>(k)]);
+      glm::vec3 skew;
+      glm::vec4 perspective;
+      if (!glm::decompose(glm::make_mat4(values), t.scale, t.rotation, t.position, skew, perspective))
+        fail(name + ": the matrix is not a translation, rotation and scale");
+      return t;
+    }
+    if (!node.translation.empty() && node.translation.size() != 3) fail(name + ": a translation needs 3 numbers");
+    if (!node.scale.empty() && node.scale.size() != 3) fail(name + ": a scale needs 3 numbers");
+    if (!node.rotation.empty() && node.rotation.size() != 4) fail(name + ": a rotation needs 4 numbers");
+    t.position = vec3_or(node.translation, glm::vec3(0.0f));
+    t.scale = vec3_or(node.scale, glm::vec3(1.0f));
+    if (node.rotation.size() == 4) {  // glTF stores x, y, z, w
+      glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
+      float length = glm::length(q);
+      if (!(length > 0.0f) || !std::isfinite(length)) fail(name + ": the rotation is not a unit quaternion");
+      t.rotation = q / length;
+    }
+    return t;
+  }
+
+  void add_mesh(int index, Entity node_entity) {
+    const auto& mesh = item(model_.meshes, index, "mesh");
+    if (!meshes_.count(index)) {
+      auto& primitives = meshes_[index];
+      for (size_t p = 0; p < mesh.primitives.size(); ++p)
+        if (mesh.primitives[p].mode == TINYGLTF_MODE_TRIANGLES)
+          primitives.push_back({world_.add_mesh(read_primitive(mesh, index, p)), material(mesh.primitives[p].material)});
+    }
+    const auto& primitives = meshes_[index];
+    for (size_t p = 0; p < primitives.size(); ++p) {
+      // The node's own entity draws the first primitive; children draw the others.
+      Entity e = node_entity;
+      if (p > 0) {
+        e = world_.create(mesh.name + " primitive " + std::to_string(p));
+        world_.add<Transform>(e, {glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f), node_entity});
+      }
+      world_.add<MeshRenderer>(e, primitives[p]);
+    }
+  }
+
+  MeshData read_primitive(const tinygltf::Mesh& mesh, int index, size_t p) {
+    const auto& prim = mesh.primitives[p];
+    std::string what = "mesh " + std::to_string(index) + " primitive " + std::to_string(p);
+    MeshData out;
+    out.name = (mesh.name.empty() ? stem_ + " mesh " + std::to_string(index) : mesh.name) +
+               (mesh.primitives.size() > 1 ? "/" + std::to_string(p) : "");
+    auto attribute = [&](const char* key) {
+      auto found = prim.attributes.find(key);
+      return found == prim.attributes.end() ? -1 : found->second;
+    };
+    if (attribute("POSITION") < 0) fail(what + " has no POSITION");
+    ElementRange positions = elements(model_, attribute("POSITION"), what + " POSITION", TINYGLTF_TYPE_VEC3,
+                                      {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    for (size_t i = 0; i < positions.count; ++i)
+      out.positions.emplace_back(positions.component(i, 0), positions.component(i, 1), positions.component(i, 2));
+    if (attribute("NORMAL") >= 0) {
+      ElementRange n = elements(model_, attribute("NORMAL"), what + " NORMAL", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+      if (n.count != positions.count) fail(what + ": NORMAL and POSITION counts differ");
+      for (size_t i = 0; i < n.count; ++i) {
+        glm::vec3 v(n.component(i, 0), n.component(i, 1), n.component(i, 2));
+        float length = glm::length(v);
+        out.normals.push_back(length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0.0f, 1.0f, 0.0f));
+      }
+    }
+    if (attribute("TEXCOORD_0") >= 0) {
+      ElementRange uv = elements(model_, attribute("TEXCOORD_0"), what + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+      if (uv.count != positions.count) fail(what + ": TEXCOORD_0 and POSITION counts differ");
+      for (size_t i = 0; i < uv.count; ++i) out.uvs.emplace_back(uv.component(i, 0), uv.component(i, 1));
+    }
+    if (prim.indices >= 0) {
+      ElementRange ix = elements(model_, prim.indices, what + " indices", TINYGLTF_TYPE_SCALAR,
+                                 {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+      ix.normalized = false;
+      for (size_t i = 0; i < ix.count; ++i) out.indices.push_back(static_cast<uint32_t>(ix.component(i, 0)));
+    } else {
+      for (size_t i = 0; i < positions.count; ++i) out.indices.push_back(static_cast<uint32_t>(i));
+    }
+    out.indices.resize(out.indices.size() - out.indices.size() % 3);  // a trailing partial triangle is dropped
+    if (std::string problem = mesh_problem(out); !problem.empty()) fail(what + ": " + problem);
+    if (out.normals.empty()) generate_normals(out);
+    return out;
+  }
+
+  int material(int index) {
+    if (index < 0) return -1;
+    if (auto found = materials_.find(index); found != materials_.end()) return found->second;
+    const auto& m = item(model_.materials, index, "material");
+    const auto& pbr = m.pbrMetallicRoughness;
+    PbrMaterial out;
+    out.name = m.name.empty() ? stem_ + " material " + std::to_string(index) : m.name;
+    if (pbr.baseColorFactor.size() == 4)
+      out.base_color = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+    out.roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
+    out.metalness = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
+    out.emissive = vec3_or(m.emissiveFactor, glm::vec3(0.0f));
+    if (pbr.baseColorTexture.index >= 0) out.base_color_texture = texture(pbr.baseColorTexture.index);
+    return materials_[index] = world_.add_material(std::move(out));
+  }
+
+  int texture(int index) {
+    const auto& t = item(model_.textures, index, "texture");
+    if (auto found = images_.find(t.source); found != images_.end()) return found->second;
+    const auto& image = item(model_.images, t.source, "texture " + std::to_string(index) + ": image");
+    std::string what = "image " + std::to_string(t.source) + (image.uri.empty() ? "" : " ('" + image.uri.substr(0, 64) + "')");
+    if (image.image.empty() || image.width <= 0 || image.height <= 0) fail(what + " could not be loaded");
+    int channels = image.component, bytes = image.bits / 8;
+    size_t texels = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
+    if (channels < 1 || channels > 4 || (bytes != 1 && bytes != 2) ||
+        image.image.size() != texels * static_cast<size_t>(channels * bytes))
+      fail(what + " has an unsupported layout");
+    TextureData out;
+    out.name = image.name.empty() ? what : image.name;
+    out.width = static_cast<uint32_t>(image.width);
+    out.height = static_cast<uint32_t>(image.height);
+    out.rgba8.resize(texels * 4);
+    for (size_t i = 0; i < texels; ++i) {
+      // 16-bit values are little-endian: the high byte is the second.
+      auto channel = [&](int c) { return image.image[(i * static_cast<size_t>(channels) + static_cast<size_t>(c)) * static_cast<size_t>(bytes) + static_cast<size_t>(bytes - 1)]; };
+      bool gray = channels < 3;
+      for (int c = 0; c < 3; ++c) out.rgba8[i * 4 + static_cast<size_t>(c)] = channel(gray ? 0 : c);
+      out.rgba8[i * 4 + 3] = channels == 2 ? channel(1) : channels == 4 ? channel(3) : 255;
+    }
+    return images_[t.source] = world_.add_texture(std::move(out));
+  }
+
+  void add_camera(int index, Entity e) {
+    const auto& c = item(model_.cameras, index, "camera");
+    if (c.type != "perspective") return;
+    Camera camera;
+    if (c.perspective.yfov > 0.0 && c.perspective.yfov < 3.1) camera.vertical_fov = static_cast<float>(c.perspective.yfov);
+    if (c.perspective.znear > 0.0) camera.near_plane = static_cast<float>(c.perspective.znear);
+    world_.add<Camera>(e, camera);
+  }
+
+  void add_light(const tinygltf::Node& node, Entity e) {
+    auto ext = node.extensions.find("KHR_lights_punctual");
+    if (ext == node.extensions.end() || !ext->second.Has("light")) return;
+    const auto& ref = ext->second.Get("light");
+    if (!ref.IsNumber() && !ref.IsInt()) fail("a KHR_lights_punctual light reference is not a number");
+    const auto& light = item(model_.lights, ref.GetNumberAsInt(), "light");
+    glm::vec3 color = vec3_or(light.color, glm::vec3(1.0f));
+    auto intensity = static_cast<float>(light.intensity);
+    if (light.type == "directional") world_.add<DirectionalLight>(e, {color, intensity, 0.00465f, true});
+    else if (light.type == "point" || light.type == "spot") world_.add<PointLight>(e, {color, intensity, static_cast<float>(light.range)});
+  }
+
+  World& world_;
+  const tinygltf::Model& model_;
+  std::string stem_;
+  std::vector<int> path_;  // the nodes from the root to the one being added
+  std::map<int, std::vector<MeshRenderer>> meshes_;
+  std::map<int, int> materials_, images_;
+};
+
+// Files a glTF file refers to (buffers, images) must lie in its folder or below: a downloaded
+// model must not read arbitrary files. tinygltf reads through these callbacks.
+bool inside_folder(const std::string& path, const std::string& folder) {
+  std::error_code ec;
+  std::filesystem::path resolved = std::filesystem::weakly_canonical(path, ec);
+  if (ec) return false;
+  std::filesystem::path root(folder);
+  auto [root_end, unused] = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
+  return root_end == root.end();
+}
+
+bool contained_read(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
+  if (inside_folder(path, *static_cast<std::string*>(folder))) return tinygltf::ReadWholeFile(out, error, path, nullptr);
+  if (error) *error += "'" + path + "' is outside the folder of the glTF file";
+  return false;
+}
+
+std::string unexpanded(const std::string& path, void*) { return path; }
+
+bool no_writes(std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (error) *error += "writing is not allowed";
+  return false;
+}
+
+}  // namespace
+
+std::vector<Entity> import_gltf(World& world, const std::string& path, Entity parent) {
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string error, warning;
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "the file does not exist");
+  std::string folder = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).parent_path().string();
+  // Existence is not checked against the folder, so that reading is tried and refused by name.
+  loader.SetFsCallbacks({tinygltf::FileExists, unexpanded, contained_read, no_writes, &folder});
+  bool ok = ext == ".glb" || ext == ".GLB" ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+                                           : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+  if (!ok) {
+    while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+    throw SceneError(path, "not a valid glTF file: " + (error.empty() ? std::string("unknown error") : error));
+  }
+  try {
+    return GltfImporter(world, model, std::filesystem::path(path).stem().string()).run(parent);
+  } catch (const Malformed& m) {
+    throw SceneError(path, m.message);
+  }
+}
+
+}  // namespace lg

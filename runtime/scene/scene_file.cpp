@@ -1,0 +1,366 @@
+#include "runtime/scene/scene_file.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+
+#include "graph/json_reader.h"
+#include "graph/limits.h"
+#include "graph/spelling.h"
+#include "runtime/scene/json_fields.h"
+#include "runtime/scene/mesh_generators.h"
+#include "runtime/scene/mesh_import.h"
+#include "runtime/scene/scene_error.h"
+
+namespace lg {
+namespace {
+
+constexpr double max_length = 1e6, max_power = 1e9;
+
+const std::vector<std::string> entity_keys = {
+    "name", "parent", "transform", "model", "shape", "material", "camera", "directional_light", "point_light",
+    "sphere_light", "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
+
+class SceneFileReader {
+ public:
+  SceneFileReader(World& world, const std::string& path, const AssetRoots& roots, Diagnostics& d)
+      : world_(world), path_(path), roots_(roots), d_(d) {}
+
+  void read(const JsonValue& root) {
+    JsonFields top(root, "", "a scene file", {"format", "name", "materials", "environment", "post", "entities"}, d_);
+    if (!top.is_object()) return;
+    if (const JsonValue* f = top.get("format"); !f || !f->is_string() || f->as_string() != world_format)
+      top.error_at("format", std::string("expected \"format\": \"") + world_format + "\"");
+    top.string("name", world_.name);
+    if (const JsonValue* m = top.get("materials")) materials(*m, top.pointer("materials"));
+    if (const JsonValue* env = top.get("environment")) environment(*env, top.pointer("environment"));
+    if (const JsonValue* post = top.get("post")) post_settings(*post, top.pointer("post"));
+    top.require("entities");
+    if (const JsonValue* list = top.get("entities")) {
+      if (!list->is_array()) return top.error_at("entities", "'entities' must be an array of objects");
+      for (size_t i = 0; i < list->items().size(); ++i) entity(list->items()[i], json_pointer_append("/entities", i));
+    }
+  }
+
+ private:
+  World& world_;
+  const std::string& path_;
+  const AssetRoots& roots_;
+  Diagnostics& d_;
+  std::map<std::string, int> materials_;     // name -> world material
+  std::map<std::string, Entity> entities_;  // name -> entity, for "parent"
+
+  void materials(const JsonValue& v, const std::string& p) {
+    if (!v.is_object()) return d_.error(v.pos(), p, "'materials' must be an object of named materials");
+    for (const auto& [name, m] : v.members()) {
+      JsonFields f(m, json_pointer_append(p, name), "material '" + name + "'",
+                   {"base_color", "alpha", "roughness", "metalness", "emissive"}, d_);
+      PbrMaterial out;
+      out.name = name;
+      glm::vec3 base(out.base_color);
+      f.vec3("base_color", base, 0, 1);
+      f.number("alpha", out.base_color.a, 0, 1);
+      out.base_color = glm::vec4(base, out.base_color.a);
+      f.number("roughness", out.roughness, 0, 1);
+      f.number("metalness", out.metalness, 0, 1);
+      f.vec3("emissive", out.emissive, 0, max_power);
+      materials_[name] = world_.add_material(std::move(out));
+    }
+  }
+
+  void environment(const JsonValue& v, const std::string& p) {
+    JsonFields f(v, p, "the environment", {"path", "intensity"}, d_);
+    if (!f.is_object()) return;
+    EnvironmentLight env;
+    if (const JsonValue* path = f.get("path")) env.path = asset(f, "path", *path, {".hdr", ".exr"});
+    f.number("intensity", env.intensity, 0, max_power);
+    world_.add<EnvironmentLight>(world_.create("environment"), env);
+  }
+
+  void post_settings(const JsonValue& v, const std::string& p) {
+    JsonFields f(v, p, "post", {"exposure"}, d_);
+    PostProcessSettings post;
+    f.number("exposure", post.exposure, -20, 20, "EV");
+    world_.add<PostProcessSettings>(world_.create("post"), post);
+  }
+
+  // The canonical path of a file the scene refers to, or empty after reporting.
+  std::string asset(const JsonFields& f, std::string_view key, const JsonValue& v, const std::vector<std::string>& extensions) {
+    if (!v.is_string()) {
+      f.error_at(key, "'" + std::string(key) + "' must be a path relative to the scene file");
+      return {};
+    }
+    std::string error;
+    auto resolved = resolve_asset_path(path_, v.as_string(), roots_, extensions, &error);
+    if (!resolved) f.error_at(key, error);
+    return resolved.value_or("");
+  }
+
+  void entity(const JsonValue& v, const std::string& p) {
+    JsonFields f(v, p, "an entity", entity_keys, d_);
+    if (!f.is_object()) return;
+    std::string name;
+    f.string("name", name);
+    Entity e = world_.create(name.empty() ? "entity " + p.substr(p.rfind('/') + 1) : name);
+    if (!name.empty() && !entities_.emplace(name, e).second)
+      f.error_at("name", "another entity is already named '" + name + "'");
+    Transform t;
+    if (const JsonValue* parent = f.get("parent")) t.parent = parent_entity(f, *parent);
+    if (const JsonValue* tv = f.get("transform")) transform(*tv, f.pointer("transform"), t);
+    world_.add<Transform>(e, t);
+
+    int material = -1;
+    if (const JsonValue* m = f.get("material")) material = material_index(f, *m);
+    if (f.get("model") && f.get("shape")) f.error_at("shape", "an entity has a 'model' or a 'shape', not both");
+    else if (const JsonValue* model = f.get("model")) import_model(f, *model, e, material);
+    else if (const JsonValue* shape = f.get("shape")) world_.add<MeshRenderer>(e, {make_shape(*shape, f.pointer("shape")), material});
+    else if (f.get("material")) f.error_at("material", "a material needs a 'model' or a 'shape' to apply to");
+    components(f, e);
+  }
+
+  Entity parent_entity(const JsonFields& f, const JsonValue& v) {
+    if (!v.is_string()) {
+      f.error_at("parent", "'parent' must be the name of an entity listed before this one");
+      return {};
+    }
+    if (auto found = entities_.find(v.as_string()); found != entities_.end()) return found->second;
+    std::vector<std::string> names;
+    for (const auto& [n, _] : entities_) names.push_back(n);
+    std::string guess = closest_name(v.as_string(), names);
+    f.error_at("parent", "no entity named '" + v.as_string() + "' is listed before this one" +
+                             (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+    return {};
+  }
+
+  int material_index(const JsonFields& f, const JsonValue& v) {
+    if (!v.is_string()) {
+      f.error_at("material", "'material' must be the name of a material in 'materials'");
+      return -1;
+    }
+    if (auto found = materials_.find(v.as_string()); found != materials_.end()) return found->second;
+    std::vector<std::string> names;
+    for (const auto& [n, _] : materials_) names.push_back(n);
+    std::string guess = closest_name(v.as_string(), names);
+    f.error_at("material", "no material named '" + v.as_string() + "' in 'materials'" +
+                               (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+    return -1;
+  }
+
+  void transform(const JsonValue& v, const std::string& p, Transform& t) {
+    JsonFields f(v, p, "a transform", {"position", "rotation", "look_at", "scale"}, d_);
+    if (!f.is_object()) return;
+    f.vec3("position", t.position, -max_length, max_length);
+    std::vector<double> r;
+    if (f.get("rotation") && f.get("look_at")) {
+      f.error_at("look_at", "a transform has a 'rotation' or a 'look_at', not both");
+    } else if (f.numbers("rotation", r, 3, 4, -1e4, 1e4)) {
+      t.rotation = rotation(f, r);
+    } else if (f.numbers("look_at", r, 3, 3, -max_length, max_length)) {
+      glm::vec3 target(r[0], r[1], r[2]);
+      if (target == t.position) f.error_at("look_at", "'look_at' must differ from the position");
+      else t.rotation = look_rotation(target - t.position);
+    }
+    if (const JsonValue* s = f.get("scale"); s && s->is_number()) {
+      float uniform = 1.0f;
+      f.number("scale", uniform, 1e-6, max_length);
+      t.scale = glm::vec3(uniform);
+    } else {
+      f.vec3("scale", t.scale, 1e-6, max_length);
+    }
+  }
+
+  // Three numbers are Euler angles in degrees (yaw about Y, then pitch about X, then roll
+  // about Z: R = Ry Rx Rz); four are a quaternion x, y, z, w as glTF writes them.
+  glm::quat rotation(const JsonFields& f, const std::vector<double>& r) {
+    if (r.size() == 3) {
+      auto axis = [](double degrees, glm::vec3 a) { return glm::angleAxis(glm::radians(static_cast<float>(degrees)), a); };
+      return axis(r[1], {0, 1, 0}) * axis(r[0], {1, 0, 0}) * axis(r[2], {0, 0, 1});
+    }
+    glm::quat q{float(r[3]), float(r[0]), float(r[1]), float(r[2])};
+    if (!(glm::length(q) > 1e-6f)) {
+      f.error_at("rotation", "a rotation quaternion must not be zero");
+      return glm::quat(1, 0, 0, 0);
+    }
+    return glm::normalize(q);
+  }
+
+  void import_model(const JsonFields& f, const JsonValue& v, Entity e, int material) {
+    std::string resolved = asset(f, "model", v, {".gltf", ".glb", ".obj"});
+    if (resolved.empty()) return;
+    try {
+      bool obj = resolved.size() >= 4 && (resolved.substr(resolved.size() - 4) == ".obj" || resolved.substr(resolved.size() - 4) == ".OBJ");
+      if (obj) import_obj(world_, resolved, e);
+      else import_gltf(world_, resolved, e);
+    } catch (const SceneError& error) {
+      for (const auto& item : error.diagnostics().items()) f.error_at("model", "'" + v.as_string() + "': " + item.message);
+      return;
+    }
+    if (material < 0) return;
+    // The override applies to everything the model placed: the entity's descendants.
+    world_.each<MeshRenderer>([&](Entity drawn, MeshRenderer& r) {
+      for (Entity a = drawn; !a.is_null(); a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
+        if (a == e) {
+          r.material = material;
+          return;
+        }
+    });
+  }
+
+  int make_shape(const JsonValue& v, const std::string& p) {
+    JsonFields f(v, p, "a shape", {"type", "radius", "size", "length"}, d_);
+    if (!f.is_object()) return -1;
+    f.require("type");
+    std::string type;
+    f.string("type", type);
+    const std::vector<std::string> types = {"sphere", "box", "quad", "capsule", "bunny"};
+    auto needs = [&](std::initializer_list<const char*> used) {
+      for (const char* key : {"radius", "size", "length"}) {
+        bool wanted = std::find_if(used.begin(), used.end(), [&](const char* u) { return std::string_view(u) == key; }) != used.end();
+        if (wanted) f.require(key);
+        else if (f.get(key)) f.error_at(key, "a " + type + " has no '" + key + "'");
+      }
+    };
+    float radius = 0.5f, length = 1.0f;
+    glm::vec3 size{1.0f};
+    std::vector<double> extent;
+    f.number("radius", radius, 1e-4, max_length);
+    f.number("length", length, 0, max_length);
+    if (type == "sphere") {
+      needs({"radius"});
+      return world_.add_mesh(make_sphere(radius));
+    }
+    if (type == "box") {
+      needs({"size"});
+      f.vec3("size", size, 1e-4, max_length);
+      return world_.add_mesh(make_box(size));
+    }
+    if (type == "quad") {
+      needs({"size"});
+      if (f.numbers("size", extent, 2, 2, 1e-4, max_length)) size = glm::vec3(extent[0], 0.0f, extent[1]);
+      return world_.add_mesh(make_quad(size.x, size.z));
+    }
+    if (type == "capsule") {
+      needs({"length", "radius"});
+      return world_.add_mesh(make_capsule(length, radius));
+    }
+    if (type == "bunny") {
+      needs({});
+      return world_.add_mesh(make_bunny());
+    }
+    if (f.get("type") && f.get("type")->is_string()) {
+      std::string guess = closest_name(type, types);
+      f.error_at("type", "unknown shape '" + type + "'; " +
+                             (guess.empty() ? "expected sphere, box, quad, capsule or bunny" : "did you mean '" + guess + "'?"));
+    }
+    return -1;
+  }
+
+  void components(const JsonFields& entity, Entity e) {
+    auto with = [&](const char* key, std::vector<std::string> keys, const std::function<void(const JsonFields&)>& read) {
+      if (const JsonValue* v = entity.get(key)) {
+        JsonFields f(*v, entity.pointer(key), key, std::move(keys), d_);
+        if (f.is_object()) read(f);
+      }
+    };
+    with("camera", {"vertical_fov", "near", "aperture", "focus_distance"}, [&](const JsonFields& f) {
+      Camera c;
+      float fov = glm::degrees(c.vertical_fov);
+      f.number("vertical_fov", fov, 1, 179, "degrees");
+      c.vertical_fov = glm::radians(fov);
+      f.number("near", c.near_plane, 1e-4, 1e3, "metres");
+      f.number("aperture", c.aperture, 0, 10, "metres");
+      f.number("focus_distance", c.focus_distance, 1e-3, max_length, "metres");
+      world_.add<Camera>(e, c);
+      if (world_.active_camera.is_null()) world_.active_camera = e;  // the file's, not an imported one
+    });
+    with("directional_light", {"color", "irradiance", "angular_radius", "shadows"}, [&](const JsonFields& f) {
+      DirectionalLight l;
+      float angle = glm::degrees(l.angular_radius);
+      f.vec3("color", l.color, 0, max_power);
+      f.number("irradiance", l.intensity, 0, max_power, "W/m^2");
+      f.number("angular_radius", angle, 0, 10, "degrees");
+      l.angular_radius = glm::radians(angle);
+      f.boolean("shadows", l.casts_shadows);
+      world_.add<DirectionalLight>(e, l);
+    });
+    with("point_light", {"color", "intensity", "range"}, [&](const JsonFields& f) {
+      PointLight l;
+      f.vec3("color", l.color, 0, max_power);
+      f.number("intensity", l.intensity, 0, max_power, "W/sr");
+      f.number("range", l.range, 0, max_length, "metres");
+      world_.add<PointLight>(e, l);
+    });
+    with("sphere_light", {"color", "radiance", "radius"}, [&](const JsonFields& f) {
+      SphereLight l;
+      f.vec3("color", l.color, 0, max_power);
+      f.number("radiance", l.intensity, 0, max_power, "W/(m^2 sr)");
+      f.number("radius", l.radius, 1e-4, 1e3, "metres");
+      world_.add<SphereLight>(e, l);
+    });
+    with("tube_light", {"color", "radiance", "length", "radius"}, [&](const JsonFields& f) {
+      TubeLight l;
+      f.vec3("color", l.color, 0, max_power);
+      f.number("radiance", l.intensity, 0, max_power, "W/(m^2 sr)");
+      f.number("length", l.length, 0, 1e3, "metres");
+      f.number("radius", l.radius, 1e-4, 1e3, "metres");
+      world_.add<TubeLight>(e, l);
+    });
+    with("rect_light", {"color", "radiance", "width", "height", "two_sided"}, [&](const JsonFields& f) {
+      RectLight l;
+      f.vec3("color", l.color, 0, max_power);
+      f.number("radiance", l.intensity, 0, max_power, "W/(m^2 sr)");
+      f.number("width", l.width, 1e-4, 1e3, "metres");
+      f.number("height", l.height, 1e-4, 1e3, "metres");
+      f.boolean("two_sided", l.two_sided);
+      world_.add<RectLight>(e, l);
+    });
+    with("irradiance_volume", {"size", "probes"}, [&](const JsonFields& f) {
+      IrradianceVolume vol;
+      f.vec3("size", vol.size, 1e-3, max_length);
+      std::vector<double> counts;
+      if (f.numbers("probes", counts, 3, 3, 1, 256)) {
+        if (counts[0] != std::floor(counts[0]) || counts[1] != std::floor(counts[1]) || counts[2] != std::floor(counts[2]))
+          f.error_at("probes", "'probes' must be three whole numbers");
+        else vol.probe_counts = glm::ivec3(counts[0], counts[1], counts[2]);
+      }
+      world_.add<IrradianceVolume>(e, vol);
+    });
+    with("reflection_probe", {"radius"}, [&](const JsonFields& f) {
+      ReflectionProbe probe;
+      f.number("radius", probe.radius, 1e-3, max_length, "metres");
+      world_.add<ReflectionProbe>(e, probe);
+    });
+  }
+};
+
+World read_world(const std::optional<JsonValue>& root, const std::string& path, const AssetRoots& roots, Diagnostics& d) {
+  World world;
+  world.name = std::filesystem::path(path).stem().string();
+  if (root) SceneFileReader(world, path, roots, d).read(*root);
+  if (d.has_errors()) {
+    d.sort_by_position();
+    throw SceneError(std::move(d));
+  }
+  return world;
+}
+
+}  // namespace
+
+World load_scene_file(const std::string& path, const AssetRoots& roots) {
+  Diagnostics d(path);
+  auto root = read_json_file(path, d);
+  return read_world(root, path, roots, d);
+}
+
+World parse_scene_file(std::string_view text, const std::string& path, const AssetRoots& roots) {
+  Diagnostics d(path);
+  auto root = read_json(text, d);
+  return read_world(root, path, roots, d);
+}
+
+}  // namespace lg

@@ -1,0 +1,31 @@
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+
+SceneSummary SceneView::summary() const {
+  SceneSummary s;
+  s.name = name;
+  s.directional_lights = static_cast<int>(directional_lights.size());
+  s.point_lights = static_cast<int>(point_lights.size());
+  s.sphere_lights = static_cast<int>(sphere_lights.size());
+  s.tube_lights = static_cast<int>(tube_lights.size());
+  s.rectangle_lights = static_cast<int>(rect_lights.size());
+  s.shadows = false;
+  for (const auto& d : directional_lights) s.shadows |= d.casts_shadows;
+  s.environment = has_environment;
+  s.irradiance_volumes = irradiance_volumes;
+  s.reflection_probes = reflection_probes;
+  // Only the materials something is drawn with; a draw without one uses the default material.
+  s.glossy_materials = false;
+  const PbrMaterial default_material;
+  for (const auto& d : draws) {
+    bool valid = d.material >= 0 && static_cast<size_t>(d.material) < materials.size();
+    const PbrMaterial& m = valid ? materials[static_cast<size_t>(d.material)] : default_material;
+    s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f;
+  }
+  s.aperture = camera.aperture;
+  s.focus_distance = camera.focus_distance;
+  return s;
+}
+
+}  // namespace lg
