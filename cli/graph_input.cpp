@@ -28,14 +28,19 @@ std::optional<Graph> load_graph_argument(const Args& args, Diagnostics& diagnost
   return std::nullopt;
 }
 
-std::optional<std::string> read_compile_options(const Args& args, CompileOptions& options, Diagnostics& diagnostics) {
+std::optional<std::string> read_frame_size(const Args& args, FrameSize& frame) {
   if (auto size = args.value("--size")) {
     unsigned w = 0, h = 0;
     char tail = 0;
     if (std::sscanf(size->c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
       return "--size expects WIDTHxHEIGHT, each from 1 to 16384, for example 1920x1080; got '" + *size + "'";
-    options.frame = {w, h};
+    frame = {w, h};
   }
+  return std::nullopt;
+}
+
+std::optional<std::string> read_compile_options(const Args& args, CompileOptions& options, Diagnostics& diagnostics) {
+  if (auto bad = read_frame_size(args, options.frame)) return bad;
   options.roots.roots = args.values("--asset-root");
   options.alias.enabled = !args.has("--no-alias");
   if (auto scene = args.value("--scene")) {

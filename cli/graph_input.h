@@ -1,4 +1,4 @@
-// What compile and validate share: loading the graph named on the command line (or the
+// What compile, validate and render share: loading the graph named on the command line (or the
 // embedded default graph when none is named) and the options that shape compilation.
 #pragma once
 
@@ -18,6 +18,9 @@ ArgSpec graph_arg_spec();
 // Loads the graph (positional argument, or the embedded default). nullopt: errors are in
 // `diagnostics`.
 std::optional<Graph> load_graph_argument(const Args& args, Diagnostics& diagnostics);
+
+// Reads --size WxH into `frame` (unchanged without it); returns an error message for bad values.
+std::optional<std::string> read_frame_size(const Args& args, FrameSize& frame);
 
 // Fills scene, frame size, asset roots and aliasing from the arguments. Returns an error
 // message for bad values; scene file errors go to `diagnostics`.

@@ -1,4 +1,4 @@
-// `lumagraph`: compile, validate and list render graphs from the command line.
+// `lumagraph`: render, compile, validate and list render graphs from the command line.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -11,12 +11,13 @@ namespace {
 constexpr const char* help = R"(usage: lumagraph COMMAND [ARGS]
 
 commands:
+  render [GRAPH]    render a graph on a scene and write the image
   compile [GRAPH]   compile a graph against a scene and print the plan
   validate GRAPH    check a graph file and report every error
   nodes             list the node types, their ports and params
 
 `lumagraph COMMAND --help` describes each command. With no GRAPH, compile uses the
-embedded default graph (examples/default.json).
+embedded default graph (examples/default.json); render and compile, the embedded default scene.
 )";
 
 }  // namespace
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
     std::fputs(help, stdout);
     return exit_ok;
   }
+  if (command == "render") return render_command(rest);
   if (command == "compile") return compile_command(rest);
   if (command == "validate") return validate_command(rest);
   if (command == "nodes") return nodes_command(rest);

@@ -49,6 +49,7 @@ struct SceneSummary {
   double focus_distance = 5;
 
   bool has(SceneFeature f) const;
+  friend bool operator==(const SceneSummary&, const SceneSummary&) = default;
 };
 
 // The embedded default scene (a room lit by a sky with a sun, a sphere light and a tube light,

@@ -15,6 +15,7 @@ namespace lg {
 
 struct FrameSize {
   uint32_t width = 1280, height = 720;
+  friend bool operator==(const FrameSize&, const FrameSize&) = default;
 };
 
 std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const std::vector<int>& topo_order,

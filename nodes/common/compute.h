@@ -1,18 +1,24 @@
-// Small helpers for kernels' compute passes: dispatching one invocation per texel.
+// Running a kernel's compute pass: the pipeline of one of the node's shaders, its descriptors
+// and push constants, and one invocation per texel of the target.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
+#include <cstddef>
 #include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "runtime/exec/node_kernel.h"
+#include "runtime/gpu/descriptors.h"
 
 namespace lg {
 
-// Shaders declare local_size_x = local_size_y = kTileSize and return for texels outside the
-// image, so any size dispatches.
+// Shaders declare local_size_x = local_size_y = kTileSize (or pass their own `tile`) and
+// return for texels outside the target, so any size dispatches.
 inline constexpr uint32_t kTileSize = 8;
 
-inline void dispatch_texels(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
-  vkCmdDispatch(cmd, (width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, 1);
-}
+// The pipeline of `shader` (a path under nodes/, see node_shaders.h) takes its bindings from
+// `writes`; the pass's name labels it in validation messages.
+void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
+                      uint32_t width, uint32_t height, std::span<const std::byte> push = {}, uint32_t tile = kTileSize);
 
 }  // namespace lg

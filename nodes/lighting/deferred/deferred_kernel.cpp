@@ -80,8 +80,6 @@ class DeferredKernel final : public NodeKernel {
     const int caster = shadow_caster(scene);
     shadow_drawn_ = false;
     Constants c{};
-    const Image& color = ctx.image("out.color");
-    c.camera = camera_constants(scene.camera, color.desc().width, color.desc().height);
     if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
     constants_ = c;
 
@@ -180,8 +178,9 @@ class DeferredKernel final : public NodeKernel {
   void record_direct(PassContext& ctx) {
     prepare(ctx);
     if (!shadow_drawn_) constants_.shadow = glm::vec4(0.0f);
-    buffers_->constants.write_value(constants_);
     Image& color = ctx.image("out.color");
+    constants_.camera = camera_constants(ctx.scene().camera, color.desc().width, color.desc().height);
+    buffers_->constants.write_value(constants_);
     std::vector<DescriptorWrite> writes = {uniform_buffer(0, buffers_->constants.handle())};
     add_gbuffer(ctx, writes);
     // Without a shadow pass (no shadow-casting light) any depth image binds; shadow.y = 0 skips it.
@@ -190,7 +189,7 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(6, color.view()));
     writes.push_back(storage_buffer(7, buffers_->directional.handle()));
     writes.push_back(storage_buffer(8, buffers_->points.handle()));
-    dispatch(ctx, "direct", writes, color);
+    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width, color.desc().height);
   }
 
   void record_area(PassContext& ctx) {
@@ -202,17 +201,7 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_buffer(6, buffers_->spheres.handle()));
     writes.push_back(storage_buffer(7, buffers_->tubes.handle()));
     writes.push_back(storage_buffer(8, buffers_->rects.handle()));
-    dispatch(ctx, "area", writes, color);
-  }
-
-  void dispatch(PassContext& ctx, const std::string& shader, const std::vector<DescriptorWrite>& writes, const Image& target) {
-    ComputePipelineDesc desc;
-    desc.name = ctx.pass().name;
-    desc.shader = node_shader("nodes/lighting/deferred/shaders/" + shader + ".comp");
-    for (const DescriptorWrite& w : writes) desc.bindings.push_back({w.binding, w.type});
-    const Pipeline& pipeline = ctx.pipelines().compute(desc);
-    bind_pipeline(ctx.gpu(), ctx.cmd(), pipeline, writes);
-    dispatch_texels(ctx.cmd(), target.desc().width, target.desc().height);
+    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height);
   }
 
   struct ShadowPush {

@@ -5,10 +5,7 @@
 
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
-#include "nodes/common/node_shaders.h"
-#include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/image.h"
-#include "runtime/gpu/pipeline.h"
 
 namespace lg {
 namespace {
@@ -35,12 +32,8 @@ class TonemapKernel final : public NodeKernel {
     Image& display = ctx.image("out.color");
     const DescriptorWrite writes[] = {sampled_image(0, ctx.image("in.color").view(), ctx.nearest_sampler()),
                                       storage_image(1, display.view())};
-    const Pipeline& pipeline = ctx.pipelines().compute(
-        {ctx.pass().name, node_shader("nodes/post/tonemap/shaders/tonemap.comp"),
-         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}, sizeof(Push)});
-    bind_pipeline(ctx.gpu(), ctx.cmd(), pipeline, writes);
-    push_constants(ctx.cmd(), pipeline, push_);
-    dispatch_texels(ctx.cmd(), display.desc().width, display.desc().height);
+    dispatch_compute(ctx, "nodes/post/tonemap/shaders/tonemap.comp", writes, display.desc().width,
+                     display.desc().height, std::as_bytes(std::span(&push_, 1)));
   }
 
  private:

@@ -1,0 +1,89 @@
+#include "api/renderer.h"
+
+#include "graph/graph_io.h"
+#include "nodes/builtin_kernels.h"
+#include "nodes/builtin_schemas.h"
+#include "runtime/exec/executor_error.h"
+#include "runtime/gpu/plan_resources.h"
+#include "runtime/scene/make_scene_view.h"
+
+namespace lg {
+
+Renderer::Renderer(const RendererOptions& options)
+    : options_(options),
+      context_(options.host ? std::make_unique<Context>(*options.host) : std::make_unique<Context>(options.device)) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::load_graph(const std::string& path) {
+  Diagnostics diagnostics(path);
+  std::optional<Graph> graph = load_graph_file(path, diagnostics);
+  if (!graph) throw GraphError(diagnostics.to_string());
+  set_graph(std::move(*graph));
+}
+
+void Renderer::set_graph(Graph graph) {
+  graph_ = std::move(graph);
+  graph_changed_ = true;
+}
+
+void Renderer::reload_graph() {
+  if (!graph_ || graph_->file.empty()) throw GraphError("no graph file was loaded, so there is nothing to reload");
+  load_graph(graph_->file);
+}
+
+void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
+  if (!graph_) throw GraphError("no graph loaded: call load_graph() before render()");
+  Diagnostics diagnostics(graph_->file);
+  CompileOptions options;
+  options.scene = summary;
+  options.frame = frame;
+  options.roots = options_.asset_roots;
+  options.alias = device_alias_options(*context_);
+  options.alias.enabled = options_.alias;
+  CompileResult result = compile(*graph_, builtin_registry(), options, diagnostics);
+  if (!result.plan) {
+    diagnostics.sort_by_position();
+    throw GraphError(diagnostics.to_string());
+  }
+  // The new executor is built before the old one goes, so a failure leaves the last good one.
+  auto executor = std::make_unique<Executor>(*context_, builtin_kernels(), std::move(*result.plan));
+  if (!gpu_scene_) gpu_scene_ = std::make_unique<GpuScene>(*context_, executor->submitter());
+  executor_ = std::move(executor);
+  summary_ = summary;
+  frame_ = frame;
+  graph_changed_ = false;
+}
+
+const FrameStats& Renderer::render(const World& world, FrameSize frame) {
+  SceneView view = make_scene_view(world, float(frame.width) / float(frame.height), has_view_ ? &view_ : nullptr);
+  const SceneSummary summary = view.summary();
+  if (!executor_ || graph_changed_ || !summary_ || !(*summary_ == summary) || !(frame_ == frame))
+    compile_for(summary, frame);
+  stats_ = executor_->run_frame(view, *gpu_scene_);
+  view_ = std::move(view);
+  has_view_ = true;
+  return stats_;
+}
+
+const Plan& Renderer::plan() const {
+  if (!executor_) throw ExecutorError("no frame has been rendered yet, so there is no plan");
+  return executor_->plan();
+}
+
+Executor& Renderer::executor() {
+  if (!executor_) throw ExecutorError("no frame has been rendered yet, so there is no executor");
+  return *executor_;
+}
+
+Image& Renderer::output_image(std::string_view name) { return executor().output_image(name); }
+
+VkImageLayout Renderer::output_layout(std::string_view name) {
+  return executor().layout(executor().output_resource(name));
+}
+
+std::vector<float> Renderer::read_output(std::string_view name) {
+  return executor().read_image(executor().output_resource(name));
+}
+
+}  // namespace lg

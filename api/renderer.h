@@ -1,0 +1,94 @@
+// The library API a game uses: load a graph file, render frames of a world into images the
+// host samples or presents. The Renderer compiles the graph against the world's scene summary
+// and the frame size, and compiles again only when either changes; static results (an
+// environment convolution, a lookup table) are cached across frames by the executor.
+//
+//   lg::Renderer renderer;                          // its own Vulkan device (or the host's)
+//   renderer.load_graph("graphs/deferred.json");    // throws GraphError with every error
+//   lg::World world = lg::load_world("level.json");
+//   for (;;) {
+//     renderer.render(world, {1920, 1080});         // one frame; returns its stats
+//     VkImage image = renderer.output_image().handle();  // in output_layout()
+//   }
+//
+// A failed load_graph() or reload_graph() keeps the last good graph running (hot reload).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "graph/asset_paths.h"
+#include "graph/compiler.h"
+#include "graph/graph.h"
+#include "runtime/exec/executor.h"
+#include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/context.h"
+#include "runtime/scene/scene_view.h"
+#include "runtime/scene/world.h"
+
+namespace lg {
+
+// Every error of a graph file (or of compiling it for a scene), one per line as
+// file:line:col: error: message (json pointer).
+class GraphError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RendererOptions {
+  ContextOptions device{};            // a device of its own: validation, device name
+  const HostDevice* host = nullptr;   // or the host engine's device, which it keeps owning
+  AssetRoots asset_roots{};           // where file paths in graphs may point
+  bool alias = true;                  // false: every transient resource keeps its own memory
+};
+
+class Renderer {
+ public:
+  explicit Renderer(const RendererOptions& options = {});
+  ~Renderer();
+
+  Context& context() { return *context_; }
+
+  void load_graph(const std::string& path);
+  // A graph already in memory (an editor's); `file` names it in messages and anchors paths.
+  void set_graph(Graph graph);
+  // Reads the last loaded file again; on errors throws and keeps the graph that ran before.
+  void reload_graph();
+
+  // Renders one frame; compiles first when the graph, the world's scene summary or the frame
+  // size changed since the last frame. Throws GraphError when the graph does not compile for
+  // this scene, ExecutorError or GpuError when the frame fails.
+  const FrameStats& render(const World& world, FrameSize frame);
+
+  // Valid after the first render().
+  const Plan& plan() const;
+  Executor& executor();
+  const SceneView& scene_view() const { return view_; }
+  // What output node `name` ("main" unless the graph names it otherwise) shows, in its layout.
+  Image& output_image(std::string_view name = "main");
+  VkImageLayout output_layout(std::string_view name = "main");
+  std::vector<float> read_output(std::string_view name = "main");  // float RGBA, rows top down
+
+ private:
+  void compile_for(const SceneSummary& summary, FrameSize frame);
+
+  RendererOptions options_;
+  std::unique_ptr<Context> context_;
+  std::optional<Graph> graph_;
+  bool graph_changed_ = false;
+  std::optional<SceneSummary> summary_;
+  FrameSize frame_{};
+  SceneView view_;
+  bool has_view_ = false;
+  std::unique_ptr<GpuScene> gpu_scene_;
+  std::unique_ptr<Executor> executor_;
+  FrameStats stats_;
+};
+
+}  // namespace lg

@@ -1,0 +1,21 @@
+#include "nodes/common/compute.h"
+
+#include "nodes/common/node_shaders.h"
+#include "runtime/gpu/pipeline.h"
+
+namespace lg {
+
+void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
+                      uint32_t width, uint32_t height, std::span<const std::byte> push, uint32_t tile) {
+  ComputePipelineDesc desc;
+  desc.name = ctx.pass().name;
+  desc.shader = node_shader(shader);
+  for (const DescriptorWrite& w : writes) desc.bindings.push_back({w.binding, w.type});
+  desc.push_constant_bytes = static_cast<uint32_t>(push.size());
+  const Pipeline& pipeline = ctx.pipelines().compute(desc);
+  bind_pipeline(ctx.gpu(), ctx.cmd(), pipeline, writes);
+  if (!push.empty()) push_constants(ctx.cmd(), pipeline, push.data(), desc.push_constant_bytes);
+  vkCmdDispatch(ctx.cmd(), (width + tile - 1) / tile, (height + tile - 1) / tile, 1);
+}
+
+}  // namespace lg

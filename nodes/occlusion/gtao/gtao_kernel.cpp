@@ -1,0 +1,129 @@
+#include "nodes/occlusion/gtao/gtao_kernel.h"
+
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+struct Constants {  // nodes/occlusion/gtao/shaders/gtao_constants.glsl
+  glm::mat4 view_from_world, world_from_view;
+  glm::vec4 unproject, viewport, search;
+  uint32_t counts[4];
+  glm::vec4 blend;
+};
+
+struct Quality {
+  uint32_t slices, steps;  // steps per side of each slice
+};
+
+Quality quality_preset(const std::string& name) {
+  if (name == "low") return {1, 2};
+  if (name == "medium") return {2, 2};
+  if (name == "high") return {3, 3};
+  if (name == "ultra") return {9, 3};
+  throw std::logic_error("occlusion.gtao has no quality '" + name + "'");
+}
+
+class GtaoKernel final : public NodeKernel {
+ public:
+  explicit GtaoKernel(const PlanNode& node)
+      : quality_(quality_preset(param_string(node, "quality"))),
+        radius_(float(param_number(node, "radius"))),
+        thickness_(float(param_number(node, "thickness"))),
+        temporal_blend_(float(param_number(node, "temporal_blend"))) {}
+
+  void record(PassContext& ctx) override {
+    const std::string& pass = ctx.pass().pass;
+    if (pass == "prefilter") prefilter(ctx);
+    else if (pass == "horizons") horizons(ctx);
+    else if (pass == "denoise") denoise(ctx);
+    else throw std::logic_error("occlusion.gtao has no pass '" + pass + "'");
+  }
+
+ private:
+  // Once a frame, by its first pass; `target` has the G-buffer's extent.
+  void write_constants(PassContext& ctx, const Image& target) {
+    if (written_frame_ == ctx.frame_index() && constants_) return;
+    written_frame_ = ctx.frame_index();
+    if (!constants_) constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    const CameraView& camera = ctx.scene().camera;
+    const float w = float(target.desc().width), h = float(target.desc().height);
+    const glm::mat4& p = camera.projection;
+    Constants c{};
+    c.view_from_world = camera.view;
+    c.world_from_view = glm::inverse(camera.view);
+    c.unproject = glm::vec4(1.0f / p[0][0], 1.0f / p[1][1], p[2][0], p[2][1]);
+    c.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
+    // Thin surfaces seen edge-on occlude less: depth differences count up to twice in the
+    // falloff, the more so the thinner surfaces are assumed against the radius.
+    const float stretch = 1.0f + std::min(1.0f, radius_ / (4.0f * std::max(thickness_, 1e-4f)));
+    c.search = glm::vec4(radius_, 0.5f * h * std::abs(p[1][1]), stretch, 0.25f * std::max(w, h));
+    c.counts[0] = quality_.slices;
+    c.counts[1] = quality_.steps;
+    c.counts[2] = uint32_t(ctx.frame_index());
+    // The executor clears history before the first frame: that would read as full occlusion.
+    c.counts[3] = ctx.frame_index() > 0 && ctx.has("in.history") ? 1u : 0u;
+    c.blend = glm::vec4(temporal_blend_, camera.near_plane, 0.0f, 0.0f);
+    constants_->write_value(c);
+  }
+
+  void prefilter(PassContext& ctx) {
+    Image& mips = ctx.image("tmp.depth_mips");
+    write_constants(ctx, mips);
+    std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle()),
+                                           sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler())};
+    // A small image has fewer mips than the shader writes: the extra levels go to the last one.
+    for (uint32_t level = 0; level < 5; ++level) {
+      const uint32_t mip = std::min(level, mips.desc().mips - 1);
+      writes.push_back(storage_image(2 + level, mips.view({.base_mip = mip, .mip_count = 1})));
+    }
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/prefilter.comp", writes, mips.desc().width, mips.desc().height, {}, 16);
+  }
+
+  void horizons(PassContext& ctx) {
+    Image& noisy = ctx.image("tmp.noisy");
+    write_constants(ctx, noisy);
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, ctx.image("tmp.depth_mips").view(), ctx.linear_sampler()),
+         sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()), storage_image(3, noisy.view()),
+         storage_image(4, ctx.image("tmp.edges").view()), storage_image(5, ctx.image("out.bent_normals").view())};
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height);
+  }
+
+  void denoise(PassContext& ctx) {
+    Image& ao = ctx.image("out.ao");
+    write_constants(ctx, ao);
+    Image& noisy = ctx.image("tmp.noisy");
+    Image& history = ctx.has("in.history") ? ctx.image("in.history") : noisy;
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, noisy.view(), ctx.nearest_sampler()),
+         sampled_image(2, ctx.image("tmp.edges").view(), ctx.nearest_sampler()),
+         sampled_image(3, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
+         sampled_image(4, history.view(), ctx.linear_sampler()), storage_image(5, ao.view())};
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/denoise.comp", writes, ao.desc().width, ao.desc().height);
+  }
+
+  Quality quality_;
+  float radius_, thickness_, temporal_blend_;
+  std::optional<HostBuffer> constants_;
+  uint64_t written_frame_ = ~uint64_t{0};
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_gtao_kernel(const PlanNode& node) {
+  return std::make_unique<GtaoKernel>(node);
+}
+
+}  // namespace lg

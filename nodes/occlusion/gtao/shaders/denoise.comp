@@ -1,0 +1,52 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// A depth-aware 3x3 blur of the raw occlusion (weights from the packed edges, so occlusion
+// does not bleed across silhouettes), then temporal accumulation: last frame's result is
+// fetched where the motion vector says this surface was, clamped to this frame's neighbourhood
+// (history rejection: a disoccluded or changed pixel cannot keep stale values) and blended.
+#include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 1) uniform sampler2D noisy;
+layout(binding = 2) uniform sampler2D edges;
+layout(binding = 3) uniform sampler2D motion;
+layout(binding = 4) uniform sampler2D history;  // bilinear; bound to `noisy` when absent
+layout(binding = 5, r8) uniform writeonly image2D ao;
+
+vec4 unpack_edges(float packed) {
+  uint bits = uint(round(packed * 255.0));
+  return vec4((bits >> 6) & 3u, (bits >> 4) & 3u, (bits >> 2) & 3u, bits & 3u) / 3.0;
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(ao);
+  if (any(greaterThanEqual(texel, size))) return;
+  vec4 e = unpack_edges(texelFetch(edges, texel, 0).r);  // left, right, top, bottom
+  float sum = 0.0, weight = 0.0, lo = 1.0, hi = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      float wx = x < 0 ? e.x : x > 0 ? e.y : 1.0;
+      float wy = y < 0 ? e.z : y > 0 ? e.w : 1.0;
+      float w = wx * wy * (x == 0 && y == 0 ? 1.5 : 1.0);
+      float v = texelFetch(noisy, clamp(texel + ivec2(x, y), ivec2(0), size - 1), 0).r;
+      sum += w * v;
+      weight += w;
+      if (w > 0.0) {
+        lo = min(lo, v);
+        hi = max(hi, v);
+      }
+    }
+  float current = sum / weight;
+  float result = current;
+  if (counts.w != 0u && blend.x > 0.0) {
+    vec2 uv = (vec2(texel) + 0.5) * viewport.zw;
+    vec2 previous_uv = uv - texelFetch(motion, texel, 0).rg;
+    if (all(greaterThanEqual(previous_uv, vec2(0.0))) && all(lessThanEqual(previous_uv, vec2(1.0)))) {
+      float past = clamp(textureLod(history, previous_uv, 0.0).r, lo, hi);
+      result = mix(current, past, blend.x);
+    }
+  }
+  imageStore(ao, texel, vec4(result));
+}

@@ -1,0 +1,140 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Ground-truth ambient occlusion (Jimenez et al. 2016, as structured by Intel's XeGTAO): per
+// pixel, a few slices through the view vector; in each the two horizons are found by marching
+// the depth buffer, and the cosine-weighted visible arc between them is integrated in closed
+// form with the normal projected into the slice. An open plane gives exactly 1. The same
+// integral, weighted by direction, gives the bent normal; the visibility gives its cone.
+#include "nodes/common/shaders/gbuffer.glsl"
+#include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 1) uniform sampler2D depth_mips;  // device depth, averaged mips, bilinear
+layout(binding = 2) uniform sampler2D gbuffer_normal;
+layout(binding = 3, r8) uniform writeonly image2D noisy;
+layout(binding = 4, r8) uniform writeonly image2D edges;
+layout(binding = 5, rgba8_snorm) uniform writeonly image2D bent_normals;
+
+const float PI = 3.14159265358979;
+const float HALF_PI = 1.57079632679490;
+
+// Interleaved gradient noise (Jimenez 2014), moved every frame so temporal accumulation sees
+// new slice angles and step offsets.
+float noise(vec2 pixel, uint frame) {
+  pixel += 5.588238 * float(frame % 64u);
+  return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+float fast_acos(float x) {
+  return acos(clamp(x, -1.0, 1.0));
+}
+
+vec3 sample_position(vec2 uv, float mip) {
+  return view_position(uv, linear_depth(textureLod(depth_mips, uv, mip).r));
+}
+
+// Four depth-edge weights (left, right, top, bottom) in 2 bits each: 1 where the neighbour's
+// depth continues this pixel's plane, 0 across a discontinuity (for the denoiser).
+float pack_edges(ivec2 texel, float z) {
+  ivec2 size = textureSize(depth_mips, 0);
+  float l = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(-1, 0), ivec2(0), size - 1), 0).r);
+  float r = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(1, 0), ivec2(0), size - 1), 0).r);
+  float t = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(0, -1), ivec2(0), size - 1), 0).r);
+  float b = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(0, 1), ivec2(0), size - 1), 0).r);
+  vec4 delta = vec4(l, r, t, b) - z;
+  // Compare against the mirrored neighbour so slopes are not edges.
+  vec4 slope = delta + delta.yxwz;
+  vec4 w = clamp(1.25 - abs(slope) / (0.011 * z + 1e-4), 0.0, 1.0);
+  vec4 q = round(w * 3.0);
+  return dot(q, vec4(64.0, 16.0, 4.0, 1.0)) / 255.0;
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(noisy);
+  if (any(greaterThanEqual(texel, size))) return;
+  vec2 uv = (vec2(texel) + 0.5) * viewport.zw;
+  float z = linear_depth(texelFetch(depth_mips, texel, 0).r);
+  if (!(z < 1e7)) {  // no surface: nothing occludes the sky
+    imageStore(noisy, texel, vec4(1.0));
+    imageStore(edges, texel, vec4(1.0));
+    imageStore(bent_normals, texel, vec4(0.0, 0.0, 0.0, 0.0));
+    return;
+  }
+  vec3 p = view_position(uv, z);
+  vec3 view_vec = normalize(-p);
+  vec3 world_n = decode_normal(texelFetch(gbuffer_normal, texel, 0).rgb);
+  vec3 normal = normalize(mat3(view_from_world) * world_n);
+
+  uint slices = counts.x, steps = counts.y;
+  float radius = search.x;
+  float screen_radius = min(radius * search.y / z, search.w);  // pixels
+  float falloff_from = 0.62 * radius;  // samples fade out between 62% and 100% of the radius
+  float falloff_mul = -1.0 / (radius - falloff_from);
+  float falloff_add = -falloff_from * falloff_mul;
+  float slice_noise = noise(vec2(texel), counts.z);
+  float step_noise = noise(vec2(texel) + vec2(17.0, 31.0), counts.z);
+
+  float visibility = 0.0;
+  vec3 bent = vec3(0.0);
+  for (uint slice = 0u; slice < slices; ++slice) {
+    float phi = (float(slice) + slice_noise) / float(slices) * PI;
+    vec2 omega = vec2(cos(phi), sin(phi));
+    // Screen y grows downward while view y grows upward.
+    vec3 direction = vec3(omega.x, -omega.y, 0.0);
+    vec3 ortho_direction = direction - dot(direction, view_vec) * view_vec;
+    vec3 axis = normalize(cross(ortho_direction, view_vec));
+    vec3 projected_normal = normal - axis * dot(normal, axis);
+    float projected_length = length(projected_normal);
+    if (projected_length < 1e-5) continue;
+    float sign_n = sign(dot(ortho_direction, projected_normal));
+    float cos_n = clamp(dot(projected_normal, view_vec) / projected_length, 0.0, 1.0);
+    float n = sign_n * fast_acos(cos_n);
+    float low0 = cos(n + HALF_PI), low1 = cos(n - HALF_PI);
+    float horizon0 = low0, horizon1 = low1;
+    for (uint s = 0u; s < steps; ++s) {
+      float t = (float(s) + step_noise) / float(steps);
+      t = t * t;  // more samples near the centre, where occluders matter most
+      vec2 offset = omega * (t * screen_radius) * viewport.zw;
+      float offset_px = t * screen_radius;
+      float mip = clamp(log2(max(offset_px, 1.0)) - 3.3, 0.0, 4.0);
+      for (int side = 0; side < 2; ++side) {
+        vec2 suv = side == 0 ? uv + offset : uv - offset;
+        if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) continue;
+        vec3 delta = sample_position(suv, mip) - p;
+        float dist = length(delta);
+        if (!(dist > 1e-6)) continue;
+        float shc = dot(delta / dist, view_vec);
+        // Thin occluders: depth differences count more in the falloff (search.z >= 1).
+        float falloff_dist = length(vec3(delta.xy, delta.z * search.z));
+        float weight = clamp(falloff_dist * falloff_mul + falloff_add, 0.0, 1.0);
+        if (side == 0) horizon0 = max(horizon0, mix(low0, shc, weight));
+        else horizon1 = max(horizon1, mix(low1, shc, weight));
+      }
+    }
+    // Horizon angles measured from the view vector, clamped to the hemisphere of the normal.
+    float h0 = -fast_acos(horizon1);
+    float h1 = fast_acos(horizon0);
+    h0 = n + max(h0 - n, -HALF_PI);
+    h1 = n + min(h1 - n, HALF_PI);
+    float sin_n = sin(n);
+    float arc0 = (cos_n + 2.0 * h0 * sin_n - cos(2.0 * h0 - n)) / 4.0;
+    float arc1 = (cos_n + 2.0 * h1 * sin_n - cos(2.0 * h1 - n)) / 4.0;
+    visibility += projected_length * (arc0 + arc1);
+    // The visible arc's direction-weighted integral (XeGTAO's bent normal) in the slice's own
+    // basis: t0 along the marching direction, t1 toward the eye.
+    float t0 = (6.0 * sin(h0 - n) - sin(3.0 * h0 - n) + 6.0 * sin(h1 - n) - sin(3.0 * h1 - n) + 16.0 * sin_n -
+                3.0 * (sin(h0 + n) + sin(h1 + n))) / 12.0;
+    float t1 = (-cos(3.0 * h0 - n) - cos(3.0 * h1 - n) + 8.0 * cos(n) - 3.0 * (cos(h0 + n) + cos(h1 + n))) / 12.0;
+    bent += (normalize(ortho_direction) * t0 + view_vec * t1) * projected_length;
+  }
+  visibility = slices > 0u ? clamp(visibility / float(slices), 0.0, 1.0) : 1.0;
+  float bent_length = length(bent);
+  vec3 world_bent = bent_length > 1e-6 ? normalize(mat3(world_from_view) * (bent / bent_length)) : world_n;
+  // A cosine-weighted visible cone of half-angle a has visibility sin^2 a: its cosine is
+  // sqrt(1 - visibility).
+  imageStore(noisy, texel, vec4(visibility));
+  imageStore(edges, texel, vec4(pack_edges(texel, z)));
+  imageStore(bent_normals, texel, vec4(world_bent, sqrt(max(1.0 - visibility, 0.0))));
+}
