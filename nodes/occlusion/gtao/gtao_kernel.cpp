@@ -67,9 +67,9 @@ class GtaoKernel final : public NodeKernel {
     c.world_from_view = glm::inverse(camera.view);
     c.unproject = glm::vec4(1.0f / p[0][0], 1.0f / p[1][1], p[2][0], p[2][1]);
     c.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
-    // Thin surfaces seen edge-on occlude less: depth differences count up to twice in the
+    // Thin surfaces seen edge-on occlude less: depth differences count up to 1.5 times in the
     // falloff, the more so the thinner surfaces are assumed against the radius.
-    const float stretch = 1.0f + std::min(1.0f, radius_ / (4.0f * std::max(thickness_, 1e-4f)));
+    const float stretch = 1.0f + 0.5f * std::min(1.0f, radius_ / (4.0f * std::max(thickness_, 1e-4f)));
     c.search = glm::vec4(radius_, 0.5f * h * std::abs(p[1][1]), stretch, 0.25f * std::max(w, h));
     c.counts[0] = quality_.slices;
     c.counts[1] = quality_.steps;

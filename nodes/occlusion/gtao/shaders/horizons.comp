@@ -30,8 +30,16 @@ float fast_acos(float x) {
   return acos(clamp(x, -1.0, 1.0));
 }
 
-vec3 sample_position(vec2 uv, float mip) {
-  return view_position(uv, linear_depth(textureLod(depth_mips, uv, mip).r));
+// Mip k's texel i averages mip-0 texels [2^k i, 2^k (i + 1)): where a level is not exactly
+// half the one above (odd sizes), its texels do not tile the image as uv assumes, so uv is
+// rescaled to hit block centres, keeping bilinear taps exact on planes; the last rows or
+// columns that no whole block covers read a finer level.
+vec3 sample_position(vec2 uv, int mip) {
+  vec2 full = vec2(textureSize(depth_mips, 0));
+  vec2 pixel = uv * full;
+  while (mip > 0 && any(greaterThanEqual(pixel, vec2(textureSize(depth_mips, mip) << mip) - 0.5 * float(1 << mip)))) --mip;
+  vec2 tap = pixel / vec2(textureSize(depth_mips, mip) << mip);
+  return view_position(uv, linear_depth(textureLod(depth_mips, tap, float(mip)).r));
 }
 
 // Four depth-edge weights (left, right, top, bottom) in 2 bits each: 1 where the neighbour's
@@ -98,7 +106,7 @@ void main() {
       t = t * t;  // more samples near the centre, where occluders matter most
       vec2 offset = omega * (t * screen_radius) * viewport.zw;
       float offset_px = t * screen_radius;
-      float mip = clamp(log2(max(offset_px, 1.0)) - 3.3, 0.0, 4.0);
+      int mip = int(clamp(log2(max(offset_px, 1.0)) - 3.3, 0.0, float(textureQueryLevels(depth_mips) - 1)));
       for (int side = 0; side < 2; ++side) {
         vec2 suv = side == 0 ? uv + offset : uv - offset;
         if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) continue;
