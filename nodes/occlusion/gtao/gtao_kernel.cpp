@@ -96,7 +96,7 @@ class GtaoKernel final : public NodeKernel {
   void horizons(PassContext& ctx) {
     Image& noisy = ctx.image("tmp.noisy");
     write_constants(ctx, noisy);
-    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, ctx.image("tmp.depth_mips").view(), ctx.linear_sampler()),
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, ctx.image("tmp.depth_mips").view(), ctx.nearest_sampler()),
          sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()), storage_image(3, noisy.view()),
          storage_image(4, ctx.image("tmp.edges").view()), storage_image(5, ctx.image("out.bent_normals").view())};
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height);

@@ -10,7 +10,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 1) uniform sampler2D depth_mips;  // device depth, averaged mips, bilinear
+layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
 layout(binding = 2) uniform sampler2D gbuffer_normal;
 layout(binding = 3, r8) uniform writeonly image2D noisy;
 layout(binding = 4, r8) uniform writeonly image2D edges;
@@ -30,16 +30,16 @@ float fast_acos(float x) {
   return acos(clamp(x, -1.0, 1.0));
 }
 
-// Mip k's texel i averages mip-0 texels [2^k i, 2^k (i + 1)): where a level is not exactly
-// half the one above (odd sizes), its texels do not tile the image as uv assumes, so uv is
-// rescaled to hit block centres, keeping bilinear taps exact on planes; the last rows or
-// columns that no whole block covers read a finer level.
+// Mip k's texel i averages mip-0 texels [2^k i, 2^k (i + 1)), which on a plane is the plane's
+// depth at the block's centre (device depth is affine across the screen on planes). So a sample
+// reads the texel of its level that holds it and stands at that texel's centre: a point on the
+// surface, never one lifted off a flat floor by filtering or by a level that does not tile the
+// image exactly (odd sizes).
 vec3 sample_position(vec2 uv, int mip) {
-  vec2 full = vec2(textureSize(depth_mips, 0));
-  vec2 pixel = uv * full;
-  while (mip > 0 && any(greaterThanEqual(pixel, vec2(textureSize(depth_mips, mip) << mip) - 0.5 * float(1 << mip)))) --mip;
-  vec2 tap = pixel / vec2(textureSize(depth_mips, mip) << mip);
-  return view_position(uv, linear_depth(textureLod(depth_mips, tap, float(mip)).r));
+  ivec2 level = textureSize(depth_mips, mip);
+  ivec2 t = clamp(ivec2(uv * vec2(textureSize(depth_mips, 0)) / float(1 << mip)), ivec2(0), level - 1);
+  vec2 centre = (vec2(t) + 0.5) * float(1 << mip) / vec2(textureSize(depth_mips, 0));
+  return view_position(centre, linear_depth(texelFetch(depth_mips, t, mip).r));
 }
 
 // Four depth-edge weights (left, right, top, bottom) in 2 bits each: 1 where the neighbour's
