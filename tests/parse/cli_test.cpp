@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "graph/json_reader.h"
-#include "parse_test_support.h"
+#include "tests/parse/cli_runner.h"
+#include "tests/parse/parse_test_support.h"
 
 namespace lg {
 namespace {
@@ -20,31 +21,8 @@ namespace fs = std::filesystem;
 using parse_test::read_text;
 using parse_test::TempDir;
 using parse_test::write_text;
-
-struct Outcome {
-  int status = -1;  // the exit status, or -1 when the process did not exit normally
-  std::string out, err;
-};
-
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-// Runs `lumagraph ARGS...` from the source root (where ctest runs the tests).
-Outcome lumagraph(const std::vector<std::string>& args) {
-  TempDir dir;
-  std::string command = shell_quote(LUMAGRAPH_BINARY_DIR "/lumagraph");
-  for (const auto& a : args) command += " " + shell_quote(a);
-  command += " >" + shell_quote(dir.file("out")) + " 2>" + shell_quote(dir.file("err")) + " </dev/null";
-  int raw = std::system(command.c_str());
-  Outcome r;
-  if (raw != -1 && WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
-  r.out = read_text(dir.file("out"));
-  r.err = read_text(dir.file("err"));
-  return r;
-}
+using parse_test::lumagraph;
+using parse_test::Outcome;
 
 std::optional<JsonValue> json_of(const std::string& text, std::string* errors) {
   Diagnostics d;

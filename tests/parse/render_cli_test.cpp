@@ -1,0 +1,86 @@
+// `lumagraph render` run as a process: it writes the image, the stats and the dump it is asked
+// for with zero validation messages, and broken input — a corrupt or missing scene, a broken
+// graph, a node without a kernel, bad options — ends in an exit status and a message that
+// names the file or the node, never a crash.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "graph/json_reader.h"
+#include "runtime/image/image_file.h"
+#include "tests/parse/cli_runner.h"
+
+namespace lg {
+namespace {
+
+namespace fs = std::filesystem;
+using parse_test::lumagraph;
+using parse_test::Outcome;
+using parse_test::read_text;
+using parse_test::TempDir;
+using parse_test::write_text;
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+TEST(RenderCli, WritesImageStatsAndDump) {
+  TempDir dir;
+  Outcome r = lumagraph({"render", "examples/minimal.json", "--size", "160x90", "--out", dir.file("frame.png"),
+                         "--stats", dir.file("stats.json"), "--dump", dir.file("dump"), "--validate"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "light/area")) << "the per-pass GPU times are printed:\n" << r.out;
+  ImageData image = load_image(dir.file("frame.png"));
+  EXPECT_EQ(image.width, 160u);
+  EXPECT_EQ(image.height, 90u);
+  Diagnostics d;
+  std::optional<JsonValue> stats = read_json(read_text(dir.file("stats.json")), d);
+  ASSERT_TRUE(stats) << d.to_string();
+  ASSERT_TRUE(stats->find("passes"));
+  EXPECT_EQ(stats->find("passes")->size(), 5u);
+  for (const char* port : {"gbuf.gbuffer.normal.exr", "gbuf.gbuffer.depth.exr", "light.color.exr", "tonemap.color.exr"})
+    EXPECT_TRUE(fs::exists(dir.path() / "dump" / port)) << port;
+}
+
+TEST(RenderCli, CorruptSceneNamesTheFile) {
+  TempDir dir;
+  write_text(dir.file("broken.gltf"), "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { \"primitives\": [ { \"attributes\": { \"POSITION\": 7 } } ] } ] ");
+  write_text(dir.file("broken.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+  for (const char* name : {"broken.gltf", "broken.obj", "missing.json"}) {
+    Outcome r = lumagraph({"render", "examples/minimal.json", "--scene", dir.file(name), "--out", dir.file("x.png")});
+    EXPECT_EQ(r.status, 2) << name << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, name)) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+  }
+}
+
+TEST(RenderCli, BrokenGraphGetsLocatedErrors) {
+  TempDir dir;
+  write_text(dir.file("g.json"), "{ \"format\": \"lumagraph/1\", \"nodes\": [ { \"id\": \"a\", \"type\": \"scene.gbufer\" } ], \"links\": [] }");
+  Outcome r = lumagraph({"render", dir.file("g.json"), "--out", dir.file("x.png")});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(contains(r.err, "g.json:1:")) << r.err;
+  EXPECT_TRUE(contains(r.err, "did you mean 'scene.gbuffer'")) << r.err;
+}
+
+TEST(RenderCli, NodeWithoutKernelIsNamed) {
+  TempDir dir;
+  write_text(dir.file("g.json"), R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" },
+      { "id": "glow", "type": "post.bloom", "params": { "intensity": 0.5 } }, { "id": "out", "type": "output.display" } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" }, { "from": "light.color", "to": "glow.color" },
+               { "from": "glow.color", "to": "out.color" } ] })");
+  Outcome r = lumagraph({"render", dir.file("g.json"), "--out", dir.file("x.png")});
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_TRUE(contains(r.err, "node 'glow' (post.bloom) has no kernel")) << r.err;
+}
+
+TEST(RenderCli, BadOptionsAreUsageErrors) {
+  for (std::vector<std::string> args : {std::vector<std::string>{"render", "--frames", "0"},
+                                        {"render", "--size", "12x"}, {"render", "--colour"}, {"render", "a.json", "b.json"}}) {
+    Outcome r = lumagraph(args);
+    EXPECT_EQ(r.status, 1) << args[1] << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "lumagraph render:")) << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace lg
