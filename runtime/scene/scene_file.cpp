@@ -10,7 +10,6 @@
 #include <optional>
 
 #include "graph/json_reader.h"
-#include "graph/limits.h"
 #include "graph/spelling.h"
 #include "runtime/scene/json_fields.h"
 #include "runtime/scene/mesh_generators.h"

@@ -189,6 +189,21 @@ TEST(SceneFile, ConflictsAndDuplicates) {
   EXPECT_EQ(errors, expected);
 }
 
+TEST(SceneFile, EnvironmentPaths) {
+  std::vector<std::string> errors = errors_of(R"({"format": "lumagraph-world/1", "entities": [],
+    "environment": {"path": "cube.obj", "intensity": -1}})");
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_EQ(errors[0], "2:29: error: 'cube.obj' has the extension '.obj'; expected one of .hdr, .exr (/environment/path)");
+  EXPECT_EQ(errors[1], "2:54: error: 'intensity' must be a number from 0 to 1e+09, found -1 (/environment/intensity)");
+  fs::path shared = fs::path(LUMAGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "env";
+  if (!fs::exists(shared / "grace.hdr")) GTEST_SKIP() << "no " << shared << " (../shared/data is absent)";
+  std::string model = fs::relative(shared / "grace.hdr", data_dir()).string();
+  World w = parse_scene_file(R"({"format": "lumagraph-world/1", "entities": [], "environment": {"path": ")" + model + R"("}})",
+                             fake_path(), AssetRoots{{shared.string()}});
+  SceneView v = make_scene_view(w, 1.0f);
+  EXPECT_EQ(v.environment.path, fs::canonical(shared / "grace.hdr").string());
+}
+
 TEST(SceneFile, StructuralErrors) {
   EXPECT_EQ(errors_of("[]"), std::vector<std::string>{"1:1: error: expected a scene file as an object, found an array"});
   EXPECT_EQ(errors_of(R"({"format": "lumagraph-world/2", "entities": []})"),
