@@ -113,6 +113,8 @@ struct BrokenGltf {
   const char* message;  // a part of the error
 };
 
+void PrintTo(const BrokenGltf& c, std::ostream* out) { *out << c.name; }
+
 class GltfBroken : public testing::TestWithParam<BrokenGltf> {};
 
 TEST_P(GltfBroken, GivesAClearError) {

@@ -204,6 +204,16 @@ TEST(SceneFile, EnvironmentPaths) {
   EXPECT_EQ(v.environment.path, fs::canonical(shared / "grace.hdr").string());
 }
 
+TEST(SceneFile, MissingFile) {
+  std::string path = data_dir() + "/nothing.json";
+  try {
+    load_world(path);
+    FAIL() << "loaded a missing file";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": error: cannot open the file: No such file or directory");
+  }
+}
+
 TEST(SceneFile, StructuralErrors) {
   EXPECT_EQ(errors_of("[]"), std::vector<std::string>{"1:1: error: expected a scene file as an object, found an array"});
   EXPECT_EQ(errors_of(R"({"format": "lumagraph-world/2", "entities": []})"),
