@@ -92,8 +92,9 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
             auto p = static_cast<size_t>(ix.vertex_index) * 3;
             b.mesh.positions.emplace_back(attrib.vertices[p], attrib.vertices[p + 1], attrib.vertices[p + 2]);
             auto n = static_cast<size_t>(std::max(ix.normal_index, 0)) * 3;
-            b.mesh.normals.push_back(ix.normal_index >= 0 ? glm::vec3(attrib.normals[n], attrib.normals[n + 1], attrib.normals[n + 2])
-                                                          : glm::vec3(0.0f));
+            b.mesh.normals.push_back(ix.normal_index >= 0
+                                         ? glm::vec3(attrib.normals[n], attrib.normals[n + 1], attrib.normals[n + 2])
+                                         : glm::vec3(0.0f));
             auto t = static_cast<size_t>(std::max(ix.texcoord_index, 0)) * 2;
             b.mesh.uvs.push_back(ix.texcoord_index >= 0 ? glm::vec2(attrib.texcoords[t], 1.0f - attrib.texcoords[t + 1])
                                                         : glm::vec2(0.0f));
@@ -102,7 +103,9 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
         }
       }
       for (auto& [material, b] : by_material) {
-        b.mesh.name = shape_name + (by_material.size() > 1 && material >= 0 ? "/" + reader.GetMaterials()[static_cast<size_t>(material)].name : "");
+        b.mesh.name = shape_name + (by_material.size() > 1 && material >= 0
+                                        ? "/" + reader.GetMaterials()[static_cast<size_t>(material)].name
+                                        : "");
         if (!b.every_corner_has_uv) b.mesh.uvs.clear();
         if (std::string problem = mesh_problem(b.mesh); !problem.empty())
           throw std::out_of_range("object '" + shape_name + "': " + problem);
@@ -113,7 +116,8 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
         }
         Entity e = world.create(b.mesh.name);
         world.add<Transform>(e, {glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f), parent});
-        world.add<MeshRenderer>(e, {world.add_mesh(std::move(b.mesh)), material >= 0 ? materials[static_cast<size_t>(material)] : -1});
+        world.add<MeshRenderer>(
+            e, {world.add_mesh(std::move(b.mesh)), material >= 0 ? materials[static_cast<size_t>(material)] : -1});
         made.push_back(e);
       }
     }
