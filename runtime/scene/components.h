@@ -70,7 +70,7 @@ struct TubeLight {
 
 struct RectLight {
   glm::vec3 color{1.0f};
-  float intensity = 1.0f;  // radiance, W/(m^2 sr)
+  float intensity = 1.0f;             // radiance, W/(m^2 sr)
   float width = 1.0f, height = 1.0f;  // along local X and Y
   bool two_sided = false;
 };

@@ -24,9 +24,12 @@ struct Malformed {
   std::string message;
 };
 
-[[noreturn]] void fail(std::string message) { throw Malformed{std::move(message)}; }
+[[noreturn]] void fail(std::string message) {
+  throw Malformed{std::move(message)};
+}
 
-template <class T> const T& item(const std::vector<T>& items, int index, const std::string& what) {
+template <class T>
+const T& item(const std::vector<T>& items, int index, const std::string& what) {
   if (index < 0 || static_cast<size_t>(index) >= items.size())
     fail(what + " " + std::to_string(index) + " does not exist (the file has " + std::to_string(items.size()) + ")");
   return items[static_cast<size_t>(index)];
@@ -42,11 +45,25 @@ struct ElementRange {
   double component(size_t element, int c) const {
     const unsigned char* p = data + element * stride;
     switch (component_type) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p + 4 * c, 4); return v; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalize(p[c], 255.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * c, 2); return normalize(v, 65535.0); }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * c, 4); return v; }
-      default: fail("unsupported component type " + std::to_string(component_type));
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float v;
+        std::memcpy(&v, p + 4 * c, 4);
+        return v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return normalize(p[c], 255.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t v;
+        std::memcpy(&v, p + 2 * c, 2);
+        return normalize(v, 65535.0);
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        uint32_t v;
+        std::memcpy(&v, p + 4 * c, 4);
+        return v;
+      }
+      default:
+        fail("unsupported component type " + std::to_string(component_type));
     }
   }
   double normalize(double v, double max) const { return normalized ? v / max : v; }
@@ -73,9 +90,15 @@ ElementRange elements(const tinygltf::Model& model, int index, const std::string
   // Written so that no product can overflow: count is bounded by the view's length first.
   bool fits = a.byteOffset <= view.byteLength && a.count <= view.byteLength &&
               (a.count == 0 || (a.count - 1) * stride + element_size <= view.byteLength - a.byteOffset);
-  if (!fits) fail(name + ": " + std::to_string(a.count) + " elements run past the end of buffer view " + std::to_string(a.bufferView));
-  return {buffer.data.data() + view.byteOffset + a.byteOffset, stride, a.count, a.componentType,
-          tinygltf::GetNumComponentsInType(a.type), a.normalized};
+  if (!fits)
+    fail(name + ": " + std::to_string(a.count) + " elements run past the end of buffer view " +
+         std::to_string(a.bufferView));
+  return {buffer.data.data() + view.byteOffset + a.byteOffset,
+          stride,
+          a.count,
+          a.componentType,
+          tinygltf::GetNumComponentsInType(a.type),
+          a.normalized};
 }
 
 glm::vec3 vec3_or(const std::vector<double>& v, glm::vec3 fallback) {
@@ -156,7 +179,8 @@ class GltfImporter {
       auto& primitives = meshes_[index];
       for (size_t p = 0; p < mesh.primitives.size(); ++p)
         if (mesh.primitives[p].mode == TINYGLTF_MODE_TRIANGLES)
-          primitives.push_back({world_.add_mesh(read_primitive(mesh, index, p)), material(mesh.primitives[p].material)});
+          primitives.push_back(
+              {world_.add_mesh(read_primitive(mesh, index, p)), material(mesh.primitives[p].material)});
     }
     const auto& primitives = meshes_[index];
     for (size_t p = 0; p < primitives.size(); ++p) {
@@ -186,7 +210,8 @@ class GltfImporter {
     for (size_t i = 0; i < positions.count; ++i)
       out.positions.emplace_back(positions.component(i, 0), positions.component(i, 1), positions.component(i, 2));
     if (attribute("NORMAL") >= 0) {
-      ElementRange n = elements(model_, attribute("NORMAL"), what + " NORMAL", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+      ElementRange n =
+          elements(model_, attribute("NORMAL"), what + " NORMAL", TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
       if (n.count != positions.count) fail(what + ": NORMAL and POSITION counts differ");
       for (size_t i = 0; i < n.count; ++i) {
         glm::vec3 v(n.component(i, 0), n.component(i, 1), n.component(i, 2));
@@ -224,7 +249,8 @@ class GltfImporter {
     PbrMaterial out;
     out.name = m.name.empty() ? stem_ + " material " + std::to_string(index) : m.name;
     if (pbr.baseColorFactor.size() == 4)
-      out.base_color = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+      out.base_color =
+          glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
     out.roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
     out.metalness = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
     out.emissive = vec3_or(m.emissiveFactor, glm::vec3(0.0f));
@@ -236,7 +262,8 @@ class GltfImporter {
     const auto& t = item(model_.textures, index, "texture");
     if (auto found = images_.find(t.source); found != images_.end()) return found->second;
     const auto& image = item(model_.images, t.source, "texture " + std::to_string(index) + ": image");
-    std::string what = "image " + std::to_string(t.source) + (image.uri.empty() ? "" : " ('" + image.uri.substr(0, 64) + "')");
+    std::string what =
+        "image " + std::to_string(t.source) + (image.uri.empty() ? "" : " ('" + image.uri.substr(0, 64) + "')");
     if (image.image.empty() || image.width <= 0 || image.height <= 0) fail(what + " could not be loaded");
     int channels = image.component, bytes = image.bits / 8;
     size_t texels = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
@@ -250,7 +277,10 @@ class GltfImporter {
     out.rgba8.resize(texels * 4);
     for (size_t i = 0; i < texels; ++i) {
       // 16-bit values are little-endian: the high byte is the second.
-      auto channel = [&](int c) { return image.image[(i * static_cast<size_t>(channels) + static_cast<size_t>(c)) * static_cast<size_t>(bytes) + static_cast<size_t>(bytes - 1)]; };
+      auto channel = [&](int c) {
+        return image.image[(i * static_cast<size_t>(channels) + static_cast<size_t>(c)) * static_cast<size_t>(bytes) +
+                           static_cast<size_t>(bytes - 1)];
+      };
       bool gray = channels < 3;
       for (int c = 0; c < 3; ++c) out.rgba8[i * 4 + static_cast<size_t>(c)] = channel(gray ? 0 : c);
       out.rgba8[i * 4 + 3] = channels == 2 ? channel(1) : channels == 4 ? channel(3) : 255;
@@ -262,7 +292,8 @@ class GltfImporter {
     const auto& c = item(model_.cameras, index, "camera");
     if (c.type != "perspective") return;
     Camera camera;
-    if (c.perspective.yfov > 0.0 && c.perspective.yfov < 3.1) camera.vertical_fov = static_cast<float>(c.perspective.yfov);
+    if (c.perspective.yfov > 0.0 && c.perspective.yfov < 3.1)
+      camera.vertical_fov = static_cast<float>(c.perspective.yfov);
     if (c.perspective.znear > 0.0) camera.near_plane = static_cast<float>(c.perspective.znear);
     world_.add<Camera>(e, camera);
   }
@@ -275,8 +306,10 @@ class GltfImporter {
     const auto& light = item(model_.lights, ref.GetNumberAsInt(), "light");
     glm::vec3 color = vec3_or(light.color, glm::vec3(1.0f));
     auto intensity = static_cast<float>(light.intensity);
-    if (light.type == "directional") world_.add<DirectionalLight>(e, {color, intensity, 0.00465f, true});
-    else if (light.type == "point" || light.type == "spot") world_.add<PointLight>(e, {color, intensity, static_cast<float>(light.range)});
+    if (light.type == "directional")
+      world_.add<DirectionalLight>(e, {color, intensity, 0.00465f, true});
+    else if (light.type == "point" || light.type == "spot")
+      world_.add<PointLight>(e, {color, intensity, static_cast<float>(light.range)});
   }
 
   World& world_;
@@ -299,12 +332,15 @@ bool inside_folder(const std::string& path, const std::string& folder) {
 }
 
 bool contained_read(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
-  if (inside_folder(path, *static_cast<std::string*>(folder))) return tinygltf::ReadWholeFile(out, error, path, nullptr);
+  if (inside_folder(path, *static_cast<std::string*>(folder)))
+    return tinygltf::ReadWholeFile(out, error, path, nullptr);
   if (error) *error += "'" + path + "' is outside the folder of the glTF file";
   return false;
 }
 
-std::string unexpanded(const std::string& path, void*) { return path; }
+std::string unexpanded(const std::string& path, void*) {
+  return path;
+}
 
 bool no_writes(std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
   if (error) *error += "writing is not allowed";
@@ -320,7 +356,8 @@ std::vector<Entity> import_gltf(World& world, const std::string& path, Entity pa
   std::string ext = std::filesystem::path(path).extension().string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "the file does not exist");
-  std::string folder = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).parent_path().string();
+  std::string folder =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).parent_path().string();
   // Existence is not checked against the folder, so that reading is tried and refused by name.
   loader.SetFsCallbacks({tinygltf::FileExists, unexpanded, contained_read, no_writes, &folder});
   bool ok = ext == ".glb" || ext == ".GLB" ? loader.LoadBinaryFromFile(&model, &error, &warning, path)

@@ -14,7 +14,9 @@ std::string found(const JsonValue& v) {
   return std::string("found ") + JsonValue::kind_name(v.kind());
 }
 
-std::string range_text(double min, double max) { return "from " + format_number(min) + " to " + format_number(max); }
+std::string range_text(double min, double max) {
+  return "from " + format_number(min) + " to " + format_number(max);
+}
 
 }  // namespace
 
@@ -45,7 +47,9 @@ JsonFields::JsonFields(const JsonValue& object, std::string pointer, std::string
   }
 }
 
-std::string JsonFields::pointer(std::string_view key) const { return json_pointer_append(pointer_, key); }
+std::string JsonFields::pointer(std::string_view key) const {
+  return json_pointer_append(pointer_, key);
+}
 
 void JsonFields::error_at(std::string_view key, const std::string& message) const {
   const JsonValue* v = get(key);
@@ -91,8 +95,8 @@ void JsonFields::string(std::string_view key, std::string& out) const {
   out = v->as_string();
 }
 
-bool JsonFields::numbers(std::string_view key, std::vector<double>& out, size_t min_count, size_t max_count,
-                         double min, double max) const {
+bool JsonFields::numbers(std::string_view key, std::vector<double>& out, size_t min_count, size_t max_count, double min,
+                         double max) const {
   const JsonValue* v = get(key);
   if (!v) return false;
   std::string count = min_count == max_count ? std::to_string(min_count)

@@ -28,7 +28,7 @@ class JsonFields {
   const std::string& pointer() const { return pointer_; }
   Diagnostics& diagnostics() const { return d_; }
   void error_at(std::string_view key, const std::string& message) const;  // at the key's value
-  void require(std::string_view key) const;                                // reports when absent
+  void require(std::string_view key) const;                               // reports when absent
 
   void number(std::string_view key, float& out, double min, double max, std::string_view unit = {}) const;
   void integer(std::string_view key, int& out, int min, int max) const;

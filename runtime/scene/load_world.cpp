@@ -48,7 +48,8 @@ void add_framing_camera(World& world) {
 void add_viewing_defaults(World& world) {
   if (world.count<Camera>() == 0) add_framing_camera(world);
   bool lit = world.count<DirectionalLight>() + world.count<PointLight>() + world.count<SphereLight>() +
-                 world.count<TubeLight>() + world.count<RectLight>() > 0;
+                 world.count<TubeLight>() + world.count<RectLight>() >
+             0;
   if (!lit) {
     Entity sun = world.create("sun");
     world.add<Transform>(sun, {glm::vec3(0.0f), look_rotation({-0.4f, -0.8f, -0.45f}), glm::vec3(1.0f), {}});
@@ -64,8 +65,10 @@ World load_world(const std::string& path, const WorldLoadOptions& options) {
     throw SceneError(path, "unknown kind of world file '" + ext + "'; expected .json, .gltf, .glb or .obj");
   World world;
   world.name = std::filesystem::path(path).stem().string();
-  if (ext == ".obj") import_obj(world, path);
-  else import_gltf(world, path);
+  if (ext == ".obj")
+    import_obj(world, path);
+  else
+    import_gltf(world, path);
   add_viewing_defaults(world);
   return world;
 }

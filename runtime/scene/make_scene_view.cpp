@@ -13,8 +13,12 @@
 namespace lg {
 namespace {
 
-glm::vec3 point(const glm::mat4& m, glm::vec3 p) { return glm::vec3(m * glm::vec4(p, 1.0f)); }
-glm::vec3 vector(const glm::mat4& m, glm::vec3 v) { return glm::vec3(m * glm::vec4(v, 0.0f)); }
+glm::vec3 point(const glm::mat4& m, glm::vec3 p) {
+  return glm::vec3(m * glm::vec4(p, 1.0f));
+}
+glm::vec3 vector(const glm::mat4& m, glm::vec3 v) {
+  return glm::vec3(m * glm::vec4(v, 0.0f));
+}
 
 // Radii scale with the largest axis scale (lights stay spheres and capsules).
 float max_scale(const glm::mat4& m) {
@@ -31,7 +35,8 @@ glm::mat4 without_scale(const glm::mat4& m) {
 }
 
 // The holder of T with the lowest index: a choice that survives removals of other entities.
-template <class T> Entity first_with(const World& world) {
+template <class T>
+Entity first_with(const World& world) {
   Entity chosen;
   world.each<T>([&](Entity e, const T&) {
     if (chosen.is_null() || e.index < chosen.index) chosen = e;
@@ -58,8 +63,8 @@ void add_lights(const World& world, SceneView& view) {
   world.each<DirectionalLight>([&](Entity e, const DirectionalLight& l) {
     glm::vec3 d = vector(world.world_matrix(e), {0.0f, 0.0f, -1.0f});
     float length = glm::length(d);
-    view.directional_lights.push_back({length > 0.0f ? d / length : glm::vec3(0.0f, -1.0f, 0.0f),
-                                       l.color * l.intensity, l.angular_radius, l.casts_shadows});
+    view.directional_lights.push_back({length > 0.0f ? d / length : glm::vec3(0.0f, -1.0f, 0.0f), l.color * l.intensity,
+                                       l.angular_radius, l.casts_shadows});
   });
   world.each<PointLight>([&](Entity e, const PointLight& l) {
     view.point_lights.push_back({point(world.world_matrix(e), glm::vec3(0.0f)), l.color * l.intensity, l.range});

@@ -10,7 +10,8 @@ namespace lg {
 namespace {
 
 // A grid of (columns+1) x (rows+1) vertices from a parametrisation; u across, v down.
-template <class F> MeshData grid(const char* name, int columns, int rows, F position_normal) {
+template <class F>
+MeshData grid(const char* name, int columns, int rows, F position_normal) {
   MeshData m;
   m.name = name;
   for (int r = 0; r <= rows; ++r)

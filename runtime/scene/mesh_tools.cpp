@@ -35,8 +35,7 @@ Bounds transformed_bounds(const MeshData& mesh, const glm::mat4& transform) {
 }
 
 std::string mesh_problem(const MeshData& mesh) {
-  if (mesh.indices.size() % 3 != 0)
-    return std::to_string(mesh.indices.size()) + " indices, not a multiple of 3";
+  if (mesh.indices.size() % 3 != 0) return std::to_string(mesh.indices.size()) + " indices, not a multiple of 3";
   for (uint32_t i : mesh.indices)
     if (i >= mesh.positions.size())
       return "index " + std::to_string(i) + " is out of range (" + std::to_string(mesh.positions.size()) + " vertices)";

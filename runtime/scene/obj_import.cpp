@@ -32,10 +32,10 @@ struct MeshBuilder {
   bool every_corner_has_normal = true, every_corner_has_uv = true;
 };
 
-void check_index(int index, size_t count, const char* what, const std::string& shape) {
+void check_index(const std::string& path, int index, size_t count, const char* what, const std::string& shape) {
   if (index < 0 || static_cast<size_t>(index) >= count)
-    throw std::out_of_range("object '" + shape + "' uses " + what + " " + std::to_string(index + 1) + " of " +
-                            std::to_string(count));
+    throw SceneError(
+        path, "object '" + shape + "' uses " + what + " " + std::to_string(index + 1) + " of " + std::to_string(count));
 }
 
 }  // namespace
@@ -64,61 +64,61 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
   std::string stem = std::filesystem::path(path).stem().string();
 
   std::vector<Entity> made;
-  try {
-    for (const auto& shape : reader.GetShapes()) {
-      std::string shape_name = shape.name.empty() ? stem : shape.name;
-      std::map<int, MeshBuilder> by_material;
-      size_t corner = 0;
-      for (size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-        size_t corners = shape.mesh.num_face_vertices[face];
-        int material = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
-        if (material >= static_cast<int>(materials.size())) material = -1;
-        if (corners != 3) {  // degenerate faces (points, lines) are left out
-          corner += corners;
-          continue;
-        }
-        MeshBuilder& b = by_material[material];
-        for (size_t k = 0; k < 3; ++k, ++corner) {
-          if (corner >= shape.mesh.indices.size()) throw std::out_of_range("object '" + shape_name + "' is truncated");
-          const auto& ix = shape.mesh.indices[corner];
-          check_index(ix.vertex_index, position_count, "vertex", shape_name);
-          if (ix.normal_index >= 0) check_index(ix.normal_index, normal_count, "normal", shape_name);
-          if (ix.texcoord_index >= 0) check_index(ix.texcoord_index, uv_count, "texture coordinate", shape_name);
-          b.every_corner_has_normal &= ix.normal_index >= 0;
-          b.every_corner_has_uv &= ix.texcoord_index >= 0;
-          auto key = std::tuple(ix.vertex_index, ix.normal_index, ix.texcoord_index);
-          auto [found, added] = b.vertices.emplace(key, static_cast<uint32_t>(b.mesh.positions.size()));
-          if (added) {
-            auto p = static_cast<size_t>(ix.vertex_index) * 3;
-            b.mesh.positions.emplace_back(attrib.vertices[p], attrib.vertices[p + 1], attrib.vertices[p + 2]);
-            auto n = static_cast<size_t>(std::max(ix.normal_index, 0)) * 3;
-            b.mesh.normals.push_back(ix.normal_index >= 0 ? glm::vec3(attrib.normals[n], attrib.normals[n + 1], attrib.normals[n + 2])
-                                                          : glm::vec3(0.0f));
-            auto t = static_cast<size_t>(std::max(ix.texcoord_index, 0)) * 2;
-            b.mesh.uvs.push_back(ix.texcoord_index >= 0 ? glm::vec2(attrib.texcoords[t], 1.0f - attrib.texcoords[t + 1])
-                                                        : glm::vec2(0.0f));
-          }
-          b.mesh.indices.push_back(found->second);
-        }
+  for (const auto& shape : reader.GetShapes()) {
+    std::string shape_name = shape.name.empty() ? stem : shape.name;
+    std::map<int, MeshBuilder> by_material;
+    size_t corner = 0;
+    for (size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+      size_t corners = shape.mesh.num_face_vertices[face];
+      int material = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
+      if (material >= static_cast<int>(materials.size())) material = -1;
+      if (corners != 3) {  // degenerate faces (points, lines) are left out
+        corner += corners;
+        continue;
       }
-      for (auto& [material, b] : by_material) {
-        b.mesh.name = shape_name + (by_material.size() > 1 && material >= 0 ? "/" + reader.GetMaterials()[static_cast<size_t>(material)].name : "");
-        if (!b.every_corner_has_uv) b.mesh.uvs.clear();
-        if (std::string problem = mesh_problem(b.mesh); !problem.empty())
-          throw std::out_of_range("object '" + shape_name + "': " + problem);
-        if (b.every_corner_has_normal) {
-          for (auto& n : b.mesh.normals) n = glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 1.0f, 0.0f);
-        } else {
-          generate_normals(b.mesh);
+      MeshBuilder& b = by_material[material];
+      for (size_t k = 0; k < 3; ++k, ++corner) {
+        if (corner >= shape.mesh.indices.size()) throw SceneError(path, "object '" + shape_name + "' is truncated");
+        const auto& ix = shape.mesh.indices[corner];
+        check_index(path, ix.vertex_index, position_count, "vertex", shape_name);
+        if (ix.normal_index >= 0) check_index(path, ix.normal_index, normal_count, "normal", shape_name);
+        if (ix.texcoord_index >= 0) check_index(path, ix.texcoord_index, uv_count, "texture coordinate", shape_name);
+        b.every_corner_has_normal &= ix.normal_index >= 0;
+        b.every_corner_has_uv &= ix.texcoord_index >= 0;
+        auto key = std::tuple(ix.vertex_index, ix.normal_index, ix.texcoord_index);
+        auto [found, added] = b.vertices.emplace(key, static_cast<uint32_t>(b.mesh.positions.size()));
+        if (added) {
+          auto p = static_cast<size_t>(ix.vertex_index) * 3;
+          b.mesh.positions.emplace_back(attrib.vertices[p], attrib.vertices[p + 1], attrib.vertices[p + 2]);
+          auto n = static_cast<size_t>(std::max(ix.normal_index, 0)) * 3;
+          b.mesh.normals.push_back(ix.normal_index >= 0
+                                       ? glm::vec3(attrib.normals[n], attrib.normals[n + 1], attrib.normals[n + 2])
+                                       : glm::vec3(0.0f));
+          auto t = static_cast<size_t>(std::max(ix.texcoord_index, 0)) * 2;
+          b.mesh.uvs.push_back(ix.texcoord_index >= 0 ? glm::vec2(attrib.texcoords[t], 1.0f - attrib.texcoords[t + 1])
+                                                      : glm::vec2(0.0f));
         }
-        Entity e = world.create(b.mesh.name);
-        world.add<Transform>(e, {glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f), parent});
-        world.add<MeshRenderer>(e, {world.add_mesh(std::move(b.mesh)), material >= 0 ? materials[static_cast<size_t>(material)] : -1});
-        made.push_back(e);
+        b.mesh.indices.push_back(found->second);
       }
     }
-  } catch (const std::out_of_range& e) {
-    throw SceneError(path, e.what());
+    for (auto& [material, b] : by_material) {
+      b.mesh.name = shape_name + (by_material.size() > 1 && material >= 0
+                                      ? "/" + reader.GetMaterials()[static_cast<size_t>(material)].name
+                                      : "");
+      if (!b.every_corner_has_uv) b.mesh.uvs.clear();
+      if (std::string problem = mesh_problem(b.mesh); !problem.empty())
+        throw SceneError(path, "object '" + shape_name + "': " + problem);
+      if (b.every_corner_has_normal) {
+        for (auto& n : b.mesh.normals) n = glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f, 1.0f, 0.0f);
+      } else {
+        generate_normals(b.mesh);
+      }
+      Entity e = world.create(b.mesh.name);
+      world.add<Transform>(e, {glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f), parent});
+      world.add<MeshRenderer>(
+          e, {world.add_mesh(std::move(b.mesh)), material >= 0 ? materials[static_cast<size_t>(material)] : -1});
+      made.push_back(e);
+    }
   }
   if (made.empty()) throw SceneError(path, "the file has no triangles");
   return made;

@@ -10,7 +10,6 @@
 #include <optional>
 
 #include "graph/json_reader.h"
-#include "graph/limits.h"
 #include "graph/spelling.h"
 #include "runtime/scene/json_fields.h"
 #include "runtime/scene/mesh_generators.h"
@@ -23,8 +22,9 @@ namespace {
 constexpr double max_length = 1e6, max_power = 1e9;
 
 const std::vector<std::string> entity_keys = {
-    "name", "parent", "transform", "model", "shape", "material", "camera", "directional_light", "point_light",
-    "sphere_light", "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
+    "name",       "parent",     "transform",         "model",           "shape",
+    "material",   "camera",     "directional_light", "point_light",     "sphere_light",
+    "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
 
 class SceneFileReader {
  public:
@@ -52,7 +52,7 @@ class SceneFileReader {
   const std::string& path_;
   const AssetRoots& roots_;
   Diagnostics& d_;
-  std::map<std::string, int> materials_;     // name -> world material
+  std::map<std::string, int> materials_;    // name -> world material
   std::map<std::string, Entity> entities_;  // name -> entity, for "parent"
 
   void materials(const JsonValue& v, const std::string& p) {
@@ -90,7 +90,8 @@ class SceneFileReader {
   }
 
   // The canonical path of a file the scene refers to, or empty after reporting.
-  std::string asset(const JsonFields& f, std::string_view key, const JsonValue& v, const std::vector<std::string>& extensions) {
+  std::string asset(const JsonFields& f, std::string_view key, const JsonValue& v,
+                    const std::vector<std::string>& extensions) {
     if (!v.is_string()) {
       f.error_at(key, "'" + std::string(key) + "' must be a path relative to the scene file");
       return {};
@@ -116,10 +117,14 @@ class SceneFileReader {
 
     int material = -1;
     if (const JsonValue* m = f.get("material")) material = material_index(f, *m);
-    if (f.get("model") && f.get("shape")) f.error_at("shape", "an entity has a 'model' or a 'shape', not both");
-    else if (const JsonValue* model = f.get("model")) import_model(f, *model, e, material);
-    else if (const JsonValue* shape = f.get("shape")) world_.add<MeshRenderer>(e, {make_shape(*shape, f.pointer("shape")), material});
-    else if (f.get("material")) f.error_at("material", "a material needs a 'model' or a 'shape' to apply to");
+    if (f.get("model") && f.get("shape"))
+      f.error_at("shape", "an entity has a 'model' or a 'shape', not both");
+    else if (const JsonValue* model = f.get("model"))
+      import_model(f, *model, e, material);
+    else if (const JsonValue* shape = f.get("shape"))
+      world_.add<MeshRenderer>(e, {make_shape(*shape, f.pointer("shape")), material});
+    else if (f.get("material"))
+      f.error_at("material", "a material needs a 'model' or a 'shape' to apply to");
     components(f, e);
   }
 
@@ -162,8 +167,10 @@ class SceneFileReader {
       t.rotation = rotation(f, r);
     } else if (f.numbers("look_at", r, 3, 3, -max_length, max_length)) {
       glm::vec3 target(r[0], r[1], r[2]);
-      if (target == t.position) f.error_at("look_at", "'look_at' must differ from the position");
-      else t.rotation = look_rotation(target - t.position);
+      if (target == t.position)
+        f.error_at("look_at", "'look_at' must differ from the position");
+      else
+        t.rotation = look_rotation(target - t.position);
     }
     if (const JsonValue* s = f.get("scale"); s && s->is_number()) {
       float uniform = 1.0f;
@@ -178,7 +185,9 @@ class SceneFileReader {
   // about Z: R = Ry Rx Rz); four are a quaternion x, y, z, w as glTF writes them.
   glm::quat rotation(const JsonFields& f, const std::vector<double>& r) {
     if (r.size() == 3) {
-      auto axis = [](double degrees, glm::vec3 a) { return glm::angleAxis(glm::radians(static_cast<float>(degrees)), a); };
+      auto axis = [](double degrees, glm::vec3 a) {
+        return glm::angleAxis(glm::radians(static_cast<float>(degrees)), a);
+      };
       return axis(r[1], {0, 1, 0}) * axis(r[0], {1, 0, 0}) * axis(r[2], {0, 0, 1});
     }
     glm::quat q{float(r[3]), float(r[0]), float(r[1]), float(r[2])};
@@ -193,17 +202,22 @@ class SceneFileReader {
     std::string resolved = asset(f, "model", v, {".gltf", ".glb", ".obj"});
     if (resolved.empty()) return;
     try {
-      bool obj = resolved.size() >= 4 && (resolved.substr(resolved.size() - 4) == ".obj" || resolved.substr(resolved.size() - 4) == ".OBJ");
-      if (obj) import_obj(world_, resolved, e);
-      else import_gltf(world_, resolved, e);
+      bool obj = resolved.size() >= 4 &&
+                 (resolved.substr(resolved.size() - 4) == ".obj" || resolved.substr(resolved.size() - 4) == ".OBJ");
+      if (obj)
+        import_obj(world_, resolved, e);
+      else
+        import_gltf(world_, resolved, e);
     } catch (const SceneError& error) {
-      for (const auto& item : error.diagnostics().items()) f.error_at("model", "'" + v.as_string() + "': " + item.message);
+      for (const auto& item : error.diagnostics().items())
+        f.error_at("model", "'" + v.as_string() + "': " + item.message);
       return;
     }
     if (material < 0) return;
     // The override applies to everything the model placed: the entity's descendants.
     world_.each<MeshRenderer>([&](Entity drawn, MeshRenderer& r) {
-      for (Entity a = drawn; !a.is_null(); a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
+      for (Entity a = drawn; !a.is_null();
+           a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
         if (a == e) {
           r.material = material;
           return;
@@ -220,9 +234,12 @@ class SceneFileReader {
     const std::vector<std::string> types = {"sphere", "box", "quad", "capsule", "bunny"};
     auto needs = [&](std::initializer_list<const char*> used) {
       for (const char* key : {"radius", "size", "length"}) {
-        bool wanted = std::find_if(used.begin(), used.end(), [&](const char* u) { return std::string_view(u) == key; }) != used.end();
-        if (wanted) f.require(key);
-        else if (f.get(key)) f.error_at(key, "a " + type + " has no '" + key + "'");
+        bool wanted = std::find_if(used.begin(), used.end(),
+                                   [&](const char* u) { return std::string_view(u) == key; }) != used.end();
+        if (wanted)
+          f.require(key);
+        else if (f.get(key))
+          f.error_at(key, "a " + type + " has no '" + key + "'");
       }
     };
     float radius = 0.5f, length = 1.0f;
@@ -255,13 +272,15 @@ class SceneFileReader {
     if (f.get("type") && f.get("type")->is_string()) {
       std::string guess = closest_name(type, types);
       f.error_at("type", "unknown shape '" + type + "'; " +
-                             (guess.empty() ? "expected sphere, box, quad, capsule or bunny" : "did you mean '" + guess + "'?"));
+                             (guess.empty() ? "expected sphere, box, quad, capsule or bunny"
+                                            : "did you mean '" + guess + "'?"));
     }
     return -1;
   }
 
   void components(const JsonFields& entity, Entity e) {
-    auto with = [&](const char* key, std::vector<std::string> keys, const std::function<void(const JsonFields&)>& read) {
+    auto with = [&](const char* key, std::vector<std::string> keys,
+                    const std::function<void(const JsonFields&)>& read) {
       if (const JsonValue* v = entity.get(key)) {
         JsonFields f(*v, entity.pointer(key), key, std::move(keys), d_);
         if (f.is_object()) read(f);
@@ -324,9 +343,11 @@ class SceneFileReader {
       f.vec3("size", vol.size, 1e-3, max_length);
       std::vector<double> counts;
       if (f.numbers("probes", counts, 3, 3, 1, 256)) {
-        if (counts[0] != std::floor(counts[0]) || counts[1] != std::floor(counts[1]) || counts[2] != std::floor(counts[2]))
+        if (counts[0] != std::floor(counts[0]) || counts[1] != std::floor(counts[1]) ||
+            counts[2] != std::floor(counts[2]))
           f.error_at("probes", "'probes' must be three whole numbers");
-        else vol.probe_counts = glm::ivec3(counts[0], counts[1], counts[2]);
+        else
+          vol.probe_counts = glm::ivec3(counts[0], counts[1], counts[2]);
       }
       world_.add<IrradianceVolume>(e, vol);
     });
@@ -338,7 +359,8 @@ class SceneFileReader {
   }
 };
 
-World read_world(const std::optional<JsonValue>& root, const std::string& path, const AssetRoots& roots, Diagnostics& d) {
+World read_world(const std::optional<JsonValue>& root, const std::string& path, const AssetRoots& roots,
+                 Diagnostics& d) {
   World world;
   world.name = std::filesystem::path(path).stem().string();
   if (root) SceneFileReader(world, path, roots, d).read(*root);

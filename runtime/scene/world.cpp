@@ -11,7 +11,8 @@ uint64_t next_revision() {
   return ++counter;
 }
 
-template <class T> T& element(std::vector<T>& items, int index, const char* what) {
+template <class T>
+T& element(std::vector<T>& items, int index, const char* what) {
   if (index < 0 || static_cast<size_t>(index) >= items.size())
     throw std::out_of_range(std::string("no ") + what + " " + std::to_string(index));
   return items[static_cast<size_t>(index)];
@@ -65,7 +66,9 @@ glm::mat4 World::world_matrix(Entity e) const {
   return m;
 }
 
-void World::touch_assets() { asset_revision_ = next_revision(); }
+void World::touch_assets() {
+  asset_revision_ = next_revision();
+}
 
 int World::add_mesh(MeshData mesh) {
   touch_assets();

@@ -36,19 +36,51 @@ class World {
   void destroy(Entity e);
   size_t entity_count() const { return live_count_; }
 
-  template <class T> T& add(Entity e, T value = {}) { check(e); return set<T>().put(e.index, std::move(value)); }
-  template <class T> bool has(Entity e) const { return alive(e) && set<T>().contains(e.index); }
-  template <class T> T* try_get(Entity e) { return alive(e) ? set<T>().find(e.index) : nullptr; }
-  template <class T> const T* try_get(Entity e) const { return alive(e) ? set<T>().find(e.index) : nullptr; }
-  template <class T> T& get(Entity e) { return *checked(e, try_get<T>(e)); }
-  template <class T> const T& get(Entity e) const { return *checked(e, try_get<T>(e)); }
-  template <class T> bool remove(Entity e) { check(e); return set<T>().erase(e.index); }
-  template <class T> size_t count() const { return set<T>().size(); }
+  template <class T>
+  T& add(Entity e, T value = {}) {
+    check(e);
+    return set<T>().put(e.index, std::move(value));
+  }
+  template <class T>
+  bool has(Entity e) const {
+    return alive(e) && set<T>().contains(e.index);
+  }
+  template <class T>
+  T* try_get(Entity e) {
+    return alive(e) ? set<T>().find(e.index) : nullptr;
+  }
+  template <class T>
+  const T* try_get(Entity e) const {
+    return alive(e) ? set<T>().find(e.index) : nullptr;
+  }
+  template <class T>
+  T& get(Entity e) {
+    return *checked(e, try_get<T>(e));
+  }
+  template <class T>
+  const T& get(Entity e) const {
+    return *checked(e, try_get<T>(e));
+  }
+  template <class T>
+  bool remove(Entity e) {
+    check(e);
+    return set<T>().erase(e.index);
+  }
+  template <class T>
+  size_t count() const {
+    return set<T>().size();
+  }
 
   // Calls f(Entity, First&, Rest&...) for every entity that has all the listed components, in
   // the dense order of First's set. f must not add or remove components of those types.
-  template <class First, class... Rest, class F> void each(F&& f) { each_in<First, Rest...>(*this, f); }
-  template <class First, class... Rest, class F> void each(F&& f) const { each_in<First, Rest...>(*this, f); }
+  template <class First, class... Rest, class F>
+  void each(F&& f) {
+    each_in<First, Rest...>(*this, f);
+  }
+  template <class First, class... Rest, class F>
+  void each(F&& f) const {
+    each_in<First, Rest...>(*this, f);
+  }
 
   // The entity's frame in world space: its Transform composed with its parents'. Identity
   // without a Transform; a parent chain that loops or is deeper than 256 throws.
@@ -68,19 +100,29 @@ class World {
   uint64_t asset_revision() const { return asset_revision_; }
 
  private:
-  using Sets = std::tuple<ComponentSet<Name>, ComponentSet<Transform>, ComponentSet<Camera>, ComponentSet<MeshRenderer>,
-                          ComponentSet<DirectionalLight>, ComponentSet<PointLight>, ComponentSet<SphereLight>,
-                          ComponentSet<TubeLight>, ComponentSet<RectLight>, ComponentSet<EnvironmentLight>,
-                          ComponentSet<IrradianceVolume>, ComponentSet<ReflectionProbe>, ComponentSet<PostProcessSettings>>;
+  using Sets =
+      std::tuple<ComponentSet<Name>, ComponentSet<Transform>, ComponentSet<Camera>, ComponentSet<MeshRenderer>,
+                 ComponentSet<DirectionalLight>, ComponentSet<PointLight>, ComponentSet<SphereLight>,
+                 ComponentSet<TubeLight>, ComponentSet<RectLight>, ComponentSet<EnvironmentLight>,
+                 ComponentSet<IrradianceVolume>, ComponentSet<ReflectionProbe>, ComponentSet<PostProcessSettings>>;
 
-  template <class T> ComponentSet<T>& set() { return std::get<ComponentSet<T>>(sets_); }
-  template <class T> const ComponentSet<T>& set() const { return std::get<ComponentSet<T>>(sets_); }
+  template <class T>
+  ComponentSet<T>& set() {
+    return std::get<ComponentSet<T>>(sets_);
+  }
+  template <class T>
+  const ComponentSet<T>& set() const {
+    return std::get<ComponentSet<T>>(sets_);
+  }
   void check(Entity e) const;
-  template <class T> T* checked(Entity e, T* value) const {
-    if (!value) throw std::invalid_argument(alive(e) ? "the entity lacks the component" : "stale or null entity handle");
+  template <class T>
+  T* checked(Entity e, T* value) const {
+    if (!value)
+      throw std::invalid_argument(alive(e) ? "the entity lacks the component" : "stale or null entity handle");
     return value;
   }
-  template <class First, class... Rest, class Self, class F> static void each_in(Self& self, F& f) {
+  template <class First, class... Rest, class Self, class F>
+  static void each_in(Self& self, F& f) {
     // Copy the owners: f may destroy or add entities that hold none of the iterated components.
     std::vector<uint32_t> owners = self.template set<First>().owners();
     for (uint32_t index : owners) {

@@ -113,11 +113,16 @@ struct BrokenGltf {
   const char* message;  // a part of the error
 };
 
+void PrintTo(const BrokenGltf& c, std::ostream* out) {
+  *out << c.name;
+}
+
 class GltfBroken : public testing::TestWithParam<BrokenGltf> {};
 
 TEST_P(GltfBroken, GivesAClearError) {
   const BrokenGltf& c = GetParam();
-  std::string path = write_variant(std::string(c.name) + ".gltf", replaced(test::read_bytes(fixture("scene.gltf")), c.from, c.to));
+  std::string path =
+      write_variant(std::string(c.name) + ".gltf", replaced(test::read_bytes(fixture("scene.gltf")), c.from, c.to));
   World w;
   std::string message = error_of([&] { import_gltf(w, path); });
   EXPECT_EQ(message.rfind(path + ": error: ", 0), 0u) << message;
@@ -132,21 +137,22 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenGltf{"index_out_of_range", R"("indices": 3)", R"("indices": 6)",
                    "mesh 1 primitive 0: index 7 is out of range (3 vertices)"},
         BrokenGltf{"no_such_accessor", R"("indices": 3)", R"("indices": 60)", "accessor out of bounds"},
-        BrokenGltf{"view_past_buffer", R"("byteOffset": 100, "byteLength": 36)", R"("byteOffset": 120, "byteLength": 36)",
-                   "buffer view 4 runs past the end of buffer 0 (136 bytes)"},
+        BrokenGltf{"view_past_buffer", R"("byteOffset": 100, "byteLength": 36)",
+                   R"("byteOffset": 120, "byteLength": 36)", "buffer view 4 runs past the end of buffer 0 (136 bytes)"},
         BrokenGltf{"wrong_type", R"("componentType": 5126, "count": 3, "type": "VEC3"})",
                    R"("componentType": 5126, "count": 3, "type": "VEC2"})", "NORMAL (accessor 4) has the wrong type"},
         BrokenGltf{"no_such_child", R"("children": [1, 2])", R"("children": [1, 99])", "node 99 does not exist"},
         BrokenGltf{"cycle", R"("children": [1, 2])", R"("children": [1, 0])", "node 0 is its own ancestor"},
         BrokenGltf{"no_such_material", R"("material": 0)", R"("material": 5)", "material 5 does not exist"},
         BrokenGltf{"no_such_light", R"({"light": 1})", R"({"light": 9})", "light 9 does not exist"},
-        BrokenGltf{"missing_buffer", R"("uri": "data:application/octet-stream;base64,)", R"("uri": "missing.bin", "x": ")",
-                   "missing.bin"},
+        BrokenGltf{"missing_buffer", R"("uri": "data:application/octet-stream;base64,)",
+                   R"("uri": "missing.bin", "x": ")", "missing.bin"},
         BrokenGltf{"buffer_outside_folder", R"("uri": "data:application/octet-stream;base64,)",
                    R"("uri": "../CMakeCache.txt", "x": ")", "is outside the folder of the glTF file"},
-        BrokenGltf{"missing_image", R"("uri": "data:image/png;base64,)", R"("uri": "missing.png", "x": ")", "missing.png"},
-        BrokenGltf{"corrupt_image", R"("uri": "data:image/png;base64,)", R"("uri": "data:image/png;base64,AAAA", "x": ")",
-                   "cannot decode image data for image[0]"},
+        BrokenGltf{"missing_image", R"("uri": "data:image/png;base64,)", R"("uri": "missing.png", "x": ")",
+                   "missing.png"},
+        BrokenGltf{"corrupt_image", R"("uri": "data:image/png;base64,)",
+                   R"("uri": "data:image/png;base64,AAAA", "x": ")", "cannot decode image data for image[0]"},
         BrokenGltf{"not_json", R"("asset")", R"(asset)", "not a valid glTF file"}),
     [](const testing::TestParamInfo<BrokenGltf>& info) { return std::string(info.param.name); });
 

@@ -14,7 +14,9 @@
 
 namespace lg::test {
 
-inline std::string fixture(const std::string& name) { return std::string(LUMAGRAPH_SOURCE_DIR) + "/tests/scene/data/" + name; }
+inline std::string fixture(const std::string& name) {
+  return std::string(LUMAGRAPH_SOURCE_DIR) + "/tests/scene/data/" + name;
+}
 
 inline std::string read_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -20,7 +20,9 @@ using test::error_of;
 using test::fixture;
 using test::write_variant;
 
-std::string bunny_path() { return std::string(LUMAGRAPH_SOURCE_DIR) + "/../shared/data/mesh/bunny.obj"; }
+std::string bunny_path() {
+  return std::string(LUMAGRAPH_SOURCE_DIR) + "/../shared/data/mesh/bunny.obj";
+}
 
 TEST(ObjImport, CubeWithMaterials) {
   World w;
@@ -48,7 +50,7 @@ TEST(ObjImport, CubeWithMaterials) {
       EXPECT_EQ(m.positions.size(), 4u);
       for (const auto& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 1, 0));
       EXPECT_EQ(m.uvs[0], glm::vec2(0, 1));  // vt 0 0
-    } else {  // five faces, normals generated: each points away from the centre
+    } else {                                 // five faces, normals generated: each points away from the centre
       EXPECT_EQ(m.indices.size(), 30u);
       for (size_t i = 0; i < m.positions.size(); ++i) {
         EXPECT_NEAR(glm::length(m.normals[i]), 1.0f, 1e-5f);
@@ -81,12 +83,14 @@ TEST(ObjImport, BrokenFilesGiveClearErrors) {
   EXPECT_EQ(error_of([&] { import_obj(w, path); }), path + ": error: the file has no triangles");
   path = write_variant("binary.obj", std::string("\x00\xff\x13garbage\n\x01", 12));
   EXPECT_EQ(error_of([&] { import_obj(w, path); }), path + ": error: the file has no triangles");
-  EXPECT_EQ(error_of([&] { import_obj(w, fixture("nothing.obj")); }), fixture("nothing.obj") + ": error: the file does not exist");
+  EXPECT_EQ(error_of([&] { import_obj(w, fixture("nothing.obj")); }),
+            fixture("nothing.obj") + ": error: the file does not exist");
 }
 
 TEST(ObjImport, MissingMaterialLibraryFallsBackToTheDefaultMaterial) {
   World w;
-  std::string path = write_variant("no_mtl.obj", "mtllib nowhere.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  std::string path =
+      write_variant("no_mtl.obj", "mtllib nowhere.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   std::vector<Entity> made = import_obj(w, path);
   ASSERT_EQ(made.size(), 1u);
   EXPECT_EQ(w.get<MeshRenderer>(made[0]).material, -1);

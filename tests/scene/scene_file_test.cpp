@@ -17,8 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // Scene text is "written" into tests/scene/data/ so that its relative paths find the fixtures.
-std::string data_dir() { return std::string(LUMAGRAPH_SOURCE_DIR) + "/tests/scene/data"; }
-std::string fake_path() { return data_dir() + "/inline.json"; }
+std::string data_dir() {
+  return std::string(LUMAGRAPH_SOURCE_DIR) + "/tests/scene/data";
+}
+std::string fake_path() {
+  return data_dir() + "/inline.json";
+}
 
 // The messages of parse_scene_file(text), "line:col: message (pointer)" without the file name.
 std::vector<std::string> errors_of(const std::string& text) {
@@ -134,7 +138,8 @@ TEST(SceneFile, EveryErrorIsReportedWithItsPosition) {
       "9:29: error: no entity named 'c' is listed before this one (/entities/1/parent)",
       "9:46: error: no material named 'rde' in 'materials'; did you mean 'red'? (/entities/1/material)",
       "9:62: error: a shape needs 'size' (/entities/1/shape)",
-      "10:48: error: 'intensity' must be a number from 0 to 1e+09 (W/sr), found a string (/entities/2/point_light/intensity)",
+      "10:48: error: 'intensity' must be a number from 0 to 1e+09 (W/sr), found a string "
+      "(/entities/2/point_light/intensity)",
       "10:74: error: unknown key 'sphere_lite' in an entity; did you mean 'sphere_light'? (/entities/2/sphere_lite)",
       "11:67: error: 'look_at' must differ from the position (/entities/3/transform/look_at)",
   };
@@ -142,11 +147,15 @@ TEST(SceneFile, EveryErrorIsReportedWithItsPosition) {
   for (size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(errors[i], expected[i]);
   // Paths: absolute and escaping ones are refused, missing files named; the checks of
   // graph/asset_paths.h word them.
-  EXPECT_EQ(errors[10].rfind("12:28: error: '/etc/passwd' resolves to /etc/passwd, outside the allowed asset roots", 0), 0u) << errors[10];
+  EXPECT_EQ(errors[10].rfind("12:28: error: '/etc/passwd' resolves to /etc/passwd, outside the allowed asset roots", 0),
+            0u)
+      << errors[10];
   EXPECT_EQ(errors[11].rfind("13:28: error: '../../../CMakeLists.txt' resolves to", 0), 0u) << errors[11];
   EXPECT_NE(errors[11].find("outside the allowed asset roots"), std::string::npos);
   EXPECT_EQ(errors[12].rfind("14:28: error: 'missing.obj' does not exist", 0), 0u) << errors[12];
-  EXPECT_EQ(errors[13], "15:46: error: 'vertical_fov' must be a number from 1 to 179 (degrees), found 200 (/entities/7/camera/vertical_fov)");
+  EXPECT_EQ(errors[13],
+            "15:46: error: 'vertical_fov' must be a number from 1 to 179 (degrees), found 200 "
+            "(/entities/7/camera/vertical_fov)");
   EXPECT_EQ(errors[14], "15:80: error: 'two_sided' must be true or false, found 1 (/entities/7/rect_light/two_sided)");
   EXPECT_EQ(errors.size(), 15u) << testing::PrintToString(errors);
 }
@@ -158,14 +167,15 @@ TEST(SceneFile, RotationConventions) {
     {"name": "yaw", "transform": {"rotation": [0, 90, 0]}},
     {"name": "pitch yaw", "transform": {"rotation": [90, 90, 0]}},
     {"name": "quat", "transform": {"rotation": [0, 0, 2, 2], "scale": [1, 2, 3]}}
-  ]})", fake_path());
+  ]})",
+                             fake_path());
   auto forward = [&](uint32_t index) {
     Entity e{index, 0};
     return glm::vec3(w.world_matrix(e) * glm::vec4(0, 0, -1, 0));
   };
   glm::vec3 yaw = forward(0), pitch_yaw = forward(1), quat = forward(2);
-  EXPECT_NEAR(yaw.x, -1.0f, 1e-5f);  // -Z turned 90 degrees left about Y
-  EXPECT_NEAR(pitch_yaw.y, 1.0f, 1e-5f);  // pitched up first, so the yaw leaves it up
+  EXPECT_NEAR(yaw.x, -1.0f, 1e-5f);             // -Z turned 90 degrees left about Y
+  EXPECT_NEAR(pitch_yaw.y, 1.0f, 1e-5f);        // pitched up first, so the yaw leaves it up
   EXPECT_NEAR(glm::length(quat), 3.0f, 1e-5f);  // 90 degrees about Z leaves -Z, scaled by 3
   EXPECT_NEAR(quat.z, -3.0f, 1e-5f);
 }
@@ -189,8 +199,36 @@ TEST(SceneFile, ConflictsAndDuplicates) {
   EXPECT_EQ(errors, expected);
 }
 
+TEST(SceneFile, EnvironmentPaths) {
+  std::vector<std::string> errors = errors_of(R"({"format": "lumagraph-world/1", "entities": [],
+    "environment": {"path": "cube.obj", "intensity": -1}})");
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_EQ(errors[0],
+            "2:29: error: 'cube.obj' has the extension '.obj'; expected one of .hdr, .exr (/environment/path)");
+  EXPECT_EQ(errors[1], "2:54: error: 'intensity' must be a number from 0 to 1e+09, found -1 (/environment/intensity)");
+  fs::path shared = fs::path(LUMAGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "env";
+  if (!fs::exists(shared / "grace.hdr")) GTEST_SKIP() << "no " << shared << " (../shared/data is absent)";
+  std::string model = fs::relative(shared / "grace.hdr", data_dir()).string();
+  World w = parse_scene_file(
+      R"({"format": "lumagraph-world/1", "entities": [], "environment": {"path": ")" + model + R"("}})", fake_path(),
+      AssetRoots{{shared.string()}});
+  SceneView v = make_scene_view(w, 1.0f);
+  EXPECT_EQ(v.environment.path, fs::canonical(shared / "grace.hdr").string());
+}
+
+TEST(SceneFile, MissingFile) {
+  std::string path = data_dir() + "/nothing.json";
+  try {
+    load_world(path);
+    FAIL() << "loaded a missing file";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": error: cannot open the file: No such file or directory");
+  }
+}
+
 TEST(SceneFile, StructuralErrors) {
-  EXPECT_EQ(errors_of("[]"), std::vector<std::string>{"1:1: error: expected a scene file as an object, found an array"});
+  EXPECT_EQ(errors_of("[]"),
+            std::vector<std::string>{"1:1: error: expected a scene file as an object, found an array"});
   EXPECT_EQ(errors_of(R"({"format": "lumagraph-world/2", "entities": []})"),
             std::vector<std::string>{"1:12: error: expected \"format\": \"lumagraph-world/1\" (/format)"});
   EXPECT_EQ(errors_of(R"({"format": "lumagraph-world/1"})"),

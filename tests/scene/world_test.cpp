@@ -105,7 +105,9 @@ TEST(World, RandomSequencesAgreeWithAMapModel) {
   World w;
   std::map<uint64_t, std::pair<Entity, std::map<int, int>>> model;  // id -> (entity, kind -> value)
   std::vector<Entity> dead;
-  auto pick = [&](auto& container) { return std::next(container.begin(), static_cast<long>(rng() % container.size())); };
+  auto pick = [&](auto& container) {
+    return std::next(container.begin(), static_cast<long>(rng() % container.size()));
+  };
   for (int step = 0; step < 20000; ++step) {
     int action = static_cast<int>(rng() % 10);
     if (action == 0 || model.empty()) {
@@ -125,8 +127,10 @@ TEST(World, RandomSequencesAgreeWithAMapModel) {
       bool mesh = rng() % 2;
       int kind = mesh ? 0 : 1;
       if (action < 7) {
-        if (mesh) w.add<MeshRenderer>(e, {value, value});
-        else w.add<PointLight>(e, {glm::vec3(0.0f), float(value), 0.0f});
+        if (mesh)
+          w.add<MeshRenderer>(e, {value, value});
+        else
+          w.add<PointLight>(e, {glm::vec3(0.0f), float(value), 0.0f});
         comps[kind] = value;
       } else {
         bool removed = mesh ? w.remove<MeshRenderer>(e) : w.remove<PointLight>(e);
