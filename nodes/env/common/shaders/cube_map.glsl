@@ -20,6 +20,23 @@ vec3 cube_direction(int face, vec2 uv) {
 // Solid angle of the spherical triangle over face-plane points a, b, c (z = 1), whose triple
 // product is `det` (Van Oosterom and Strackee). The caller computes det from exact texel
 // coordinates, so nothing cancels: differences of atan at corners lose ~1e-3 on small texels.
+// The face a direction hits and its uv there; the inverse of cube_direction.
+vec2 cube_face_uv(vec3 d, out int face) {
+  vec3 m = abs(d);
+  vec3 sc_tc_ma;
+  if (m.x >= m.y && m.x >= m.z) {
+    face = d.x >= 0.0 ? 0 : 1;
+    sc_tc_ma = vec3(d.x >= 0.0 ? -d.z : d.z, -d.y, m.x);
+  } else if (m.y >= m.z) {
+    face = d.y >= 0.0 ? 2 : 3;
+    sc_tc_ma = vec3(d.x, d.y >= 0.0 ? d.z : -d.z, m.y);
+  } else {
+    face = d.z >= 0.0 ? 4 : 5;
+    sc_tc_ma = vec3(d.z >= 0.0 ? d.x : -d.x, -d.y, m.z);
+  }
+  return 0.5 * (sc_tc_ma.xy / sc_tc_ma.z + 1.0);
+}
+
 // Small angles (every texel of faces over 4 wide) take atan's series: lavapipe's atan is off
 // by about 2e-5 relative.
 float cube_triangle_solid_angle(vec3 a, vec3 b, vec3 c, float det) {
