@@ -3,8 +3,8 @@
 // and 1 and n.v at its ends stay finite.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "nodes/env/brdf_lut/brdf_lut_kernel.h"
@@ -20,7 +20,8 @@ namespace {
 class BrdfLutGpuTest : public GpuTest {
  protected:
   std::vector<float> render(uint32_t size, uint32_t samples) {
-    Image lut = Image::dedicated(context(), {.name = "dfg", .format = VK_FORMAT_R16G16_SFLOAT, .width = size, .height = size});
+    Image lut =
+        Image::dedicated(context(), {.name = "dfg", .format = VK_FORMAT_R16G16_SFLOAT, .width = size, .height = size});
     submitter().run([&](VkCommandBuffer cmd) {
       transition(cmd, lut, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_brdf_lut(context(), pipelines(), cmd, "dfg/integrate", samples, lut);
@@ -49,8 +50,12 @@ class BrdfLutGpuTest : public GpuTest {
 // Bounds: rg16f holds values near 1 to 4.9e-4 and the Hammersley sums add their own error
 // (measured 3.2e-3 at 512 samples, 1.8e-3 at 4096, grazing n.v included); the reference's
 // midpoint rule is good to about 2e-4 at these steps.
-TEST_F(BrdfLutGpuTest, MatchesTheReferenceAtTheDefaultSamples) { EXPECT_LE(max_error(32, 512), 5e-3); }
-TEST_F(BrdfLutGpuTest, MatchesTheReferenceAtManySamples) { EXPECT_LE(max_error(16, 4096), 2.5e-3); }
+TEST_F(BrdfLutGpuTest, MatchesTheReferenceAtTheDefaultSamples) {
+  EXPECT_LE(max_error(32, 512), 5e-3);
+}
+TEST_F(BrdfLutGpuTest, MatchesTheReferenceAtManySamples) {
+  EXPECT_LE(max_error(16, 4096), 2.5e-3);
+}
 
 TEST_F(BrdfLutGpuTest, ScalePlusBiasIsOneForAMirror) {
   const uint32_t size = 16;

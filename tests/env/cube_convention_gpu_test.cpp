@@ -3,9 +3,8 @@
 // texel; and the GLSL cube_direction and cube_face_uv must agree with the CPU's.
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <random>
 
 #include "nodes/env/common/cube_map.h"
@@ -55,10 +54,11 @@ TEST_F(CubeConventionGpuTest, SamplerCubeAndShadersAgreeWithTheCpu) {
   Buffer out = Buffer::dedicated(context(), {.name = "answers", .size = queries.size() * sizeof(Answer)});
   upload_buffer(submitter(), in, std::as_bytes(std::span(queries)));
   Sampler nearest(context(), {.filter = Filter::nearest});
-  const Pipeline& p = pipelines().compute(
-      {"sample_cube", find_shader(env_test_shaders(), "tests/env/shaders/sample_cube.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
+  const Pipeline& p = pipelines().compute({"sample_cube",
+                                           find_shader(env_test_shaders(), "tests/env/shaders/sample_cube.comp"),
+                                           {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                            {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                            {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
   submitter().run([&](VkCommandBuffer cmd) {
     const DescriptorWrite writes[] = {sampled_image(0, cube.view(), nearest.handle()), storage_buffer(1, in.handle()),
                                       storage_buffer(2, out.handle())};

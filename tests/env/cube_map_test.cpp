@@ -1,14 +1,14 @@
 // The cube-map and equirectangular conventions on the CPU: face centres and orientation, the
 // direction round trip, exact texel solid angles, and area-correct mips.
+#include "nodes/env/common/cube_map.h"
+
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <random>
 
-#include "nodes/env/common/cube_map.h"
 #include "nodes/env/common/equirect.h"
 #include "tests/env/env_test_support.h"
 

@@ -1,10 +1,10 @@
 // The split-sum DFG reference on the CPU: its two quadratures agree, a mirror reflects all
 // (A + B = 1 at roughness 0), and known limits hold.
+#include "nodes/env/brdf_lut/dfg_reference.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "nodes/env/brdf_lut/dfg_reference.h"
 
 namespace lg::test {
 namespace {

@@ -9,11 +9,10 @@
 // NaN and Inf texels replaced and counted.
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
-#include <iostream>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <iostream>
 #include <limits>
 #include <random>
 
@@ -62,15 +61,16 @@ class EnvLoadGpuTest : public GpuTest {
     uint32_t mips = 1;
     while ((face >> mips) > 0) ++mips;
     const std::vector<CubeImage> gpu = load(pixels, face, mips);
-    const std::vector<CubeImage> ref = mip_chain(equirect_to_cube(image, face, int(equirect_supersample(image.width, face))));
+    const std::vector<CubeImage> ref =
+        mip_chain(equirect_to_cube(image, face, int(equirect_supersample(image.width, face))));
     double brightest = 0, worst = 0, sum = 0;
     size_t count = 0;
     for (const glm::dvec4& t : ref[0].texels) brightest = std::max({brightest, t.x, t.y, t.z});
     for (uint32_t m = 0; m < mips; ++m)
       for (size_t t = 0; t < ref[m].texels.size(); ++t)
         for (int c = 0; c < 3; ++c, ++count) {
-          const double e = std::abs(gpu[m].texels[t][c] - ref[m].texels[t][c]) /
-                           std::max(ref[m].texels[t][c], 1e-3 * brightest);
+          const double e =
+              std::abs(gpu[m].texels[t][c] - ref[m].texels[t][c]) / std::max(ref[m].texels[t][c], 1e-3 * brightest);
           worst = std::max(worst, e);
           sum += e * e;
         }

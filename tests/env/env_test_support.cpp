@@ -1,11 +1,10 @@
 #include "tests/env/env_test_support.h"
 
-#include <glm/geometric.hpp>
-#include <glm/matrix.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <random>
 
 #include "nodes/env/common/equirect.h"
@@ -52,8 +51,13 @@ std::optional<CubeImage> load_probe(const std::string& name, uint32_t face_size)
 }
 
 Image make_cube(Context& context, const std::string& name, uint32_t size, uint32_t mips) {
-  return Image::dedicated(context, {.name = name, .kind = ImageKind::cube, .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                    .width = size, .height = size, .mips = mips, .layers = 6});
+  return Image::dedicated(context, {.name = name,
+                                    .kind = ImageKind::cube,
+                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                    .width = size,
+                                    .height = size,
+                                    .mips = mips,
+                                    .layers = 6});
 }
 
 void upload_cube(Submitter& submitter, const Image& image, const std::vector<CubeImage>& mips, VkImageLayout layout) {

@@ -5,11 +5,10 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/mat3x3.hpp>
 
 #include "nodes/env/common/cube_map.h"
 #include "runtime/gpu/image.h"

@@ -8,13 +8,12 @@
 // to 3.1e-3 of the specular), 8-bit filter weights across the DFG table's texels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
-
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <numbers>
 #include <random>
@@ -35,7 +34,7 @@
 namespace lg::test {
 namespace {
 
-constexpr uint32_t kSize = 16;     // frame
+constexpr uint32_t kSize = 16;  // frame
 constexpr uint32_t kLut = 32;
 constexpr uint32_t kSpecularMips = 4;  // 8^2 down to 1^2
 constexpr double kMipStep = 0.1;       // mip m holds base * (1 + 0.1 m)
@@ -52,9 +51,9 @@ std::vector<float> stored(VkFormat format, std::vector<float> rgba) {
 struct Scene {
   CameraConstants camera;
   std::vector<float> depth, normal, albedo, material, direct, ao;
-  std::vector<glm::dvec3> sh;   // irradiance coefficients, order 2
+  std::vector<glm::dvec3> sh;  // irradiance coefficients, order 2
   glm::dvec3 specular_base{1.0, 0.8, 0.6};
-  std::vector<float> lut;       // rg16f as stored
+  std::vector<float> lut;  // rg16f as stored
 };
 
 Scene make_scene(uint64_t seed, bool furnace) {
@@ -99,15 +98,19 @@ Scene make_scene(uint64_t seed, bool furnace) {
   return s;
 }
 
-glm::dvec3 texel3(const std::vector<float>& v, uint32_t t) { return {v[4 * t], v[4 * t + 1], v[4 * t + 2]}; }
+glm::dvec3 texel3(const std::vector<float>& v, uint32_t t) {
+  return {v[4 * t], v[4 * t + 1], v[4 * t + 2]};
+}
 
 // Bilinear on the stored table at the shader's coordinates, clamped at the edges.
 glm::dvec2 lut_lookup(const std::vector<float>& lut, double n_dot_v, double roughness) {
-  const double x = std::clamp(n_dot_v * (kLut - 1), 0.0, kLut - 1.0), y = std::clamp(roughness * (kLut - 1), 0.0, kLut - 1.0);
+  const double x = std::clamp(n_dot_v * (kLut - 1), 0.0, kLut - 1.0),
+               y = std::clamp(roughness * (kLut - 1), 0.0, kLut - 1.0);
   const uint32_t x0 = std::min(uint32_t(x), kLut - 2), y0 = std::min(uint32_t(y), kLut - 2);
   const double fx = x - x0, fy = y - y0;
   auto at = [&](uint32_t i, uint32_t j) { return glm::dvec2(lut[(j * kLut + i) * 4], lut[(j * kLut + i) * 4 + 1]); };
-  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+         fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
 }
 
 glm::dvec3 world_position(const CameraConstants& c, uint32_t x, uint32_t y, double depth) {
@@ -149,17 +152,21 @@ class IblGpuTest : public GpuTest {
     Image specular = make_cube(context(), "specular", 8, kSpecularMips);
     upload_cube(submitter(), specular, mips, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     CubeImage e_over_pi(2);
-    for (glm::dvec4& t : e_over_pi.texels) t = glm::dvec4(s.sh[0] * (0.5 / std::sqrt(std::numbers::pi)) / std::numbers::pi, 1);
+    for (glm::dvec4& t : e_over_pi.texels)
+      t = glm::dvec4(s.sh[0] * (0.5 / std::sqrt(std::numbers::pi)) / std::numbers::pi, 1);
     Image irradiance = make_cube(context(), "irradiance", 2, 1);
     upload_cube(submitter(), irradiance, {e_over_pi}, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
-    Image color = Image::dedicated(context(), {.name = "color", .format = VK_FORMAT_R16G16B16A16_SFLOAT, .width = kSize, .height = kSize});
+    Image color = Image::dedicated(
+        context(), {.name = "color", .format = VK_FORMAT_R16G16B16A16_SFLOAT, .width = kSize, .height = kSize});
 
     IblInputs in;
     in.camera = camera.handle();
     in.depth = &depth, in.normal = &normal, in.albedo = &albedo, in.material = &material;
     in.specular = &specular, in.brdf_lut = &lut, in.color = &color;
-    if (full) in.direct = &direct, in.sh = &sh, in.ao = &ao;
-    else in.irradiance = &irradiance;
+    if (full)
+      in.direct = &direct, in.sh = &sh, in.ao = &ao;
+    else
+      in.irradiance = &irradiance;
     IblFallbacks fallbacks(context());
     Sampler linear(context(), {.filter = Filter::linear}), nearest(context(), {.filter = Filter::nearest});
     submitter().run([&](VkCommandBuffer cmd) {
@@ -181,8 +188,8 @@ class IblGpuTest : public GpuTest {
     const glm::dvec3 v = glm::normalize(eye - p);
     const IblSurface surface{texel3(s.albedo, t), s.material[4 * t], s.material[4 * t + 1]};
     const double n_dot_v = std::clamp(glm::dot(n, v), 1e-4, 1.0);
-    const glm::dvec3 irradiance = full ? glm::max(evaluate_sh(s.sh, n), glm::dvec3(0.0))
-                                       : s.sh[0] * (0.5 / std::sqrt(std::numbers::pi));
+    const glm::dvec3 irradiance =
+        full ? glm::max(evaluate_sh(s.sh, n), glm::dvec3(0.0)) : s.sh[0] * (0.5 / std::sqrt(std::numbers::pi));
     const double lod = surface.roughness * (kSpecularMips - 1);
     const glm::dvec3 prefiltered = s.specular_base * (1 + kMipStep * lod);
     const glm::dvec2 ab = lut_lookup(s.lut, n_dot_v, surface.roughness);

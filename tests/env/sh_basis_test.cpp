@@ -1,15 +1,14 @@
 // The real SH basis on the CPU: hand-written bands 0 to 2 (fixing ordering and sign),
 // orthonormality up to band 4 by exact quadrature, the cosine-lobe factors, and the windows.
+#include "nodes/env/common/sh_basis.h"
+
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <random>
 #include <vector>
-
-#include "nodes/env/common/sh_basis.h"
 
 namespace lg::test {
 namespace {
@@ -23,8 +22,9 @@ TEST(ShBasis, BandsZeroToTwoMatchTheClosedForms) {
     const glm::dvec3 d = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
     const double x = d.x, y = d.y, z = d.z;
     const double c1 = std::sqrt(3 / (4 * pi)), c2 = std::sqrt(15 / (4 * pi)), c20 = std::sqrt(5 / (16 * pi));
-    const double expected[9] = {1 / (2 * std::sqrt(pi)), c1 * y, c1 * z, c1 * x, c2 * x * y, c2 * y * z,
-                                c20 * (3 * z * z - 1), c2 * x * z, c2 / 2 * (x * x - y * y)};
+    const double expected[9] = {
+        1 / (2 * std::sqrt(pi)), c1 * y, c1 * z, c1 * x, c2 * x * y, c2 * y * z, c20 * (3 * z * z - 1), c2 * x * z,
+        c2 / 2 * (x * x - y * y)};
     double y_lm[9];
     sh_evaluate(2, d, y_lm);
     for (int i = 0; i < 9; ++i) EXPECT_NEAR(y_lm[i], expected[i], 1e-14) << i;

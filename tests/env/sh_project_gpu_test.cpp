@@ -5,11 +5,10 @@
 // about 5e-8 here.
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-#include <glm/mat3x3.hpp>
-
 #include <cmath>
 #include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 #include <iostream>
 #include <limits>
 #include <numbers>
@@ -70,8 +69,7 @@ class ShProjectGpuTest : public GpuTest {
     return worst;
   }
 
-  double check_against_reference(const CubeImage& env, int order, ShWindow window, bool convolve,
-                                 const char* what) {
+  double check_against_reference(const CubeImage& env, int order, ShWindow window, bool convolve, const char* what) {
     const ShProjectSettings settings = sh_project_settings(order, window, 0.05, convolve);
     const CubeImage seen = round_to_half(env);
     const ShReference reference = project_sh_reference(seen, order, settings.band_factors);
@@ -86,7 +84,8 @@ class ShProjectGpuTest : public GpuTest {
 
 TEST_F(ShProjectGpuTest, MatchesBruteForceOnRandomEnvironments) {
   for (int order = 1; order <= 4; ++order)
-    check_against_reference(random_environment(order == 4 ? 128 : 40, 100 + order), order, ShWindow::none, false, "random");
+    check_against_reference(random_environment(order == 4 ? 128 : 40, 100 + order), order, ShWindow::none, false,
+                            "random");
 }
 
 TEST_F(ShProjectGpuTest, MatchesBruteForceWithWindowsAndCosineConvolution) {
@@ -188,7 +187,8 @@ TEST_F(ShProjectGpuTest, SunAndNonFiniteTexels) {
   check_against_reference(env, 4, ShWindow::none, true, "NaN and Inf texels");
   const GpuSh gpu = project(env, sh_project_settings(2, ShWindow::none, 0, false));
   EXPECT_EQ(gpu.non_finite, 3.0);
-  for (const glm::dvec3& c : gpu.coefficients) EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+  for (const glm::dvec3& c : gpu.coefficients)
+    EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
 }
 
 }  // namespace

@@ -7,9 +7,8 @@
 // stress cases (a sun 1e5 times the sky, the sun below the horizon, turbidity at its bounds).
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <iostream>
 
 #include "nodes/env/sky/sky_kernel.h"
@@ -89,7 +88,8 @@ TEST_F(SkyGpuTest, ZenithIsOneAndTheSunCarriesItsEnergy) {
   // Every mip integrates to the same radiant energy (sky and sun).
   const std::vector<CubeImage> gpu = render(model, 32);
   const glm::dvec3 total = integrate(gpu[0]);
-  for (const CubeImage& mip : gpu) EXPECT_LT(glm::length(integrate(mip) - total), 3e-3 * glm::length(total)) << mip.size;
+  for (const CubeImage& mip : gpu)
+    EXPECT_LT(glm::length(integrate(mip) - total), 3e-3 * glm::length(total)) << mip.size;
 }
 
 TEST_F(SkyGpuTest, StressStaysFiniteAndBounded) {

@@ -5,14 +5,12 @@
 // random environment (bounded here at 2.5%, 2.5%, 5% so regressions show); 256 samples meet it
 // (0.44%, 0.67%, 0.97%, asserted under 1%). The probes, whose small sources are thousands of
 // times their sky, are printed and only bounded: grace 12.6%, 11.8%, 22.3% at 64 samples and
-// 3.5%, 3.3%, 5.0% at 1024; pisa 7.5%, 5.2%, 10.8% and 0.58%, 0.43%, 0.92%. Invariants: a constant environment comes back at
-// every roughness; roughness 0 is the environment itself. Stress: a sun 1e5 times the sky,
-// NaN and Inf texels.
+// 3.5%, 3.3%, 5.0% at 1024; pisa 7.5%, 5.2%, 10.8% and 0.58%, 0.43%, 0.92%. Invariants: a constant environment comes
+// back at every roughness; roughness 0 is the environment itself. Stress: a sun 1e5 times the sky, NaN and Inf texels.
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <iostream>
 #include <limits>
 #include <random>
@@ -128,7 +126,8 @@ TEST_F(SpecularPrefilterGpuTest, SunAndNonFiniteTexels) {
   for (uint32_t m : {1u, 2u, 4u}) {
     const double rms = relative_rms(seen, out[m], prefilter_roughness(m, 5), 100, 60 + m);
     std::cout << "sun 1e5 x sky, roughness " << prefilter_roughness(m, 5) << ": RMS relative error " << rms << "\n";
-    for (const glm::dvec4& t : out[m].texels) ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+    for (const glm::dvec4& t : out[m].texels)
+      ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
   }
   env.at(0, 3, 3) = glm::dvec4(std::numeric_limits<double>::quiet_NaN(), 1, 1, 1);
   env.at(4, 10, 50) = glm::dvec4(1, std::numeric_limits<double>::infinity(), 1, 1);

@@ -37,6 +37,8 @@ void record_brdf_lut(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd
   dispatch_texels(cmd, lut.desc().width, lut.desc().height);
 }
 
-std::unique_ptr<NodeKernel> make_brdf_lut_kernel(const PlanNode& node) { return std::make_unique<BrdfLutKernel>(node); }
+std::unique_ptr<NodeKernel> make_brdf_lut_kernel(const PlanNode& node) {
+  return std::make_unique<BrdfLutKernel>(node);
+}
 
 }  // namespace lg

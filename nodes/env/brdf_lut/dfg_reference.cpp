@@ -1,10 +1,9 @@
 #include "nodes/env/brdf_lut/dfg_reference.h"
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <numbers>
 
 namespace lg {
@@ -24,7 +23,9 @@ double ggx(double n_dot_h, double alpha) {
   return a2 / (pi * d * d);
 }
 
-glm::dvec3 view(double n_dot_v) { return {std::sqrt(1 - n_dot_v * n_dot_v), 0, n_dot_v}; }
+glm::dvec3 view(double n_dot_v) {
+  return {std::sqrt(1 - n_dot_v * n_dot_v), 0, n_dot_v};
+}
 
 }  // namespace
 

@@ -1,8 +1,7 @@
 #include "nodes/env/common/cube_map.h"
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 
 namespace lg {
@@ -11,12 +10,24 @@ glm::dvec3 cube_direction(int face, double u, double v) {
   const double a = 2 * u - 1, b = 2 * v - 1;
   glm::dvec3 d;
   switch (face) {
-    case 0: d = {1, -b, -a}; break;
-    case 1: d = {-1, -b, a}; break;
-    case 2: d = {a, 1, b}; break;
-    case 3: d = {a, -1, -b}; break;
-    case 4: d = {a, -b, 1}; break;
-    default: d = {-a, -b, -1}; break;
+    case 0:
+      d = {1, -b, -a};
+      break;
+    case 1:
+      d = {-1, -b, a};
+      break;
+    case 2:
+      d = {a, 1, b};
+      break;
+    case 3:
+      d = {a, -1, -b};
+      break;
+    case 4:
+      d = {a, -b, 1};
+      break;
+    default:
+      d = {-a, -b, -1};
+      break;
   }
   return glm::normalize(d);
 }
@@ -37,7 +48,9 @@ CubeCoord cube_coord(const glm::dvec3& d) {
 
 namespace {
 // Solid angle subtended by [0, x] x [0, y] of the face plane at distance 1.
-double corner_area(double x, double y) { return std::atan2(x * y, std::sqrt(x * x + y * y + 1)); }
+double corner_area(double x, double y) {
+  return std::atan2(x * y, std::sqrt(x * x + y * y + 1));
+}
 }  // namespace
 
 double texel_solid_angle(uint32_t size, uint32_t i, uint32_t j) {

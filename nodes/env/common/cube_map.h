@@ -5,10 +5,9 @@
 // Also host-side cube images with their texel solid angles and area-correct mip chains.
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-
-#include <cstdint>
 #include <vector>
 
 namespace lg {
@@ -42,7 +41,9 @@ struct CubeImage {
 
   explicit CubeImage(uint32_t face_size = 0) : size(face_size), texels(6u * face_size * face_size) {}
   glm::dvec4& at(int face, uint32_t i, uint32_t j) { return texels[(uint64_t(face) * size + j) * size + i]; }
-  const glm::dvec4& at(int face, uint32_t i, uint32_t j) const { return texels[(uint64_t(face) * size + j) * size + i]; }
+  const glm::dvec4& at(int face, uint32_t i, uint32_t j) const {
+    return texels[(uint64_t(face) * size + j) * size + i];
+  }
   glm::dvec3 direction(int face, uint32_t i, uint32_t j) const {
     return cube_direction(face, (i + 0.5) / size, (j + 0.5) / size);
   }

@@ -12,6 +12,8 @@ namespace lg {
 
 std::span<const EmbeddedShader> env_shaders();  // generated
 
-inline std::span<const uint32_t> env_shader(std::string_view path) { return find_shader(env_shaders(), path); }
+inline std::span<const uint32_t> env_shader(std::string_view path) {
+  return find_shader(env_shaders(), path);
+}
 
 }  // namespace lg

@@ -8,7 +8,8 @@ namespace lg {
 
 glm::dvec2 equirect_uv(const glm::dvec3& d) {
   const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  return {0.5 + std::atan2(d.x, -d.z) / (2 * std::numbers::pi), std::acos(std::clamp(d.y / len, -1.0, 1.0)) / std::numbers::pi};
+  return {0.5 + std::atan2(d.x, -d.z) / (2 * std::numbers::pi),
+          std::acos(std::clamp(d.y / len, -1.0, 1.0)) / std::numbers::pi};
 }
 
 glm::dvec3 equirect_direction(const glm::dvec2& uv) {

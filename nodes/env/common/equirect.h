@@ -4,11 +4,10 @@
 // cube map (env.load's reference).
 #pragma once
 
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-
-#include <cstdint>
 #include <vector>
 
 #include "nodes/env/common/cube_map.h"

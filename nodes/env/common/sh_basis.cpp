@@ -16,7 +16,8 @@ void sh_evaluate(int order, const glm::dvec3& d, std::span<double> out) {
   for (int m = 0; m <= order; ++m) {
     double p_prev = 0, p = pmm;
     for (int l = m; l <= order; ++l) {
-      if (l == m + 1) p_prev = p, p = d.z * (2 * m + 1) * pmm;
+      if (l == m + 1)
+        p_prev = p, p = d.z * (2 * m + 1) * pmm;
       else if (l > m + 1) {
         const double next = ((2 * l - 1) * d.z * p - (l + m - 1) * p_prev) / (l - m);
         p_prev = p, p = next;
@@ -24,7 +25,8 @@ void sh_evaluate(int order, const glm::dvec3& d, std::span<double> out) {
       double ratio = 1;  // (l - m)! / (l + m)!
       for (int k = l - m + 1; k <= l + m; ++k) ratio /= k;
       const double k_lm = std::sqrt((2 * l + 1) / (4 * std::numbers::pi) * ratio);
-      if (m == 0) out[l * (l + 1)] = k_lm * p;
+      if (m == 0)
+        out[l * (l + 1)] = k_lm * p;
       else {
         out[l * (l + 1) + m] = std::numbers::sqrt2 * k_lm * p * re;
         out[l * (l + 1) - m] = std::numbers::sqrt2 * k_lm * p * im;

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <glm/vec3.hpp>
-
 #include <span>
 #include <string_view>
 #include <vector>
@@ -13,7 +12,9 @@
 namespace lg {
 
 inline constexpr int kMaxShOrder = 4;
-constexpr int sh_count(int order) { return (order + 1) * (order + 1); }
+constexpr int sh_count(int order) {
+  return (order + 1) * (order + 1);
+}
 
 // Y_lm(direction) for every l <= order into out[l (l + 1) + m]; `direction` is unit.
 void sh_evaluate(int order, const glm::dvec3& direction, std::span<double> out);

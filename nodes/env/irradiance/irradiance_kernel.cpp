@@ -36,9 +36,10 @@ uint32_t irradiance_source_mip(const Image& env, uint32_t source_mip) {
 
 void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
                        uint32_t source_mip, Image& env, VkSampler sampler, Image& irradiance) {
-  const Pipeline& pipeline = pipelines.compute(
-      {name, env_shader("nodes/env/irradiance/shaders/irradiance.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}});
+  const Pipeline& pipeline =
+      pipelines.compute({name,
+                         env_shader("nodes/env/irradiance/shaders/irradiance.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}});
   const uint32_t mip = irradiance_source_mip(env, source_mip);
   const DescriptorWrite writes[] = {
       sampled_image(0, env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1}), sampler),

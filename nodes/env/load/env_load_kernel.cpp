@@ -18,8 +18,9 @@ namespace {
 
 constexpr uint32_t kGroup = 8;
 
-void barrier(VkCommandBuffer cmd, const Image* image, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src_stage,
-             VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+void barrier(VkCommandBuffer cmd, const Image* image, VkImageLayout from, VkImageLayout to,
+             VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
+             VkAccessFlags2 dst_access) {
   auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
   b.srcStageMask = src_stage, b.srcAccessMask = src_access, b.dstStageMask = dst_stage, b.dstAccessMask = dst_access;
   b.oldLayout = from, b.newLayout = to;
@@ -73,8 +74,10 @@ uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size) {
 }
 
 EquirectSource::EquirectSource(Context& gpu, const EquirectPixels& pixels)
-    : image(Image::dedicated(gpu, {.name = "env.load equirect", .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                   .width = pixels.width, .height = pixels.height})),
+    : image(Image::dedicated(gpu, {.name = "env.load equirect",
+                                   .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                   .width = pixels.width,
+                                   .height = pixels.height})),
       staging_(Buffer::dedicated(gpu, {.name = "env.load staging", .size = pixels.rgba.size() * sizeof(float)},
                                  MemoryUse::upload)) {
   std::memcpy(staging_.mapped(), pixels.rgba.data(), pixels.rgba.size() * sizeof(float));
@@ -104,17 +107,21 @@ void record_env_load(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd
     vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
   };
   const uint32_t face = cube.desc().width;
-  const Pipeline& resample = pipelines.compute(
-      {name + " resample", env_shader("nodes/env/load/shaders/equirect_to_cube.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}, sizeof(int32_t)});
-  const DescriptorWrite resample_writes[] = {sampled_image(0, source.image.view(), nearest), storage_image(1, mip_view(0))};
+  const Pipeline& resample =
+      pipelines.compute({name + " resample",
+                         env_shader("nodes/env/load/shaders/equirect_to_cube.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                         sizeof(int32_t)});
+  const DescriptorWrite resample_writes[] = {sampled_image(0, source.image.view(), nearest),
+                                             storage_image(1, mip_view(0))};
   bind_pipeline(gpu, cmd, resample, resample_writes);
   push_constants(cmd, resample, int32_t(equirect_supersample(source.image.desc().width, face)));
   dispatch(face);
 
-  const Pipeline& downsample = pipelines.compute(
-      {name + " mips", env_shader("nodes/env/load/shaders/cube_downsample.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}});
+  const Pipeline& downsample =
+      pipelines.compute({name + " mips",
+                         env_shader("nodes/env/load/shaders/cube_downsample.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}});
   for (uint32_t mip = 1; mip < cube.desc().mips; ++mip) {
     // The finer mip's writes before this dispatch's reads (the image stays in GENERAL).
     barrier(cmd, &cube, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -127,6 +134,8 @@ void record_env_load(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd
   }
 }
 
-std::unique_ptr<NodeKernel> make_env_load_kernel(const PlanNode& node) { return std::make_unique<EnvLoadKernel>(node); }
+std::unique_ptr<NodeKernel> make_env_load_kernel(const PlanNode& node) {
+  return std::make_unique<EnvLoadKernel>(node);
+}
 
 }  // namespace lg

@@ -13,8 +13,8 @@
 namespace lg {
 namespace {
 
-constexpr uint32_t kTile = 16;       // nodes/env/sh_project/shaders/sh_project.comp
-constexpr uint64_t kTileSums = 25;   // vec4s per tile: every coefficient up to band 4
+constexpr uint32_t kTile = 16;      // nodes/env/sh_project/shaders/sh_project.comp
+constexpr uint64_t kTileSums = 25;  // vec4s per tile: every coefficient up to band 4
 
 struct ReducePush {  // nodes/env/sh_project/shaders/sh_reduce.comp
   float band_factor[8];
@@ -22,7 +22,9 @@ struct ReducePush {  // nodes/env/sh_project/shaders/sh_reduce.comp
   int32_t tiles;
 };
 
-uint32_t tiles_across(const Image& env) { return ((env.desc().width >> sh_project_mip(env)) + kTile - 1) / kTile; }
+uint32_t tiles_across(const Image& env) {
+  return ((env.desc().width >> sh_project_mip(env)) + kTile - 1) / kTile;
+}
 
 void partials_written_barrier(VkCommandBuffer cmd, const Buffer& partials) {
   auto b = vk_struct<VkBufferMemoryBarrier2>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2);
@@ -41,7 +43,8 @@ void partials_written_barrier(VkCommandBuffer cmd, const Buffer& partials) {
 class ShProjectKernel final : public NodeKernel {
  public:
   explicit ShProjectKernel(const PlanNode& node)
-      : settings_(sh_project_settings(int(param_number(node, "order")), sh_window_from_name(param_string(node, "window")),
+      : settings_(sh_project_settings(int(param_number(node, "order")),
+                                      sh_window_from_name(param_string(node, "window")),
                                       param_number(node, "window_target"), param_bool(node, "convolve_cosine"))) {}
 
   void record(PassContext& ctx) override {
@@ -89,9 +92,10 @@ void record_sh_project(Context& gpu, PipelineCache& pipelines, VkCommandBuffer c
   const VkImageView faces =
       env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = sh_project_mip(env), .mip_count = 1});
   const DescriptorWrite tile_writes[] = {sampled_image(0, faces, sampler), storage_buffer(1, partials.handle())};
-  const Pipeline& project = pipelines.compute(
-      {name + " tiles", env_shader("nodes/env/sh_project/shaders/sh_project.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
+  const Pipeline& project =
+      pipelines.compute({name + " tiles",
+                         env_shader("nodes/env/sh_project/shaders/sh_project.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
   bind_pipeline(gpu, cmd, project, tile_writes);
   vkCmdDispatch(cmd, tiles, tiles, 6);
   partials_written_barrier(cmd, partials);
@@ -101,9 +105,11 @@ void record_sh_project(Context& gpu, PipelineCache& pipelines, VkCommandBuffer c
   push.order = settings.order;
   push.tiles = int32_t(tiles * tiles * 6);
   const DescriptorWrite sum_writes[] = {storage_buffer(0, partials.handle()), storage_buffer(1, coefficients.handle())};
-  const Pipeline& reduce = pipelines.compute(
-      {name + " sum", env_shader("nodes/env/sh_project/shaders/sh_reduce.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, sizeof(ReducePush)});
+  const Pipeline& reduce =
+      pipelines.compute({name + " sum",
+                         env_shader("nodes/env/sh_project/shaders/sh_reduce.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                         sizeof(ReducePush)});
   bind_pipeline(gpu, cmd, reduce, sum_writes);
   push_constants(cmd, reduce, push);
   vkCmdDispatch(cmd, 1, 1, 1);

@@ -1,8 +1,7 @@
 #include "nodes/env/sky/sky_kernel.h"
 
-#include <glm/vec4.hpp>
-
 #include <algorithm>
+#include <glm/vec4.hpp>
 
 #include "nodes/common/node_params.h"
 #include "nodes/env/common/env_shaders.h"
@@ -13,7 +12,7 @@
 namespace lg {
 namespace {
 
-constexpr int kSunPoints = 64;    // nodes/env/sky/shaders/sky.comp
+constexpr int kSunPoints = 64;  // nodes/env/sky/shaders/sky.comp
 constexpr uint32_t kGroup = 8;
 
 struct Push {  // nodes/env/sky/shaders/sky.comp
@@ -69,6 +68,8 @@ void record_sky(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
   }
 }
 
-std::unique_ptr<NodeKernel> make_sky_kernel(const PlanNode& node) { return std::make_unique<SkyKernel>(node); }
+std::unique_ptr<NodeKernel> make_sky_kernel(const PlanNode& node) {
+  return std::make_unique<SkyKernel>(node);
+}
 
 }  // namespace lg

@@ -1,9 +1,8 @@
 #include "nodes/env/sky/sky_model.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 
 namespace lg {
@@ -31,12 +30,15 @@ SkyModel make_sky_model(const SkyParams& p) {
   const double length = glm::length(p.sun_direction);
   m.sun = length > 1e-12 ? p.sun_direction / length : glm::dvec3(0, 1, 0);
   const double across = std::hypot(m.sun.x, m.sun.z);
-  m.sky_sun = m.sun.y >= 0 ? m.sun : across > 0 ? glm::dvec3(m.sun.x / across, 0, m.sun.z / across) : glm::dvec3(1, 0, 0);
+  m.sky_sun = m.sun.y >= 0 ? m.sun
+              : across > 0 ? glm::dvec3(m.sun.x / across, 0, m.sun.z / across)
+                           : glm::dvec3(1, 0, 0);
   m.sun_radiance = p.sun_intensity;
   const double t = p.turbidity;
-  m.perez = {{{0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771, -0.0670 * t + 0.3703},
-              {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989, -0.0033 * t + 0.0452},
-              {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537, -0.0109 * t + 0.0529}}};
+  m.perez = {
+      {{0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771, -0.0670 * t + 0.3703},
+       {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989, -0.0033 * t + 0.0452},
+       {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537, -0.0109 * t + 0.0529}}};
   // A sun below the horizon lights the sky as at sunset (the model has no night).
   const double theta_s = std::acos(std::clamp(m.sky_sun.y, 0.0, 1.0));
   const double t2 = t * t, s = theta_s, s2 = s * s, s3 = s2 * s;
@@ -72,7 +74,9 @@ glm::dvec3 sky_radiance(const SkyModel& m, const glm::dvec3& direction) {
   return xyy_to_rec709(v[1], v[2], v[0]);
 }
 
-double sun_solid_angle() { return 2 * std::numbers::pi * (1 - std::cos(kSunAngularRadius)); }
+double sun_solid_angle() {
+  return 2 * std::numbers::pi * (1 - std::cos(kSunAngularRadius));
+}
 
 CubeImage render_sky_reference(const SkyModel& model, uint32_t size, uint32_t subdivide, int sun_points) {
   CubeImage cube(size);
@@ -88,7 +92,8 @@ CubeImage render_sky_reference(const SkyModel& model, uint32_t size, uint32_t su
         cube.at(f, i, j) = glm::dvec4(sum / texel_solid_angle(size, i, j), 1.0);
       }
   const glm::dvec3 axis = model.sun;
-  const glm::dvec3 t = glm::normalize(glm::cross(std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0), axis));
+  const glm::dvec3 t =
+      glm::normalize(glm::cross(std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0), axis));
   const glm::dvec3 b = glm::cross(axis, t);
   const double energy = model.sun_radiance * sun_solid_angle() / sun_points;
   for (int k = 0; k < sun_points; ++k) {

@@ -5,10 +5,9 @@
 // zenith; below the horizon a uniform Lambertian ground of albedo 0.3 lit by that sky and sun.
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include <array>
 #include <cstdint>
+#include <glm/vec3.hpp>
 
 #include "nodes/env/common/cube_map.h"
 

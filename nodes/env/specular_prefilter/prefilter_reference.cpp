@@ -1,8 +1,7 @@
 #include "nodes/env/specular_prefilter/prefilter_reference.h"
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <numbers>
 
 namespace lg {

@@ -35,9 +35,11 @@ class SpecularPrefilterKernel final : public NodeKernel {
 
 void record_specular_prefilter(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
                                uint32_t samples, Image& env, VkSampler trilinear, Image& prefiltered) {
-  const Pipeline& pipeline = pipelines.compute(
-      {name, env_shader("nodes/env/specular_prefilter/shaders/prefilter.comp"),
-       {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}, sizeof(Push)});
+  const Pipeline& pipeline =
+      pipelines.compute({name,
+                         env_shader("nodes/env/specular_prefilter/shaders/prefilter.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                         sizeof(Push)});
   const uint32_t mips = prefiltered.desc().mips;
   for (uint32_t mip = 0; mip < mips; ++mip) {
     const uint32_t size = std::max(1u, prefiltered.desc().width >> mip);
@@ -45,7 +47,8 @@ void record_specular_prefilter(Context& gpu, PipelineCache& pipelines, VkCommand
         sampled_image(0, env.view(), trilinear),
         storage_image(1, prefiltered.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1}))};
     bind_pipeline(gpu, cmd, pipeline, writes);
-    push_constants(cmd, pipeline, Push{float(prefilter_roughness(mip, mips)), std::clamp(samples, 1u, kMaxPrefilterSamples)});
+    push_constants(cmd, pipeline,
+                   Push{float(prefilter_roughness(mip, mips)), std::clamp(samples, 1u, kMaxPrefilterSamples)});
     vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
   }
 }

@@ -17,7 +17,9 @@ namespace lg {
 inline constexpr uint32_t kMaxPrefilterSamples = 32768;
 
 // The perceptual roughness mip `mip` of a `mips`-level prefiltered map holds.
-inline double prefilter_roughness(uint32_t mip, uint32_t mips) { return mips > 1 ? double(mip) / (mips - 1) : 0.0; }
+inline double prefilter_roughness(uint32_t mip, uint32_t mips) {
+  return mips > 1 ? double(mip) / (mips - 1) : 0.0;
+}
 
 // Records every mip of `prefiltered` (rgba16f cube, in GENERAL) from `env` (a cube map with its
 // mips, in READ_ONLY_OPTIMAL), read through `trilinear`.

@@ -40,7 +40,9 @@ void image_barrier(VkCommandBuffer cmd, const Image& image, VkImageLayout from, 
 }
 
 Image fallback_image(Context& gpu, const char* name, ImageKind kind, VkFormat format) {
-  return Image::dedicated(gpu, {.name = std::string("lighting.ibl fallback ") + name, .kind = kind, .format = format,
+  return Image::dedicated(gpu, {.name = std::string("lighting.ibl fallback ") + name,
+                                .kind = kind,
+                                .format = format,
                                 .layers = kind == ImageKind::cube ? 6u : 1u});
 }
 
@@ -93,13 +95,14 @@ void IblFallbacks::prepare(VkCommandBuffer cmd) {
   cleared_ = true;
   const VkClearColorValue zero{};
   for (Image* image : {&direct, &ao, &bent_normals, &irradiance}) {
-    image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
-                  VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT);
     const VkImageSubresourceRange range = image->whole_range();
     vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
     image_barrier(cmd, *image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
   }
   vkCmdFillBuffer(cmd, sh.handle(), 0, VK_WHOLE_SIZE, 0);
   auto b = vk_struct<VkBufferMemoryBarrier2>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2);
@@ -152,6 +155,8 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
   dispatch_texels(cmd, in.color->desc().width, in.color->desc().height);
 }
 
-std::unique_ptr<NodeKernel> make_ibl_kernel(const PlanNode& node) { return std::make_unique<IblKernel>(node); }
+std::unique_ptr<NodeKernel> make_ibl_kernel(const PlanNode& node) {
+  return std::make_unique<IblKernel>(node);
+}
 
 }  // namespace lg
