@@ -1,6 +1,13 @@
 #include "nodes/builtin_kernels.h"
 
+#include "nodes/env/brdf_lut/brdf_lut_kernel.h"
+#include "nodes/env/irradiance/irradiance_kernel.h"
+#include "nodes/env/load/env_load_kernel.h"
+#include "nodes/env/sh_project/sh_project_kernel.h"
+#include "nodes/env/sky/sky_kernel.h"
+#include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 #include "nodes/lighting/deferred/deferred_kernel.h"
+#include "nodes/lighting/ibl/ibl_kernel.h"
 #include "nodes/occlusion/gtao/gtao_kernel.h"
 #include "nodes/occlusion/ssao/ssao_kernel.h"
 #include "nodes/post/tonemap/tonemap_kernel.h"
@@ -12,7 +19,14 @@ const KernelRegistry& builtin_kernels() {
   static const KernelRegistry registry = [] {
     KernelRegistry r;
     r.add("scene.gbuffer", make_gbuffer_kernel);
+    r.add("env.brdf_lut", make_brdf_lut_kernel);
+    r.add("env.irradiance", make_irradiance_kernel);
+    r.add("env.load", make_env_load_kernel);
+    r.add("env.sh_project", make_sh_project_kernel);
+    r.add("env.sky", make_sky_kernel);
+    r.add("env.specular_prefilter", make_specular_prefilter_kernel);
     r.add("lighting.deferred", make_deferred_kernel);
+    r.add("lighting.ibl", make_ibl_kernel);
     r.add("occlusion.gtao", make_gtao_kernel);
     r.add("occlusion.ssao", make_ssao_kernel);
     r.add("post.tonemap", make_tonemap_kernel);

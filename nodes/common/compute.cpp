@@ -15,7 +15,7 @@ void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const
   const Pipeline& pipeline = ctx.pipelines().compute(desc);
   bind_pipeline(ctx.gpu(), ctx.cmd(), pipeline, writes);
   if (!push.empty()) push_constants(ctx.cmd(), pipeline, push.data(), desc.push_constant_bytes);
-  vkCmdDispatch(ctx.cmd(), (width + tile - 1) / tile, (height + tile - 1) / tile, 1);
+  dispatch_texels(ctx.cmd(), width, height, tile);
 }
 
 }  // namespace lg

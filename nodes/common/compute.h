@@ -16,6 +16,10 @@ namespace lg {
 // return for texels outside the target, so any size dispatches.
 inline constexpr uint32_t kTileSize = 8;
 
+inline void dispatch_texels(VkCommandBuffer cmd, uint32_t width, uint32_t height, uint32_t tile = kTileSize) {
+  vkCmdDispatch(cmd, (width + tile - 1) / tile, (height + tile - 1) / tile, 1);
+}
+
 // The pipeline of `shader` (a path under nodes/, see node_shaders.h) takes its bindings from
 // `writes`; the pass's name labels it in validation messages.
 void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,

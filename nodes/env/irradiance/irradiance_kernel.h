@@ -1,0 +1,27 @@
+// The kernel of env.irradiance, and the pass it records (which tests run directly): irradiance
+// / pi by direct cosine convolution over one mip of the environment.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "runtime/exec/node_kernel.h"
+
+namespace lg {
+
+// lavapipe ends an invocation's loops after 65535 iterations in all, so the mip integrated
+// over has faces of at most 64 (6 x 64^2 texels): a finer `source_mip` than that is coarsened.
+inline constexpr uint32_t kIrradianceMaxSourceFace = 64;
+uint32_t irradiance_source_mip(const Image& env, uint32_t source_mip);
+
+// Records `irradiance` (rgba16f cube, GENERAL, mip 0) from mip irradiance_source_mip(env,
+// source_mip) of `env` (READ_ONLY_OPTIMAL).
+void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
+                       uint32_t source_mip, Image& env, VkSampler sampler, Image& irradiance);
+
+std::unique_ptr<NodeKernel> make_irradiance_kernel(const PlanNode& node);
+
+}  // namespace lg

@@ -1,0 +1,141 @@
+#include "nodes/env/load/env_load_kernel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <optional>
+
+#include "nodes/common/node_params.h"
+#include "nodes/common/node_shaders.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/pipeline.h"
+#include "runtime/gpu/vk_struct.h"
+#include "runtime/image/image_file.h"
+
+namespace lg {
+namespace {
+
+constexpr uint32_t kGroup = 8;
+
+void barrier(VkCommandBuffer cmd, const Image* image, VkImageLayout from, VkImageLayout to,
+             VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
+             VkAccessFlags2 dst_access) {
+  auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
+  b.srcStageMask = src_stage, b.srcAccessMask = src_access, b.dstStageMask = dst_stage, b.dstAccessMask = dst_access;
+  b.oldLayout = from, b.newLayout = to;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image->handle();
+  b.subresourceRange = image->whole_range();
+  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
+  dep.imageMemoryBarrierCount = 1;
+  dep.pImageMemoryBarriers = &b;
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+class EnvLoadKernel final : public NodeKernel {
+ public:
+  explicit EnvLoadKernel(const PlanNode& node) : path_(param_string(node, "path")) {
+    ImageData data = load_image(path_);
+    pixels_ = sanitize_equirect(data.width, data.height, std::move(data.rgba), param_number(node, "intensity"));
+    if (pixels_.non_finite)
+      std::cerr << "env.load '" << node.id << "': " << pixels_.non_finite << " non-finite texels of " << path_
+                << " replaced by 0\n";
+  }
+
+  void record(PassContext& ctx) override {
+    if (!source_) source_.emplace(ctx.gpu(), pixels_);
+    record_env_load(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, *source_, ctx.nearest_sampler(),
+                    ctx.image("out.cube"));
+  }
+
+ private:
+  std::string path_;
+  EquirectPixels pixels_;
+  std::optional<EquirectSource> source_;
+};
+
+}  // namespace
+
+EquirectPixels sanitize_equirect(uint32_t width, uint32_t height, std::vector<float> rgba, double intensity) {
+  EquirectPixels p{width, height, std::move(rgba), 0};
+  for (size_t t = 0; t + 3 < p.rgba.size(); t += 4) {
+    float* texel = &p.rgba[t];
+    const bool finite = std::isfinite(texel[0]) && std::isfinite(texel[1]) && std::isfinite(texel[2]);
+    for (int c = 0; c < 3; ++c) texel[c] = finite ? float(texel[c] * intensity) : 0.0f;
+    p.non_finite += finite ? 0 : 1;
+  }
+  return p;
+}
+
+uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size) {
+  // A face spans a quarter of the width; a cube texel about width / (4 face) equirect texels.
+  return std::clamp((equirect_width + 4 * face_size - 1) / (4 * face_size), 1u, 8u);
+}
+
+EquirectSource::EquirectSource(Context& gpu, const EquirectPixels& pixels)
+    : image(Image::dedicated(gpu, {.name = "env.load equirect",
+                                   .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                   .width = pixels.width,
+                                   .height = pixels.height})),
+      staging_(Buffer::dedicated(gpu, {.name = "env.load staging", .size = pixels.rgba.size() * sizeof(float)},
+                                 MemoryUse::upload)) {
+  std::memcpy(staging_.mapped(), pixels.rgba.data(), pixels.rgba.size() * sizeof(float));
+}
+
+void EquirectSource::upload(VkCommandBuffer cmd) {
+  if (uploaded_) return;
+  uploaded_ = true;
+  barrier(cmd, &image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
+          VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {image.desc().width, image.desc().height, 1};
+  vkCmdCopyBufferToImage(cmd, staging_.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  barrier(cmd, &image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+          VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+          VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+void record_env_load(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
+                     EquirectSource& source, VkSampler nearest, Image& cube) {
+  source.upload(cmd);
+  auto mip_view = [&](uint32_t mip) {
+    return cube.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1});
+  };
+  auto dispatch = [&](uint32_t size) {
+    vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
+  };
+  const uint32_t face = cube.desc().width;
+  const Pipeline& resample =
+      pipelines.compute({name + " resample",
+                         node_shader("nodes/env/load/shaders/equirect_to_cube.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                         sizeof(int32_t)});
+  const DescriptorWrite resample_writes[] = {sampled_image(0, source.image.view(), nearest),
+                                             storage_image(1, mip_view(0))};
+  bind_pipeline(gpu, cmd, resample, resample_writes);
+  push_constants(cmd, resample, int32_t(equirect_supersample(source.image.desc().width, face)));
+  dispatch(face);
+
+  const Pipeline& downsample =
+      pipelines.compute({name + " mips",
+                         node_shader("nodes/env/load/shaders/cube_downsample.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}});
+  for (uint32_t mip = 1; mip < cube.desc().mips; ++mip) {
+    // The finer mip's writes before this dispatch's reads (the image stays in GENERAL).
+    barrier(cmd, &cube, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    const DescriptorWrite writes[] = {sampled_image(0, mip_view(mip - 1), nearest, VK_IMAGE_LAYOUT_GENERAL),
+                                      storage_image(1, mip_view(mip))};
+    bind_pipeline(gpu, cmd, downsample, writes);
+    dispatch(std::max(1u, face >> mip));
+  }
+}
+
+std::unique_ptr<NodeKernel> make_env_load_kernel(const PlanNode& node) {
+  return std::make_unique<EnvLoadKernel>(node);
+}
+
+}  // namespace lg

@@ -1,0 +1,83 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// lighting.ibl: image-based light of every G-buffer pixel, added to the direct light. Diffuse:
+// the albedo's diffuse part / pi times irradiance, from SH irradiance coefficients
+// (env.sh_project with convolve_cosine) or from an irradiance map holding E / pi
+// (env.irradiance); an ambient occlusion input multiplies it and a bent normal input replaces
+// the normal it is looked up along. Specular: the prefiltered map at mip roughness (mips - 1)
+// along the reflection, through the split sum (ibl_shading.glsl), occluded from the AO when
+// asked. Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
+#include "nodes/common/shaders/camera.glsl"
+#include "nodes/common/shaders/gbuffer.glsl"
+#include "nodes/env/common/shaders/sh_basis.glsl"
+#include "nodes/lighting/ibl/shaders/ibl_shading.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std140, binding = 0) uniform CameraBlock { Camera camera; };
+layout(binding = 1) uniform sampler2D depth_tex;
+layout(binding = 2) uniform sampler2D normal_tex;
+layout(binding = 3) uniform sampler2D albedo_tex;    // sRGB: the sampler decodes it
+layout(binding = 4) uniform sampler2D material_tex;  // r: perceptual roughness, g: metalness
+layout(binding = 5) uniform sampler2D direct_tex;
+layout(std430, binding = 6) readonly buffer Sh { vec4 sh[]; };
+layout(binding = 7) uniform samplerCube irradiance_map;
+layout(binding = 8) uniform samplerCube specular_map;
+layout(binding = 9) uniform sampler2D dfg_lut;
+layout(binding = 10) uniform sampler2D ao_tex;
+layout(binding = 11) uniform sampler2D bent_normal_tex;
+layout(binding = 12, rgba16f) uniform writeonly image2D color;
+layout(push_constant) uniform Push {
+  uint flags;  // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion
+  float intensity;
+};
+
+vec3 sh_irradiance(vec3 n) {
+  float y[LG_SH_MAX_COUNT];
+  sh_evaluate(n, y);
+  int count = min(int(sh.length()), LG_SH_MAX_COUNT);
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < count; ++k) e += sh[k].rgb * y[k];
+  return max(e, vec3(0.0));  // ringing must not light negatively
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(texel, imageSize(color)))) return;
+  vec3 direct = (flags & 2u) != 0u ? texelFetch(direct_tex, texel, 0).rgb : vec3(0.0);
+  float depth = texelFetch(depth_tex, texel, 0).r;
+  vec3 eye = camera.position.xyz;
+  if (depth <= 0.0) {
+    vec3 ray = normalize(world_position(camera, texel, 1.0) - eye);
+    imageStore(color, texel, vec4(direct + intensity * textureLod(specular_map, ray, 0.0).rgb, 1.0));
+    return;
+  }
+  vec3 p = world_position(camera, texel, depth);
+  vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
+  vec3 v = normalize(eye - p);
+  vec3 albedo = texelFetch(albedo_tex, texel, 0).rgb;
+  vec2 material = texelFetch(material_tex, texel, 0).rg;
+  float roughness = material.r, metalness = material.g;
+  vec3 diffuse_color = albedo * (1.0 - metalness);
+  vec3 f0 = mix(vec3(0.04), albedo, metalness);
+  float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
+
+  vec3 diffuse_normal = n;
+  if ((flags & 8u) != 0u) {
+    vec3 bent = texelFetch(bent_normal_tex, texel, 0).xyz;
+    if (dot(bent, bent) > 1e-6) diffuse_normal = normalize(bent);
+  }
+  vec3 diffuse = (flags & 1u) != 0u ? diffuse_color / LG_SH_PI * sh_irradiance(diffuse_normal)
+                                    : diffuse_color * textureLod(irradiance_map, diffuse_normal, 0.0).rgb;
+  float ao = (flags & 4u) != 0u ? texelFetch(ao_tex, texel, 0).r : 1.0;
+  diffuse *= ao;
+
+  float mips = float(textureQueryLevels(specular_map));
+  vec3 r = reflect(-v, n);
+  vec3 prefiltered = textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
+  vec2 scale_bias = textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
+  vec3 specular = split_sum_specular(prefiltered, f0, scale_bias);
+  if ((flags & 16u) != 0u && (flags & 4u) != 0u) specular *= specular_occlusion_from_ao(n_dot_v, ao, roughness);
+
+  imageStore(color, texel, vec4(direct + intensity * (diffuse + specular), 1.0));
+}

@@ -1,0 +1,139 @@
+// env.specular_prefilter's pass on lavapipe against the double-precision brute force over
+// every texel of the same (half-precision) environment, at output texels drawn at random from
+// fixed seeds. The target, RMS relative error under 1% at roughness 0.25, 0.5 and 1 on
+// a 128^2 cube at the default 64 samples, is NOT met: measured 1.26%, 1.27%, 3.06% on the
+// random environment (bounded here at 2.5%, 2.5%, 5% so regressions show); 256 samples meet it
+// (0.44%, 0.67%, 0.97%, asserted under 1%). The probes, whose small sources are thousands of
+// times their sky, are printed and only bounded: grace 12.6%, 11.8%, 22.3% at 64 samples and
+// 3.5%, 3.3%, 5.0% at 1024; pisa 7.5%, 5.2%, 10.8% and 0.58%, 0.43%, 0.92%. Invariants: a constant environment comes
+// back at every roughness; roughness 0 is the environment itself. Stress: a sun 1e5 times the sky, NaN and Inf texels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <iostream>
+#include <limits>
+#include <random>
+
+#include "nodes/env/specular_prefilter/prefilter_reference.h"
+#include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/sampler.h"
+#include "tests/env/env_test_support.h"
+#include "tests/runtime/gpu_test.h"
+
+namespace lg::test {
+namespace {
+
+constexpr uint32_t kDefaultSamples = 64;  // the schema's default
+
+class SpecularPrefilterGpuTest : public GpuTest {
+ protected:
+  // Every mip of the prefiltered map of `env` (its mips made on the CPU, area-correct).
+  std::vector<CubeImage> prefilter(const CubeImage& env, uint32_t out_size, uint32_t mips, uint32_t samples) {
+    const std::vector<CubeImage> chain = mip_chain(env);
+    Image source = make_cube(context(), "env", env.size, uint32_t(chain.size()));
+    upload_cube(submitter(), source, chain, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    Image out = make_cube(context(), "specular", out_size, mips);
+    Sampler trilinear(context(), {.filter = Filter::linear});
+    submitter().run([&](VkCommandBuffer cmd) {
+      transition(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      record_specular_prefilter(context(), pipelines(), cmd, "specular/prefilter", samples, source, trilinear.handle(),
+                                out);
+      compute_writes_barrier(cmd);
+    });
+    std::vector<CubeImage> result;
+    for (uint32_t m = 0; m < mips; ++m) result.push_back(read_cube(submitter(), out, m, VK_IMAGE_LAYOUT_GENERAL));
+    return result;
+  }
+
+  // RMS over `count` random texels of `mip` (and RGB) of (gpu - reference) / reference.
+  static double relative_rms(const CubeImage& env, const CubeImage& mip, double roughness, int count, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    double sum = 0;
+    for (int k = 0; k < count; ++k) {
+      const int f = int(rng() % 6);
+      const uint32_t i = uint32_t(rng() % mip.size), j = uint32_t(rng() % mip.size);
+      const glm::dvec3 ref = prefiltered_reference(env, mip.direction(f, i, j), roughness);
+      for (int c = 0; c < 3; ++c) {
+        const double e = (mip.at(f, i, j)[c] - ref[c]) / ref[c];
+        sum += e * e;
+      }
+    }
+    return std::sqrt(sum / (3.0 * count));
+  }
+
+  // Roughness 0.25, 0.5 and 1 (mips 1, 2 and 4 of 5) against bounds[0..2].
+  void check_roughness_levels(const CubeImage& env, const char* what, uint32_t samples, const double (&bounds)[3]) {
+    const CubeImage seen = round_to_half(env);
+    const uint32_t mips = 5;
+    const std::vector<CubeImage> out = prefilter(seen, 128, mips, samples);
+    const uint32_t levels[3] = {1, 2, 4};
+    for (int k = 0; k < 3; ++k) {
+      const double roughness = prefilter_roughness(levels[k], mips);
+      const double rms = relative_rms(seen, out[levels[k]], roughness, 150, 40 + k);
+      std::cout << what << ", roughness " << roughness << ", " << samples << " samples: RMS relative error " << rms
+                << "\n";
+      EXPECT_LT(rms, bounds[k]) << what << " roughness " << roughness << ", " << samples << " samples";
+    }
+  }
+};
+
+TEST_F(SpecularPrefilterGpuTest, RandomEnvironmentAtTheDefaultSamples) {
+  check_roughness_levels(random_environment(128, 500), "random", kDefaultSamples, {0.025, 0.025, 0.05});
+}
+
+TEST_F(SpecularPrefilterGpuTest, RandomEnvironmentWithinOnePercentAt256Samples) {
+  check_roughness_levels(random_environment(128, 500), "random", 256, {0.01, 0.01, 0.01});
+}
+
+TEST_F(SpecularPrefilterGpuTest, Probes) {
+  for (const char* name : {"grace.hdr", "pisa.hdr"}) {
+    const std::optional<CubeImage> env = load_probe(name, 128);
+    if (!env) GTEST_SKIP() << "../shared/data/env/" << name << " is missing";
+    check_roughness_levels(*env, name, kDefaultSamples, {0.5, 0.5, 0.5});
+    check_roughness_levels(*env, name, 1024, {0.1, 0.1, 0.1});
+  }
+}
+
+// Half precision holds 1.5 and 0.25 exactly and trilinear reads of a constant are exact; the
+// float sums then land a hair off and the rgba16f store (which lavapipe rounds toward zero)
+// can drop one half-precision step: 1e-3 relative.
+TEST_F(SpecularPrefilterGpuTest, ConstantEnvironmentAtEveryRoughness) {
+  CubeImage env(32);
+  for (glm::dvec4& t : env.texels) t = glm::dvec4(1.5, 0.25, 3.0, 1.0);
+  const std::vector<CubeImage> out = prefilter(env, 32, 6, kDefaultSamples);
+  for (const CubeImage& mip : out)
+    for (const glm::dvec4& t : mip.texels) {
+      ASSERT_NEAR(t.x, 1.5, 1.5e-3);
+      ASSERT_NEAR(t.y, 0.25, 0.25e-3);
+      ASSERT_NEAR(t.z, 3.0, 3e-3);
+    }
+}
+
+TEST_F(SpecularPrefilterGpuTest, RoughnessZeroIsTheEnvironment) {
+  const CubeImage env = round_to_half(random_environment(32, 501));
+  const std::vector<CubeImage> out = prefilter(env, 32, 3, kDefaultSamples);
+  for (size_t t = 0; t < env.texels.size(); ++t)
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(out[0].texels[t][c], env.texels[t][c], 1e-3 * env.texels[t][c]);
+}
+
+TEST_F(SpecularPrefilterGpuTest, SunAndNonFiniteTexels) {
+  CubeImage env = random_environment(64, 502);
+  env.at(2, 40, 20) = glm::dvec4(30000.0, 30000.0, 28000.0, 1.0);  // about 1e5 x the sky
+  const CubeImage seen = round_to_half(env);
+  const std::vector<CubeImage> out = prefilter(seen, 64, 5, kDefaultSamples);
+  for (uint32_t m : {1u, 2u, 4u}) {
+    const double rms = relative_rms(seen, out[m], prefilter_roughness(m, 5), 100, 60 + m);
+    std::cout << "sun 1e5 x sky, roughness " << prefilter_roughness(m, 5) << ": RMS relative error " << rms << "\n";
+    for (const glm::dvec4& t : out[m].texels)
+      ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+  }
+  env.at(0, 3, 3) = glm::dvec4(std::numeric_limits<double>::quiet_NaN(), 1, 1, 1);
+  env.at(4, 10, 50) = glm::dvec4(1, std::numeric_limits<double>::infinity(), 1, 1);
+  for (const CubeImage& mip : prefilter(round_to_half(env), 64, 5, kDefaultSamples))
+    for (const glm::dvec4& t : mip.texels) ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+}
+
+}  // namespace
+}  // namespace lg::test
