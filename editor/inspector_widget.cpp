@@ -1,0 +1,180 @@
+#include "editor/inspector_widget.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+#include <QVTKOpenGLNativeWidget.h>
+#include <cmath>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include "editor/env_probe.h"
+
+namespace lg {
+
+namespace {
+
+// Radiance to display: exposure from the mean, Reinhard, then gamma 2.2.
+unsigned char display(double v, double exposure) {
+  const double x = std::max(0.0, v * exposure);
+  return static_cast<unsigned char>(std::lround(255 * std::pow(x / (1 + x), 1 / 2.2)));
+}
+
+vtkSmartPointer<vtkPolyData> unit_sphere() {
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(1);
+  source->SetThetaResolution(256);
+  source->SetPhiResolution(128);
+  source->Update();
+  vtkSmartPointer<vtkPolyData> sphere = vtkSmartPointer<vtkPolyData>::New();
+  sphere->DeepCopy(source->GetOutput());
+  return sphere;
+}
+
+Vec3d direction_of(vtkPolyData* sphere, vtkIdType i) {
+  double p[3];
+  sphere->GetPoint(i, p);
+  const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  return {p[0] / len, p[1] / len, p[2] / len};
+}
+
+}  // namespace
+
+struct InspectorWidget::Vtk {
+  QVTKOpenGLNativeWidget* widget = nullptr;
+  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+
+  void add_sphere(vtkPolyData* sphere, double x, const char* caption, vtkLookupTable* lut) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(sphere);
+    if (lut) {
+      mapper->SetLookupTable(lut);
+      mapper->SetScalarRange(lut->GetRange());
+      mapper->SetColorModeToMapScalars();
+    } else {
+      mapper->SetColorModeToDirectScalars();
+    }
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->SetPosition(x, 0, 0);
+    // Radiance is shown as it is, not shaded by a light.
+    actor->GetProperty()->SetLighting(false);
+    renderer->AddActor(actor);
+    vtkNew<vtkTextActor> text;
+    text->SetInput(caption);
+    text->GetTextProperty()->SetFontSize(18);
+    text->GetTextProperty()->SetJustificationToCentered();
+    text->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+    text->GetPositionCoordinate()->SetValue(x, -1.35, 0);
+    renderer->AddActor2D(text);
+  }
+};
+
+InspectorWidget::InspectorWidget(QWidget* parent) : QWidget(parent), vtk_(std::make_unique<Vtk>()), summary_(new QLabel(this)) {
+  vtk_->widget = new QVTKOpenGLNativeWidget(this);
+  vtk_->widget->setRenderWindow(vtk_->window);
+  vtk_->window->AddRenderer(vtk_->renderer);
+  vtk_->renderer->SetBackground(0.11, 0.12, 0.14);
+  summary_->setWordWrap(true);
+  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(vtk_->widget, 1);
+  layout->addWidget(summary_);
+  show_message(tr("Open an environment (.hdr, .exr) to inspect it, or select an env.load node."));
+}
+
+InspectorWidget::~InspectorWidget() = default;
+
+QString InspectorWidget::summary() const { return summary_->text(); }
+
+void InspectorWidget::show_message(const QString& text) {
+  vtk_->renderer->RemoveAllViewProps();
+  summary_->setText(text);
+  vtk_->window->Render();
+}
+
+bool InspectorWidget::open_environment(const QString& path) {
+  try {
+    show_environment(load_env_probe(path.toStdString()));
+    return true;
+  } catch (const ImageFileError& e) {
+    show_message(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void InspectorWidget::show_environment(const EnvProbe& probe) {
+  vtk_->renderer->RemoveAllViewProps();
+  const double exposure = probe.mean_luminance > 0 ? 0.6 / probe.mean_luminance : 1;
+  vtkSmartPointer<vtkPolyData> env = unit_sphere(), sh = unit_sphere(), error = unit_sphere();
+  vtkNew<vtkUnsignedCharArray> env_rgb, sh_rgb;
+  vtkNew<vtkFloatArray> err;
+  env_rgb->SetNumberOfComponents(3);
+  sh_rgb->SetNumberOfComponents(3);
+  const vtkIdType n = env->GetNumberOfPoints();
+  env_rgb->SetNumberOfTuples(n);
+  sh_rgb->SetNumberOfTuples(n);
+  err->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    const Vec3d d = direction_of(env, i);
+    const Vec3d a = sample_equirect(probe.image, d), b = evaluate_sh_l2(probe.sh, d);
+    for (int c = 0; c < 3; ++c) {
+      env_rgb->SetComponent(i, c, display(a[c], exposure));
+      sh_rgb->SetComponent(i, c, display(b[c], exposure));
+    }
+    const double mean = probe.mean_luminance > 0 ? probe.mean_luminance : 1;
+    err->SetValue(i, float(std::abs(luminance(b) - luminance(a)) / mean));
+  }
+  env->GetPointData()->SetScalars(env_rgb);
+  sh->GetPointData()->SetScalars(sh_rgb);
+  error->GetPointData()->SetScalars(err);
+
+  vtkNew<vtkLookupTable> lut;
+  lut->SetRange(0, 1);
+  lut->SetHueRange(0.66, 0.0);
+  lut->Build();
+  vtk_->add_sphere(env, -2.4, "environment", nullptr);
+  vtk_->add_sphere(sh, 0, "L2 SH (9 coefficients)", nullptr);
+  vtk_->add_sphere(error, 2.4, "|SH - environment| / mean", lut);
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetNumberOfLabels(3);
+  bar->SetWidth(0.06);
+  bar->SetHeight(0.6);
+  bar->SetPosition(0.92, 0.2);
+  vtk_->renderer->AddActor2D(bar);
+
+  vtkCamera* camera = vtk_->renderer->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(0, 0, 1);
+  camera->SetViewUp(0, 1, 0);
+  vtk_->renderer->ResetCamera();
+  camera->Zoom(1.5);
+  vtk_->window->Render();
+  vtk_->widget->update();
+
+  summary_->setText(tr("%1 — %2x%3 · mean luminance %4 · L2 SH RMS error %5 (%6% of RMS radiance)")
+                        .arg(QString::fromStdString(probe.path))
+                        .arg(probe.image.width)
+                        .arg(probe.image.height)
+                        .arg(probe.mean_luminance, 0, 'g', 4)
+                        .arg(probe.rms_error, 0, 'g', 4)
+                        .arg(100 * probe.relative_rms_error, 0, 'f', 1));
+}
+
+}  // namespace lg
