@@ -256,19 +256,30 @@ void Canvas::select_nodes(const std::vector<std::string>& ids) {
     if (QtNodes::Node* n = node(id)) n->nodeGraphicsObject().setSelected(true);
 }
 
+// FlowView pans by moving the scene rect (it is the size of the view), so centring is that too.
+void Canvas::look_at(QPointF centre) {
+  const QRectF view = view_->mapToScene(view_->viewport()->rect()).boundingRect();
+  QRectF rect(QPointF(), view.size());
+  rect.moveCenter(centre);
+  scene_->setSceneRect(rect);
+  view_->centerOn(centre);
+}
+
 void Canvas::centre_on(const std::string& id) {
-  if (QtNodes::Node* n = node(id)) view_->centerOn(&n->nodeGraphicsObject());
+  if (QtNodes::Node* n = node(id)) look_at(n->nodeGraphicsObject().sceneBoundingRect().center());
 }
 
 void Canvas::frame_all() {
-  const QRectF bounds = scene_->itemsBoundingRect().adjusted(-40, -40, 40, 40);
+  QRectF bounds;
+  for (const auto& [id, n] : nodes_) bounds |= n->nodeGraphicsObject().sceneBoundingRect();
   if (bounds.isEmpty()) return;
-  view_->fitInView(bounds, Qt::KeepAspectRatio);
+  bounds.adjust(-40, -40, 40, 40);
+  const QSize port = view_->viewport()->size();
   // Small graphs stay at their natural size rather than blown up.
-  if (view_->transform().m11() > 1.0) {
-    view_->resetTransform();
-    view_->centerOn(bounds.center());
-  }
+  const double scale = std::min({1.0, port.width() / bounds.width(), port.height() / bounds.height()});
+  view_->resetTransform();
+  view_->scale(scale, scale);
+  look_at(bounds.center());
 }
 
 Position Canvas::view_centre() const {

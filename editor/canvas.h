@@ -64,6 +64,7 @@ class Canvas : public QWidget {
   void selection_changed();
 
  private:
+  void look_at(QPointF centre);
   void schedule_link_check();
   void check_links();
   void check_moves();

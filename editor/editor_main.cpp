@@ -1,7 +1,10 @@
 // lumagraph-editor [GRAPH] [--screenshot FILE]: edits graph files. With --screenshot it opens
-// the graph, lays it out, writes the window to a PNG and exits (for docs and GUI tests).
+// the graph, lays it out, writes the window to a PNG and exits (for docs and GUI tests);
+// --select ID shows that node's parameters in it.
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QEventLoop>
+#include <QTimer>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
 #include <iostream>
@@ -23,6 +26,9 @@ int main(int argc, char** argv) {
   const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                       QStringLiteral("Write the window to a PNG and exit."), QStringLiteral("FILE"));
   args.addOption(screenshot);
+  const QCommandLineOption select(QStringLiteral("select"), QStringLiteral("Select a node (for screenshots)."),
+                                  QStringLiteral("ID"));
+  args.addOption(select);
   args.process(app);
   const QStringList files = args.positionalArguments();
   const bool shoot = args.isSet(screenshot);
@@ -35,8 +41,11 @@ int main(int argc, char** argv) {
   window.show();
   if (!shoot) return app.exec();
 
+  if (args.isSet(select)) window.canvas()->select_nodes({args.value(select).toStdString()});
   // Let the docks and the canvas take their sizes before framing and grabbing.
-  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+  QEventLoop settle;
+  QTimer::singleShot(300, &settle, &QEventLoop::quit);
+  settle.exec();
   window.canvas()->frame_all();
   QApplication::processEvents();
   if (!window.grab().save(args.value(screenshot))) {

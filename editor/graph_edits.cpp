@@ -15,12 +15,16 @@ const GraphNode* find_node(const Graph& graph, std::string_view id) {
   return find_node(const_cast<Graph&>(graph), id);
 }
 
-std::string unique_node_id(const Graph& graph, std::string_view type) {
-  std::string base(type.substr(type.rfind('.') == std::string_view::npos ? 0 : type.rfind('.') + 1));
+std::string unique_id_like(const Graph& graph, std::string_view id) {
+  std::string base(id.substr(0, id.find_last_not_of("0123456789") + 1));
   if (base.empty()) base = "node";
-  std::string id = base;
-  for (int n = 2; find_node(graph, id); ++n) id = base + std::to_string(n);
-  return id;
+  std::string fresh = base;
+  for (int n = 2; find_node(graph, fresh); ++n) fresh = base + std::to_string(n);
+  return fresh;
+}
+
+std::string unique_node_id(const Graph& graph, std::string_view type) {
+  return unique_id_like(graph, type.substr(type.rfind('.') == std::string_view::npos ? 0 : type.rfind('.') + 1));
 }
 
 static JsonValue& positions_of(Graph& graph) {
@@ -116,7 +120,7 @@ std::vector<std::string> paste_nodes(Graph& graph, const Graph& fragment, Positi
   std::vector<std::string> added;
   for (const GraphNode& n : fragment.nodes) {
     GraphNode copy = n;
-    copy.id = unique_node_id(graph, n.type);
+    copy.id = unique_id_like(graph, n.id);
     renamed[n.id] = copy.id;
     graph.nodes.push_back(copy);
     Position p = node_position(fragment, n.id).value_or(Position{0, 0});

@@ -21,6 +21,8 @@ const GraphNode* find_node(const Graph& graph, std::string_view id);
 
 // An id not used in `graph`, from the last part of the type: "bloom", then "bloom2", "bloom3"...
 std::string unique_node_id(const Graph& graph, std::string_view type);
+// An id not used in `graph` like `id`: "sky" or "sky4" give "sky2" when "sky" is taken.
+std::string unique_id_like(const Graph& graph, std::string_view id);
 
 // Positions live under editor.positions as {"id": [x, y]}, as the runtime's loader ignores them.
 std::optional<Position> node_position(const Graph& graph, std::string_view id);

@@ -3,7 +3,9 @@
 #include <QLabel>
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
@@ -57,8 +59,9 @@ struct InspectorWidget::Vtk {
   QVTKOpenGLNativeWidget* widget = nullptr;
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
+  std::vector<std::pair<vtkSmartPointer<vtkActor>, vtkSmartPointer<vtkTextActor>>> spheres;
 
-  void add_sphere(vtkPolyData* sphere, double x, const char* caption, vtkLookupTable* lut) {
+  void add_sphere(vtkPolyData* sphere, const char* caption, vtkLookupTable* lut) {
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(sphere);
     if (lut) {
@@ -70,7 +73,6 @@ struct InspectorWidget::Vtk {
     }
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
-    actor->SetPosition(x, 0, 0);
     // Radiance is shown as it is, not shaded by a light.
     actor->GetProperty()->SetLighting(false);
     renderer->AddActor(actor);
@@ -79,8 +81,32 @@ struct InspectorWidget::Vtk {
     text->GetTextProperty()->SetFontSize(18);
     text->GetTextProperty()->SetJustificationToCentered();
     text->GetPositionCoordinate()->SetCoordinateSystemToWorld();
-    text->GetPositionCoordinate()->SetValue(x, -1.35, 0);
     renderer->AddActor2D(text);
+    spheres.emplace_back(actor.Get(), text.Get());
+  }
+
+  // The spheres side by side in a wide view, stacked in a tall one (the editor's dock), with
+  // a parallel camera sized so that none is clipped.
+  void lay_out(double aspect) {
+    if (spheres.empty()) return;
+    const bool row = aspect >= 1;
+    const double step = row ? 2.4 : 2.9, n = double(spheres.size());
+    for (size_t i = 0; i < spheres.size(); ++i) {
+      const double offset = (double(i) - (n - 1) / 2) * step;
+      const double x = row ? offset : 0, y = row ? 0 : -offset;
+      spheres[i].first->SetPosition(x, y, 0);
+      spheres[i].second->GetPositionCoordinate()->SetValue(x, y - 1.3, 0);
+    }
+    const double half_w = row ? (n - 1) / 2 * step + 1.3 : 1.6, half_h = row ? 1.7 : (n - 1) / 2 * step + 1.7;
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetPosition(0, 0, 10);
+    camera->SetViewUp(0, 1, 0);
+    // 15% of the width is kept for the colour bar.
+    camera->SetParallelScale(std::max(half_h, half_w / (0.85 * aspect)) * 1.05);
+    camera->SetWindowCenter(-0.12, 0);
+    renderer->ResetCameraClippingRange();
   }
 };
 
@@ -102,8 +128,14 @@ InspectorWidget::~InspectorWidget() = default;
 
 QString InspectorWidget::summary() const { return summary_->text(); }
 
+void InspectorWidget::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  vtk_->lay_out(double(std::max(1, vtk_->widget->width())) / std::max(1, vtk_->widget->height()));
+}
+
 void InspectorWidget::show_message(const QString& text) {
   vtk_->renderer->RemoveAllViewProps();
+  vtk_->spheres.clear();
   summary_->setText(text);
   vtk_->window->Render();
 }
@@ -120,6 +152,7 @@ bool InspectorWidget::open_environment(const QString& path) {
 
 void InspectorWidget::show_environment(const EnvProbe& probe) {
   vtk_->renderer->RemoveAllViewProps();
+  vtk_->spheres.clear();
   const double exposure = probe.mean_luminance > 0 ? 0.6 / probe.mean_luminance : 1;
   vtkSmartPointer<vtkPolyData> env = unit_sphere(), sh = unit_sphere(), error = unit_sphere();
   vtkNew<vtkUnsignedCharArray> env_rgb, sh_rgb;
@@ -144,13 +177,16 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
   sh->GetPointData()->SetScalars(sh_rgb);
   error->GetPointData()->SetScalars(err);
 
+  // The colour scale ends at the 95th percentile, so one hot spot does not wash out the rest.
+  std::vector<float> sorted(err->GetPointer(0), err->GetPointer(0) + n);
+  std::nth_element(sorted.begin(), sorted.begin() + n * 95 / 100, sorted.end());
   vtkNew<vtkLookupTable> lut;
-  lut->SetRange(0, 1);
+  lut->SetRange(0, std::max(1e-3f, sorted[size_t(n * 95 / 100)]));
   lut->SetHueRange(0.66, 0.0);
   lut->Build();
-  vtk_->add_sphere(env, -2.4, "environment", nullptr);
-  vtk_->add_sphere(sh, 0, "L2 SH (9 coefficients)", nullptr);
-  vtk_->add_sphere(error, 2.4, "|SH - environment| / mean", lut);
+  vtk_->add_sphere(env, "environment", nullptr);
+  vtk_->add_sphere(sh, "L2 SH reconstruction", nullptr);
+  vtk_->add_sphere(error, "error / mean luminance", lut);
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
   bar->SetNumberOfLabels(3);
@@ -159,12 +195,7 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
   bar->SetPosition(0.92, 0.2);
   vtk_->renderer->AddActor2D(bar);
 
-  vtkCamera* camera = vtk_->renderer->GetActiveCamera();
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetPosition(0, 0, 1);
-  camera->SetViewUp(0, 1, 0);
-  vtk_->renderer->ResetCamera();
-  camera->Zoom(1.5);
+  vtk_->lay_out(double(std::max(1, vtk_->widget->width())) / std::max(1, vtk_->widget->height()));
   vtk_->window->Render();
   vtk_->widget->update();
 

@@ -24,6 +24,9 @@ class InspectorWidget : public QWidget {
   void show_message(const QString& text);
   QString summary() const;
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
   struct Vtk;
   std::unique_ptr<Vtk> vtk_;

@@ -55,7 +55,7 @@ class FilesTest : public ::testing::Test {
 };
 
 TEST_F(FilesTest, EveryExampleRoundTripsUnedited) {
-  for (const QString name : QDir(example("")).entryList({"*.json"}, QDir::Files)) {
+  for (const QString& name : QDir(example("")).entryList({"*.json"}, QDir::Files)) {
     ASSERT_TRUE(window->open_file(example(name))) << name.toStdString();
     const QString out = dir.filePath(name);
     ASSERT_TRUE(window->save_to(out));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QListWidget>
 #include <QMouseEvent>
 #include <QStatusBar>

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -47,7 +49,8 @@ TEST(EnvSh, ConstantRadianceIsBandZeroOnly) {
   const ShL2 sh = project_equirect_sh_l2(128, 64, rgba);
   const double c0 = 2 * std::sqrt(std::numbers::pi);  // integral of Y00 over the sphere
   EXPECT_NEAR(sh.rgb[0][1], 3 * c0, 1e-9);
-  for (int k = 1; k < 9; ++k) EXPECT_NEAR(sh.rgb[k][0], 0, 1e-3) << k;
+  // Higher bands vanish up to the error of sampling texel centres (0.1% of band 0 here).
+  for (int k = 1; k < 9; ++k) EXPECT_NEAR(sh.rgb[k][0], 0, 5e-3) << k;
   const Vec3d back = evaluate_sh_l2(sh, {0, 0.6, 0.8});
   EXPECT_NEAR(back[2], 5, 2e-3);
 }
@@ -65,12 +68,14 @@ TEST(EnvSh, RandomL2FunctionsProjectBackToTheirCoefficients) {
 
 TEST(EnvSh, NonFiniteTexelsAreSkipped) {
   auto rgba = image_of(64, 32, [](const Vec3d&) { return Vec3d{1, 1, 1}; });
-  rgba[4 * 100] = std::numeric_limits<float>::quiet_NaN();
-  rgba[4 * 200 + 1] = std::numeric_limits<float>::infinity();
-  const ShL2 sh = project_equirect_sh_l2(64, 32, rgba);
-  for (const auto& c : sh.rgb)
-    for (double v : c) EXPECT_TRUE(std::isfinite(v));
-  EXPECT_NEAR(sh.rgb[0][2], 2 * std::sqrt(std::numbers::pi), 1e-9);
+  auto without = rgba;
+  for (size_t texel : {100, 200}) {
+    rgba[4 * texel + texel % 3] = texel == 100 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+    for (int c = 0; c < 3; ++c) without[4 * texel + c] = 0;
+  }
+  const ShL2 sh = project_equirect_sh_l2(64, 32, rgba), expected = project_equirect_sh_l2(64, 32, without);
+  for (int k = 0; k < 9; ++k)
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(sh.rgb[k][c], expected.rgb[k][c]);
 }
 
 }  // namespace

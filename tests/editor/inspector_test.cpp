@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <cmath>
 #include <QImage>
 #include <set>
 
