@@ -56,6 +56,9 @@ void CompileView::show_plan(const Plan* plan) {
     return;
   }
   passes_->setRowCount(int(plan->passes.size()));
+  QStringList positions;  // schedule positions count from 0, as in the timeline and the CLI
+  for (size_t i = 0; i < plan->passes.size(); ++i) positions << QString::number(i);
+  passes_->setVerticalHeaderLabels(positions);
   for (size_t i = 0; i < plan->passes.size(); ++i) {
     const PlanPass& pass = plan->passes[i];
     QStringList writes;

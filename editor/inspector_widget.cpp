@@ -105,7 +105,7 @@ struct InspectorWidget::Vtk {
     camera->SetViewUp(0, 1, 0);
     // 15% of the width is kept for the colour bar.
     camera->SetParallelScale(std::max(half_h, half_w / (0.85 * aspect)) * 1.05);
-    camera->SetWindowCenter(-0.12, 0);
+    camera->SetWindowCenter(0.12, 0);
     renderer->ResetCameraClippingRange();
   }
 };
