@@ -53,7 +53,28 @@ bool contains(const std::vector<Link>& links, const Link& l) {
   return std::any_of(links.begin(), links.end(), [&](const Link& x) { return same_link(x, l); });
 }
 
-const NodeModel* model_of(const QtNodes::Node* node) { return static_cast<const NodeModel*>(node->nodeDataModel()); }
+// The schema's doc and every port with its type: what the canvas cannot spell out.
+QString node_tooltip(const std::string& type, const NodeSchema* schema) {
+  if (!schema) return QStringLiteral("Unknown node type %1").arg(QString::fromStdString(type));
+  QString tip = QStringLiteral("<b>%1</b><br>%2")
+                    .arg(QString::fromStdString(type), QString::fromStdString(schema->doc).toHtmlEscaped());
+  auto ports = [&](const char* title, const std::vector<PortSpec>& list) {
+    if (list.empty()) return;
+    tip += QStringLiteral("<br><br><i>%1</i>").arg(QString::fromUtf8(title));
+    for (const PortSpec& p : list)
+      tip += QStringLiteral("<br>%1 <tt>%2</tt>%3 — %4")
+                 .arg(QString::fromStdString(p.name), QString::fromStdString(p.type.name()),
+                      p.optional ? QStringLiteral(" (optional)") : QString(),
+                      QString::fromStdString(p.doc).toHtmlEscaped());
+  };
+  ports("inputs", schema->inputs);
+  ports("outputs", schema->outputs);
+  return tip;
+}
+
+const NodeModel* model_of(const QtNodes::Node* node) {
+  return static_cast<const NodeModel*>(node->nodeDataModel());
+}
 
 std::optional<Link> link_of(const QtNodes::Connection& c) {
   if (!c.complete()) return std::nullopt;
@@ -114,8 +135,11 @@ void Canvas::show_graph(const Graph& graph) {
     it = nodes_.erase(it);
   }
   for (const GraphNode& n : graph.nodes)
-    if (!nodes_.count(n.id))
-      nodes_[n.id] = &scene_->createNode(std::make_unique<NodeModel>(n.id, n.type, registry_.find(n.type)));
+    if (!nodes_.count(n.id)) {
+      const NodeSchema* schema = registry_.find(n.type);
+      nodes_[n.id] = &scene_->createNode(std::make_unique<NodeModel>(n.id, n.type, schema));
+      nodes_[n.id]->nodeGraphicsObject().setToolTip(node_tooltip(n.type, schema));
+    }
 
   // Positions: the file's, else the default layout.
   std::map<std::string, Position> layout;
@@ -126,7 +150,8 @@ void Canvas::show_graph(const Graph& graph) {
     }
   for (const GraphNode& n : graph.nodes) {
     const Position p = node_position(graph, n.id).value_or(layout[n.id]);
-    if (scene_->getNodePosition(*nodes_[n.id]) != QPointF(p[0], p[1])) scene_->setNodePosition(*nodes_[n.id], {p[0], p[1]});
+    if (scene_->getNodePosition(*nodes_[n.id]) != QPointF(p[0], p[1]))
+      scene_->setNodePosition(*nodes_[n.id], {p[0], p[1]});
   }
 
   // Links: those of the graph that name real ports.
@@ -193,14 +218,17 @@ void Canvas::check_links() {
   QString refused;
   for (const Link& l : now) {
     if (contains(shown_links_, l) || contains(added, l)) continue;
-    const PortSpec* from = model_of(node(l.from.node))->port(PortType::Out, model_of(node(l.from.node))->schema()->find_output(l.from.port));
-    const PortSpec* to = model_of(node(l.to.node))->port(PortType::In, model_of(node(l.to.node))->schema()->find_input(l.to.port));
+    const PortSpec* from = model_of(node(l.from.node))
+                               ->port(PortType::Out, model_of(node(l.from.node))->schema()->find_output(l.from.port));
+    const PortSpec* to =
+        model_of(node(l.to.node))->port(PortType::In, model_of(node(l.to.node))->schema()->find_input(l.to.port));
     std::string why;
     if (port_types_compatible(from->type, to->type, &why))
       added.push_back(l);
     else
       refused = QStringLiteral("Cannot link %1 to %2: %3")
-                    .arg(QString::fromStdString(l.from.text()), QString::fromStdString(l.to.text()), QString::fromStdString(why));
+                    .arg(QString::fromStdString(l.from.text()), QString::fromStdString(l.to.text()),
+                         QString::fromStdString(why));
   }
   for (const Link& l : shown_links_)
     if (!contains(now, l)) removed.push_back(l);
@@ -208,8 +236,7 @@ void Canvas::check_links() {
     QToolTip::showText(QCursor::pos(), refused, view_);
     emit link_refused(refused);
   }
-  if (!added.empty() || !removed.empty())
-    emit links_edited(added, removed);
+  if (!added.empty() || !removed.empty()) emit links_edited(added, removed);
   if (!refused.isEmpty()) show_graph(Graph(shown_graph_));
 }
 

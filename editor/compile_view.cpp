@@ -13,7 +13,9 @@
 
 namespace lg::editor {
 
-static QString text_of(const std::string& s) { return QString::fromStdString(s); }
+static QString text_of(const std::string& s) {
+  return QString::fromStdString(s);
+}
 
 CompileView::CompileView(QWidget* parent)
     : QWidget(parent),
@@ -83,15 +85,17 @@ void CompileView::show_plan(const Plan* plan) {
   if (skipped_->topLevelItemCount() == 0) new QTreeWidgetItem(skipped_, {tr("nothing skipped"), QString()});
   skipped_->resizeColumnToContents(0);
   const MemoryTotals& m = plan->memory;
-  const double saved = m.transient_unaliased ? 100.0 * double(m.transient_unaliased - m.transient) / double(m.transient_unaliased) : 0;
-  totals_->setText(tr("%1 passes at %2x%3 · transient %4 with aliasing, %5 without (saves %6%) · persistent %7 · %8 barriers")
-                       .arg(plan->passes.size())
-                       .arg(plan->frame.width)
-                       .arg(plan->frame.height)
-                       .arg(text_of(format_bytes(m.transient)), text_of(format_bytes(m.transient_unaliased)))
-                       .arg(saved, 0, 'f', 1)
-                       .arg(text_of(format_bytes(m.persistent)))
-                       .arg(plan->barriers.size()));
+  const double saved =
+      m.transient_unaliased ? 100.0 * double(m.transient_unaliased - m.transient) / double(m.transient_unaliased) : 0;
+  totals_->setText(
+      tr("%1 passes at %2x%3 · transient %4 with aliasing, %5 without (saves %6%) · persistent %7 · %8 barriers")
+          .arg(plan->passes.size())
+          .arg(plan->frame.width)
+          .arg(plan->frame.height)
+          .arg(text_of(format_bytes(m.transient)), text_of(format_bytes(m.transient_unaliased)))
+          .arg(saved, 0, 'f', 1)
+          .arg(text_of(format_bytes(m.persistent)))
+          .arg(plan->barriers.size()));
 }
 
 }  // namespace lg::editor

@@ -41,7 +41,9 @@ QString DiskSync::recoverable_autosave(const QString& file) {
   return autosave;
 }
 
-void DiskSync::remove_autosave() { QFile::remove(autosave_path(doc_->path())); }
+void DiskSync::remove_autosave() {
+  QFile::remove(autosave_path(doc_->path()));
+}
 
 void DiskSync::write_autosave() {
   if (!doc_->is_modified()) return;

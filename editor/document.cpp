@@ -10,7 +10,11 @@ namespace lg::editor {
 class SnapshotCommand : public QUndoCommand {
  public:
   SnapshotCommand(Document* doc, Graph before, Graph after, const QString& text, QString merge_key)
-      : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)), key_(std::move(merge_key)) {}
+      : QUndoCommand(text),
+        doc_(doc),
+        before_(std::move(before)),
+        after_(std::move(after)),
+        key_(std::move(merge_key)) {}
 
   void redo() override { doc_->apply(after_); }
   void undo() override { doc_->apply(before_); }

@@ -1,12 +1,13 @@
 // lumagraph-editor [GRAPH] [--screenshot FILE]: edits graph files. With --screenshot it opens
 // the graph, lays it out, writes the window to a PNG and exits (for docs and GUI tests);
 // --select ID shows that node's parameters in it.
+#include <QVTKOpenGLNativeWidget.h>
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QEventLoop>
-#include <QTimer>
 #include <QSurfaceFormat>
-#include <QVTKOpenGLNativeWidget.h>
+#include <QTimer>
 #include <iostream>
 
 #include "editor/canvas.h"

@@ -6,7 +6,9 @@
 
 namespace lg {
 
-double luminance(const Vec3d& rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+double luminance(const Vec3d& rgb) {
+  return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
 
 static Vec3d texel(const ImageData& image, int64_t col, int64_t row) {
   const int64_t w = image.width, h = image.height;
@@ -32,7 +34,7 @@ EnvProbe make_env_probe(std::string path, ImageData image) {
   EnvProbe probe;
   probe.path = std::move(path);
   probe.sh = project_equirect_sh_l2(image.width, image.height, image.rgba);
-  double sum = 0, sum_sq = 0, err_sq = 0, area = 0;
+  double sum = 0, sum_sq = 0, err_sq = 0, area = 0, negative = 0;
   for (uint32_t row = 0; row < image.height; ++row) {
     const double w = equirect_texel_solid_angle(row, image.width, image.height);
     for (uint32_t col = 0; col < image.width; ++col) {
@@ -40,8 +42,9 @@ EnvProbe make_env_probe(std::string path, ImageData image) {
       const double l = luminance(radiance);
       if (!std::isfinite(l)) continue;
       const Vec3d d = equirect_direction((col + 0.5) / image.width, (row + 0.5) / image.height);
-      const double e = luminance(evaluate_sh_l2(probe.sh, d)) - l;
+      const double sh = luminance(evaluate_sh_l2(probe.sh, d)), e = sh - l;
       sum += w * l, sum_sq += w * l * l, err_sq += w * e * e, area += w;
+      if (sh < 0) negative += w;
     }
   }
   if (area > 0) {
@@ -49,11 +52,14 @@ EnvProbe make_env_probe(std::string path, ImageData image) {
     probe.rms_error = std::sqrt(err_sq / area);
     const double rms = std::sqrt(sum_sq / area);
     probe.relative_rms_error = rms > 0 ? probe.rms_error / rms : 0;
+    probe.negative_fraction = negative / area;
   }
   probe.image = std::move(image);
   return probe;
 }
 
-EnvProbe load_env_probe(const std::string& path) { return make_env_probe(path, load_image(path)); }
+EnvProbe load_env_probe(const std::string& path) {
+  return make_env_probe(path, load_image(path));
+}
 
 }  // namespace lg

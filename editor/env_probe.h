@@ -16,6 +16,7 @@ struct EnvProbe {
   double mean_luminance = 0;      // over the sphere
   double rms_error = 0;           // of luminance, SH against image
   double relative_rms_error = 0;  // rms_error / rms luminance of the image
+  double negative_fraction = 0;   // of the sphere where the SH luminance rings below zero
 };
 
 // Loads an .hdr or .exr environment; throws ImageFileError when it cannot be read.

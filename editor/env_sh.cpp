@@ -15,8 +15,7 @@ std::array<double, 9> sh_l2_basis(const Vec3d& d) {
   const double k2 = 0.5 * std::sqrt(15 / pi);
   const double k20 = 0.25 * std::sqrt(5 / pi);
   const double k22 = 0.25 * std::sqrt(15 / pi);
-  return {k0, k1 * y, k1 * z, k1 * x, k2 * x * y, k2 * y * z, k20 * (3 * z * z - 1), k2 * x * z,
-          k22 * (x * x - y * y)};
+  return {k0, k1 * y, k1 * z, k1 * x, k2 * x * y, k2 * y * z, k20 * (3 * z * z - 1), k2 * x * z, k22 * (x * x - y * y)};
 }
 
 Vec3d equirect_direction(double u, double v) {

@@ -29,8 +29,7 @@ std::string unique_node_id(const Graph& graph, std::string_view type) {
 
 static JsonValue& positions_of(Graph& graph) {
   if (!graph.editor.is_object()) graph.editor = JsonValue::object();
-  if (const JsonValue* p = graph.editor.find("positions"); p && p->is_object())
-    return const_cast<JsonValue&>(*p);
+  if (const JsonValue* p = graph.editor.find("positions"); p && p->is_object()) return const_cast<JsonValue&>(*p);
   return graph.editor.set("positions", JsonValue::object());
 }
 
@@ -73,7 +72,9 @@ void remove_nodes(Graph& graph, const std::set<std::string>& ids) {
     for (const std::string& id : ids) erase_member(positions_of(graph), id);
 }
 
-static bool same(const PortRef& a, const PortRef& b) { return a.node == b.node && a.port == b.port; }
+static bool same(const PortRef& a, const PortRef& b) {
+  return a.node == b.node && a.port == b.port;
+}
 
 bool has_link(const Graph& graph, const PortRef& from, const PortRef& to) {
   return std::any_of(graph.links.begin(), graph.links.end(),

@@ -1,9 +1,10 @@
 // lumagraph-inspect FILE [--screenshot PNG]: shows an environment probe (an equirectangular
 // .hdr or .exr) on a sphere beside its L2 SH reconstruction and the error between them.
+#include <QVTKOpenGLNativeWidget.h>
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
-#include <QVTKOpenGLNativeWidget.h>
 #include <iostream>
 
 #include "editor/inspector_widget.h"

@@ -1,11 +1,6 @@
 #include "editor/inspector_widget.h"
 
-#include <QLabel>
-#include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
-#include <algorithm>
-#include <cmath>
-#include <vector>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
@@ -22,6 +17,12 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
+
+#include <QLabel>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "editor/env_probe.h"
 
@@ -110,7 +111,8 @@ struct InspectorWidget::Vtk {
   }
 };
 
-InspectorWidget::InspectorWidget(QWidget* parent) : QWidget(parent), vtk_(std::make_unique<Vtk>()), summary_(new QLabel(this)) {
+InspectorWidget::InspectorWidget(QWidget* parent)
+    : QWidget(parent), vtk_(std::make_unique<Vtk>()), summary_(new QLabel(this)) {
   vtk_->widget = new QVTKOpenGLNativeWidget(this);
   vtk_->widget->setRenderWindow(vtk_->window);
   vtk_->window->AddRenderer(vtk_->renderer);
@@ -126,7 +128,9 @@ InspectorWidget::InspectorWidget(QWidget* parent) : QWidget(parent), vtk_(std::m
 
 InspectorWidget::~InspectorWidget() = default;
 
-QString InspectorWidget::summary() const { return summary_->text(); }
+QString InspectorWidget::summary() const {
+  return summary_->text();
+}
 
 void InspectorWidget::resizeEvent(QResizeEvent* event) {
   QWidget::resizeEvent(event);
@@ -166,9 +170,11 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
   for (vtkIdType i = 0; i < n; ++i) {
     const Vec3d d = direction_of(env, i);
     const Vec3d a = sample_equirect(probe.image, d), b = evaluate_sh_l2(probe.sh, d);
+    // Where the SH rings below zero it shows its magnitude in blue, not black.
+    const bool ringing = luminance(b) < 0;
     for (int c = 0; c < 3; ++c) {
       env_rgb->SetComponent(i, c, display(a[c], exposure));
-      sh_rgb->SetComponent(i, c, display(b[c], exposure));
+      sh_rgb->SetComponent(i, c, ringing ? (c == 2 ? display(-luminance(b), exposure) : 0) : display(b[c], exposure));
     }
     const double mean = probe.mean_luminance > 0 ? probe.mean_luminance : 1;
     err->SetValue(i, float(std::abs(luminance(b) - luminance(a)) / mean));
@@ -185,7 +191,7 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
   lut->SetHueRange(0.66, 0.0);
   lut->Build();
   vtk_->add_sphere(env, "environment", nullptr);
-  vtk_->add_sphere(sh, "L2 SH reconstruction", nullptr);
+  vtk_->add_sphere(sh, "L2 SH (blue: below zero)", nullptr);
   vtk_->add_sphere(error, "error / mean luminance", lut);
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
@@ -199,13 +205,15 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
   vtk_->window->Render();
   vtk_->widget->update();
 
-  summary_->setText(tr("%1 — %2x%3 · mean luminance %4 · L2 SH RMS error %5 (%6% of RMS radiance)")
+  summary_->setText(tr("%1 — %2x%3 · mean luminance %4 · L2 SH RMS error %5 (%6% of RMS radiance) · SH below zero "
+                       "on %7% of the sphere")
                         .arg(QString::fromStdString(probe.path))
                         .arg(probe.image.width)
                         .arg(probe.image.height)
                         .arg(probe.mean_luminance, 0, 'g', 4)
                         .arg(probe.rms_error, 0, 'g', 4)
-                        .arg(100 * probe.relative_rms_error, 0, 'f', 1));
+                        .arg(100 * probe.relative_rms_error, 0, 'f', 1)
+                        .arg(100 * probe.negative_fraction, 0, 'f', 1));
 }
 
 }  // namespace lg

@@ -26,7 +26,9 @@
 
 namespace lg::editor {
 
-static QString text_of(const std::string& s) { return QString::fromStdString(s); }
+static QString text_of(const std::string& s) {
+  return QString::fromStdString(s);
+}
 
 MainWindow::MainWindow(bool interactive, QWidget* parent)
     : QMainWindow(parent),
@@ -84,14 +86,16 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   });
   connect(disk_, &DiskSync::reload_failed, this, [this](const Diagnostics& d) {
     disk_problems_ = d.items();
-    statusBar()->showMessage(tr("%1 changed on disk and no longer loads: keeping the last good graph").arg(doc_->path()));
+    statusBar()->showMessage(
+        tr("%1 changed on disk and no longer loads: keeping the last good graph").arg(doc_->path()));
     show_problems();
   });
   connect(disk_, &DiskSync::conflict, this, [this] {
     if (interactive_ &&
         QMessageBox::question(this, tr("File changed on disk"),
                               tr("%1 changed on disk, and you have unsaved changes.\nReload it and drop them "
-                                 "(they stay undoable)?").arg(doc_->path())) == QMessageBox::Yes)
+                                 "(they stay undoable)?")
+                                  .arg(doc_->path())) == QMessageBox::Yes)
       disk_->reload_from_disk();
     else
       statusBar()->showMessage(tr("%1 changed on disk; your unsaved changes are kept").arg(doc_->path()));
@@ -111,7 +115,9 @@ void MainWindow::build_menus() {
     return a;
   };
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  add(file, tr("&New"), QKeySequence::New, [this] { if (maybe_save()) new_graph(); });
+  add(file, tr("&New"), QKeySequence::New, [this] {
+    if (maybe_save()) new_graph();
+  });
   add(file, tr("&Open…"), QKeySequence::Open, [this] { open_dialog(); });
   add(file, tr("&Save"), QKeySequence::Save, [this] { save(); });
   add(file, tr("Save &As…"), QKeySequence::SaveAs, [this] { save_as(); });
@@ -127,7 +133,10 @@ void MainWindow::build_menus() {
   edit->addAction(redo);
   edit->addSeparator();
   add(edit, tr("&Copy"), QKeySequence::Copy, [this] { copy_selection(); });
-  add(edit, tr("Cu&t"), QKeySequence::Cut, [this] { copy_selection(); delete_selection(); });
+  add(edit, tr("Cu&t"), QKeySequence::Cut, [this] {
+    copy_selection();
+    delete_selection();
+  });
   add(edit, tr("&Paste"), QKeySequence::Paste, [this] { paste(); });
   add(edit, tr("&Delete"), QKeySequence::Delete, [this] { delete_selection(); });
   add(edit, tr("Select &All"), QKeySequence::SelectAll, [this] {
@@ -162,8 +171,7 @@ bool MainWindow::open_file(const QString& path) {
     disk_problems_ = diagnostics.items();
     show_problems();
     statusBar()->showMessage(tr("Could not open %1").arg(path));
-    if (interactive_)
-      QMessageBox::warning(this, tr("Could not open"), text_of(diagnostics.to_string()));
+    if (interactive_) QMessageBox::warning(this, tr("Could not open"), text_of(diagnostics.to_string()));
     return false;
   }
   disk_problems_.clear();
@@ -172,7 +180,8 @@ bool MainWindow::open_file(const QString& path) {
   if (interactive_ && !DiskSync::recoverable_autosave(path).isEmpty() &&
       QMessageBox::question(this, tr("Recover unsaved changes?"),
                             tr("There are unsaved changes to %1 from an earlier session that did not end "
-                               "normally. Recover them?").arg(path)) == QMessageBox::Yes)
+                               "normally. Recover them?")
+                                .arg(path)) == QMessageBox::Yes)
     open_recovered(path);
   return true;
 }
@@ -200,7 +209,9 @@ bool MainWindow::save_to(const QString& path) {
   return true;
 }
 
-bool MainWindow::save() { return doc_->path().isEmpty() ? save_as() : save_to(doc_->path()); }
+bool MainWindow::save() {
+  return doc_->path().isEmpty() ? save_as() : save_to(doc_->path());
+}
 
 bool MainWindow::save_as() {
   const QString path = QFileDialog::getSaveFileName(this, tr("Save graph"), doc_->path(), tr("Graphs (*.json)"));
@@ -216,9 +227,10 @@ void MainWindow::open_dialog() {
 
 bool MainWindow::maybe_save() {
   if (!doc_->is_modified() || !interactive_) return true;
-  const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("Save the changes to %1?")
-                                                .arg(doc_->path().isEmpty() ? tr("the untitled graph") : doc_->path()),
-                                            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  const auto answer = QMessageBox::question(
+      this, tr("Unsaved changes"),
+      tr("Save the changes to %1?").arg(doc_->path().isEmpty() ? tr("the untitled graph") : doc_->path()),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
   return answer == QMessageBox::Discard || (answer == QMessageBox::Save && save());
 }
 
@@ -259,12 +271,19 @@ void MainWindow::show_problems() {
   problems_->clear();
   std::map<std::string, NodeProblem> on_nodes;
   auto list = [this](const Diagnostic& d, const std::string& node, const QString& prefix) {
-    auto* item = new QListWidgetItem(prefix + text_of(d.message) + (d.pointer.empty() ? QString() : QStringLiteral("  (%1)").arg(text_of(d.pointer))), problems_);
-    item->setIcon(style()->standardIcon(d.severity == Severity::error ? QStyle::SP_MessageBoxCritical : QStyle::SP_MessageBoxWarning));
+    auto* item =
+        new QListWidgetItem(prefix + text_of(d.message) +
+                                (d.pointer.empty() ? QString() : QStringLiteral("  (%1)").arg(text_of(d.pointer))),
+                            problems_);
+    item->setIcon(style()->standardIcon(d.severity == Severity::error ? QStyle::SP_MessageBoxCritical
+                                                                      : QStyle::SP_MessageBoxWarning));
     item->setData(Qt::UserRole, text_of(node));
   };
   for (const Diagnostic& d : disk_problems_) {
-    const QString where = d.pos.line ? QStringLiteral("%1:%2:%3: ").arg(QFileInfo(text_of(d.file)).fileName()).arg(d.pos.line).arg(d.pos.column) : QString();
+    const QString where =
+        d.pos.line
+            ? QStringLiteral("%1:%2:%3: ").arg(QFileInfo(text_of(d.file)).fileName()).arg(d.pos.line).arg(d.pos.column)
+            : QString();
     list(d, {}, tr("file on disk: ") + where);
   }
   for (const Problem& p : validation_.problems) {
@@ -366,8 +385,7 @@ void MainWindow::arrange() {
 void MainWindow::show_menu(Position at, QPoint global) {
   QMenu menu(this);
   fill_node_menu(menu, builtin_registry());
-  if (QAction* chosen = menu.exec(global); chosen && chosen->data().isValid())
-    add_node(chosen->data().toString(), at);
+  if (QAction* chosen = menu.exec(global); chosen && chosen->data().isValid()) add_node(chosen->data().toString(), at);
 }
 
 void MainWindow::set_preview(std::unique_ptr<PreviewRenderer> renderer) {

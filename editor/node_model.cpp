@@ -53,7 +53,9 @@ QString NodeModel::caption() const {
   return schema_ ? QStringLiteral("%1  ·  %2").arg(id, type) : QStringLiteral("%1  ·  %2 (unknown type)").arg(id, type);
 }
 
-QString NodeModel::name() const { return QString::fromStdString(type_); }
+QString NodeModel::name() const {
+  return QString::fromStdString(type_);
+}
 
 unsigned int NodeModel::nPorts(PortType side) const {
   if (!schema_) return 0;
@@ -70,7 +72,8 @@ QString NodeModel::portCaption(PortType side, QtNodes::PortIndex index) const {
 
 std::shared_ptr<QtNodes::NodeDataType> NodeModel::dataType(PortType side, QtNodes::PortIndex index) const {
   const PortSpec* spec = port(side, index);
-  return std::make_shared<QtNodes::NodeDataType>(any_port, spec ? QString::fromStdString(spec->type.name()) : QString());
+  return std::make_shared<QtNodes::NodeDataType>(any_port,
+                                                 spec ? QString::fromStdString(spec->type.name()) : QString());
 }
 
 std::unique_ptr<QtNodes::NodeDataModel> NodeModel::clone() const {

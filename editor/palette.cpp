@@ -8,7 +8,9 @@
 
 namespace lg::editor {
 
-static QString text_of(const std::string& s) { return QString::fromStdString(s); }
+static QString text_of(const std::string& s) {
+  return QString::fromStdString(s);
+}
 
 Palette::Palette(const Registry& registry, QWidget* parent)
     : QWidget(parent), search_(new QLineEdit(this)), tree_(new QTreeWidget(this)) {
@@ -54,8 +56,8 @@ void Palette::set_filter(const QString& text) {
     bool any = false;
     for (int i = 0; i < category->childCount(); ++i) {
       QTreeWidgetItem* item = category->child(i);
-      const bool match = item->text(0).contains(text, Qt::CaseInsensitive) ||
-                         item->toolTip(0).contains(text, Qt::CaseInsensitive);
+      const bool match =
+          item->text(0).contains(text, Qt::CaseInsensitive) || item->toolTip(0).contains(text, Qt::CaseInsensitive);
       item->setHidden(!match);
       any |= match;
     }

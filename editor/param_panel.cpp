@@ -11,13 +11,16 @@
 
 namespace lg::editor {
 
-static QString text_of(const std::string& s) { return QString::fromStdString(s); }
+static QString text_of(const std::string& s) {
+  return QString::fromStdString(s);
+}
 
 static QString tooltip_of(const ParamSpec& spec) {
   QString tip = text_of(spec.doc);
   if (spec.min || spec.max)
-    tip += QStringLiteral("\nRange: %1 to %2").arg(spec.min ? QString::number(*spec.min) : QStringLiteral("−∞"),
-                                                  spec.max ? QString::number(*spec.max) : QStringLiteral("∞"));
+    tip += QStringLiteral("\nRange: %1 to %2")
+               .arg(spec.min ? QString::number(*spec.min) : QStringLiteral("−∞"),
+                    spec.max ? QString::number(*spec.max) : QStringLiteral("∞"));
   if (!spec.unit.empty()) tip += QStringLiteral(" (%1)").arg(text_of(spec.unit));
   return tip;
 }
@@ -97,7 +100,8 @@ void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
     editors_[spec.name] = editor;
     resets_[spec.name] = reset;
     const std::string param = spec.name;
-    connect(editor, &ParamEditor::edited, this, [this, param](const JsonValue& v) { emit param_edited(node_id_, param, v); });
+    connect(editor, &ParamEditor::edited, this,
+            [this, param](const JsonValue& v) { emit param_edited(node_id_, param, v); });
     connect(reset, &QToolButton::clicked, this, [this, param] { emit param_edited(node_id_, param, JsonValue()); });
   }
   static_cast<QVBoxLayout*>(layout())->insertWidget(2, form_host_);

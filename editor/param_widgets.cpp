@@ -17,15 +17,21 @@ namespace lg::editor {
 
 namespace {
 
-QString text_of(const std::string& s) { return QString::fromStdString(s); }
+QString text_of(const std::string& s) {
+  return QString::fromStdString(s);
+}
 
-bool is_integer_type(ParamType t) { return t == ParamType::int_ || t == ParamType::int2; }
+bool is_integer_type(ParamType t) {
+  return t == ParamType::int_ || t == ParamType::int2;
+}
 
 JsonValue number_value(const ParamSpec& spec, double v) {
   return is_integer_type(spec.type) ? JsonValue(int64_t(std::llround(v))) : JsonValue(v);
 }
 
-double number_of(const JsonValue& v, double fallback) { return v.is_number() ? v.as_number() : fallback; }
+double number_of(const JsonValue& v, double fallback) {
+  return v.is_number() ? v.as_number() : fallback;
+}
 
 QHBoxLayout* row_layout(QWidget* owner) {
   auto* layout = new QHBoxLayout(owner);
@@ -50,7 +56,8 @@ QDoubleSpinBox* make_spin(const ParamSpec& spec, QWidget* parent) {
 // A number: a spin box, with a slider beside it when the range is bounded.
 class NumberEditor : public ParamEditor {
  public:
-  NumberEditor(const ParamSpec& spec, QWidget* parent) : ParamEditor(parent), spec_(spec), spin_(make_spin(spec, this)) {
+  NumberEditor(const ParamSpec& spec, QWidget* parent)
+      : ParamEditor(parent), spec_(spec), spin_(make_spin(spec, this)) {
     auto* layout = row_layout(this);
     if (spec.min && spec.max && *spec.max > *spec.min) {
       slider_ = new QSlider(Qt::Horizontal, this);
@@ -139,7 +146,8 @@ class EnumEditor : public ParamEditor {
   EnumEditor(const ParamSpec& spec, QWidget* parent) : ParamEditor(parent), combo_(new QComboBox(this)) {
     for (const std::string& v : spec.values) combo_->addItem(text_of(v));
     row_layout(this)->addWidget(combo_, 1);
-    connect(combo_, &QComboBox::textActivated, this, [this](const QString& v) { emit edited(JsonValue(v.toStdString())); });
+    connect(combo_, &QComboBox::textActivated, this,
+            [this](const QString& v) { emit edited(JsonValue(v.toStdString())); });
   }
   void set_value(const JsonValue& value) override {
     const QSignalBlocker block(combo_);
@@ -188,15 +196,20 @@ class TextEditor : public ParamEditor {
 ParamEditor* make_param_editor(const ParamSpec& spec, const QString& graph_dir, QWidget* parent) {
   switch (spec.type) {
     case ParamType::float_:
-    case ParamType::int_: return new NumberEditor(spec, parent);
+    case ParamType::int_:
+      return new NumberEditor(spec, parent);
     case ParamType::float2:
     case ParamType::float3:
     case ParamType::float4:
-    case ParamType::int2: return new VectorEditor(spec, parent);
-    case ParamType::bool_: return new BoolEditor(parent);
-    case ParamType::enum_: return new EnumEditor(spec, parent);
+    case ParamType::int2:
+      return new VectorEditor(spec, parent);
+    case ParamType::bool_:
+      return new BoolEditor(parent);
+    case ParamType::enum_:
+      return new EnumEditor(spec, parent);
     case ParamType::string:
-    case ParamType::path: return new TextEditor(spec, graph_dir, parent);
+    case ParamType::path:
+      return new TextEditor(spec, graph_dir, parent);
   }
   return new TextEditor(spec, graph_dir, parent);
 }

@@ -88,8 +88,9 @@ void TimelineWidget::paintEvent(QPaintEvent*) {
     p.drawRect(box.rect.adjusted(1, 0, -1, 0));
     if (box.rect.height() >= 13 && box.rect.width() > 40) {
       p.setPen(Qt::black);
-      p.drawText(box.rect.adjusted(4, 0, -2, 0), Qt::AlignVCenter | Qt::AlignLeft,
-                 p.fontMetrics().elidedText(QString::fromStdString(res.desc.name), Qt::ElideRight, int(box.rect.width() - 6)));
+      p.drawText(
+          box.rect.adjusted(4, 0, -2, 0), Qt::AlignVCenter | Qt::AlignLeft,
+          p.fontMetrics().elidedText(QString::fromStdString(res.desc.name), Qt::ElideRight, int(box.rect.width() - 6)));
     }
   }
   p.setPen(palette().color(QPalette::Text));

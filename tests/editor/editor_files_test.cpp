@@ -22,7 +22,9 @@ namespace {
 
 using lg::test::settle;
 
-QString example(const QString& name) { return QStringLiteral(LUMAGRAPH_SOURCE_DIR "/examples/") + name; }
+QString example(const QString& name) {
+  return QStringLiteral(LUMAGRAPH_SOURCE_DIR "/examples/") + name;
+}
 
 void write(const QString& path, const QByteArray& text) {
   QFile f(path);
@@ -103,7 +105,8 @@ TEST_F(FilesTest, ABrokenFileOnDiskKeepsTheLastGoodGraph) {
   settle();
   EXPECT_EQ(window->document()->graph().nodes.size(), 4u);
   ASSERT_GT(window->problems()->count(), 0);
-  EXPECT_TRUE(window->problems()->item(0)->text().startsWith("file on disk")) << window->problems()->item(0)->text().toStdString();
+  EXPECT_TRUE(window->problems()->item(0)->text().startsWith("file on disk"))
+      << window->problems()->item(0)->text().toStdString();
 
   // Fixed on disk (here: one node fewer): it reloads, and the reload is undoable.
   QFile original(example("minimal.json"));
@@ -155,7 +158,8 @@ TEST_F(FilesTest, AutosaveRecoversUnsavedWork) {
 TEST_F(FilesTest, ScreenshotWritesTheWindow) {
   const QString png = dir.filePath("default.png");
   QProcess editor;
-  editor.start(QStringLiteral(LUMAGRAPH_BINARY_DIR "/lumagraph-editor"), {example("default.json"), "--screenshot", png});
+  editor.start(QStringLiteral(LUMAGRAPH_BINARY_DIR "/lumagraph-editor"),
+               {example("default.json"), "--screenshot", png});
   ASSERT_TRUE(editor.waitForFinished(120'000));
   EXPECT_EQ(editor.exitCode(), 0) << editor.readAllStandardError().toStdString();
   QImage image(png);

@@ -2,7 +2,14 @@
 // param, undo and redo, delete, copy and paste, move, and the preview seam.
 #include <gtest/gtest.h>
 
+#include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFile>
+#include <QImage>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <set>
 #include <QLabel>
 #include <QListWidget>
 #include <QMouseEvent>
@@ -16,10 +23,12 @@
 #include "editor/compile_view.h"
 #include "editor/document.h"
 #include "editor/graph_edits.h"
+#include "editor/inspector_widget.h"
 #include "editor/main_window.h"
 #include "editor/node_model.h"
 #include "editor/palette.h"
 #include "editor/param_panel.h"
+#include "graph/graph_io.h"
 #include "qt_app.h"
 
 namespace lg::editor {
@@ -27,7 +36,9 @@ namespace {
 
 using lg::test::settle;
 
-QString example(const char* name) { return QStringLiteral(LUMAGRAPH_SOURCE_DIR "/examples/") + name; }
+QString example(const char* name) {
+  return QStringLiteral(LUMAGRAPH_SOURCE_DIR "/examples/") + name;
+}
 
 class EditorTest : public ::testing::Test {
  protected:
@@ -180,6 +191,40 @@ TEST_F(EditorTest, APreviewRendererPlugsInAndFollowsEdits) {
   settle();
   EXPECT_EQ(p->nodes, graph().nodes.size());
   EXPECT_FALSE(window->preview_image()->pixmap(Qt::ReturnByValue).isNull());
+}
+
+TEST_F(EditorTest, TheMemoryTimelineDrawsThePlan) {
+  auto* tabs = window->compile_view()->findChild<QTabWidget*>();
+  ASSERT_TRUE(tabs);
+  tabs->setCurrentIndex(1);
+  settle();
+  const QImage image = tabs->currentWidget()->grab().toImage();
+  // Kept for people to look at; the test checks only that boxes were drawn.
+  QDir().mkpath(LUMAGRAPH_BINARY_DIR "/test-output");
+  image.save(LUMAGRAPH_BINARY_DIR "/test-output/editor-memory.png");
+  std::set<QRgb> colours;
+  for (int y = 0; y < image.height(); y += 3)
+    for (int x = 0; x < image.width(); x += 3) colours.insert(image.pixel(x, y));
+  EXPECT_GT(colours.size(), window->validation().plan->resources.size() / 2);
+}
+
+TEST_F(EditorTest, SelectingAnEnvLoadNodeInspectsItsFile) {
+  const QString grace = QStringLiteral(LUMAGRAPH_SOURCE_DIR "/../shared/data/env/grace.hdr");
+  if (!QFile::exists(grace)) GTEST_SKIP() << "test data missing: " << grace.toStdString();
+  QTemporaryDir dir;
+  ASSERT_TRUE(QFile::copy(grace, dir.filePath("grace.hdr")));
+  Graph g;
+  g.name = "probe";
+  const std::string id = add_node(g, "env.load", {0, 0});
+  set_param(g, id, "path", JsonValue("grace.hdr"));
+  ASSERT_TRUE(save_graph_file(g, dir.filePath("probe.json").toStdString(), nullptr));
+  ASSERT_TRUE(window->open_file(dir.filePath("probe.json")));
+  qobject_cast<QDockWidget*>(window->inspector()->parentWidget())->raise();
+  settle();
+  window->canvas()->select_nodes({id});
+  settle();
+  EXPECT_TRUE(window->inspector()->summary().contains("grace.hdr")) << window->inspector()->summary().toStdString();
+  EXPECT_TRUE(window->inspector()->summary().contains("L2 SH")) << window->inspector()->summary().toStdString();
 }
 
 }  // namespace

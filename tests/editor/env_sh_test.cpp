@@ -1,4 +1,6 @@
 // L2 SH of equirectangular images: exact texel solid angles, projection and reconstruction.
+#include "editor/env_sh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,8 +9,6 @@
 #include <numbers>
 #include <random>
 #include <vector>
-
-#include "editor/env_sh.h"
 
 namespace lg {
 namespace {
@@ -70,7 +70,8 @@ TEST(EnvSh, NonFiniteTexelsAreSkipped) {
   auto rgba = image_of(64, 32, [](const Vec3d&) { return Vec3d{1, 1, 1}; });
   auto without = rgba;
   for (size_t texel : {100, 200}) {
-    rgba[4 * texel + texel % 3] = texel == 100 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+    rgba[4 * texel + texel % 3] =
+        texel == 100 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
     for (int c = 0; c < 3; ++c) without[4 * texel + c] = 0;
   }
   const ShL2 sh = project_equirect_sh_l2(64, 32, rgba), expected = project_equirect_sh_l2(64, 32, without);

@@ -1,7 +1,8 @@
 // Graph edits as pure functions: ids, positions, nodes, links, params, copy and paste.
+#include "editor/graph_edits.h"
+
 #include <gtest/gtest.h>
 
-#include "editor/graph_edits.h"
 #include "graph/graph_io.h"
 
 namespace lg::editor {

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
-#include <cmath>
 #include <QImage>
+#include <cmath>
 #include <set>
 
 #include "editor/env_probe.h"

@@ -1,7 +1,8 @@
 // The default layout: columns by depth, no overlaps, history links do not loop it.
+#include "editor/layout.h"
+
 #include <gtest/gtest.h>
 
-#include "editor/layout.h"
 #include "graph/graph_io.h"
 
 namespace lg::editor {

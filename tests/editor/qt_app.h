@@ -2,9 +2,10 @@
 // that listing the tests needs no display.
 #pragma once
 
+#include <QVTKOpenGLNativeWidget.h>
+
 #include <QApplication>
 #include <QSurfaceFormat>
-#include <QVTKOpenGLNativeWidget.h>
 
 namespace lg::test {
 

@@ -1,8 +1,9 @@
 // Live validation: the examples compile; errors name the node they are about.
+#include "editor/validation.h"
+
 #include <gtest/gtest.h>
 
 #include "editor/graph_edits.h"
-#include "editor/validation.h"
 #include "graph/graph_io.h"
 
 namespace lg::editor {
