@@ -187,9 +187,13 @@ void Canvas::show_problems(const std::map<std::string, NodeProblem>& problems) {
   for (auto& [id, n] : nodes_) {
     auto it = problems.find(id);
     auto* model = static_cast<NodeModel*>(n->nodeDataModel());
-    if (model->validationMessage() == (it == problems.end() ? QString() : it->second.message)) continue;
-    model->set_problem(it == problems.end() ? QString() : it->second.message,
-                       it == problems.end() || it->second.is_error);
+    const QString message = it == problems.end() ? QString() : it->second.message;
+    if (model->problem() == message) continue;
+    model->set_problem(message, it == problems.end() || it->second.is_error);
+    n->nodeGraphicsObject().setToolTip(node_tooltip(model->name().toStdString(), model->schema()) +
+                                       (message.isEmpty() ? QString()
+                                                          : QStringLiteral("<br><br><b>Problems</b><br>") +
+                                                                message.toHtmlEscaped().replace('\n', "<br>")));
     n->nodeGeometry().recalculateSize();
     n->nodeGraphicsObject().setGeometryChanged();
     n->nodeGraphicsObject().update();

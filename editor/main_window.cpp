@@ -252,8 +252,12 @@ void MainWindow::update_title() {
 void MainWindow::refresh() {
   const Graph& graph = doc_->graph();
   canvas_->show_graph(graph);
+  const bool had_errors = validation_.has_errors();
   validation_ = validate_graph(graph);
   show_problems();
+  // The compile view is empty while the graph has errors: show what is wrong instead.
+  if (validation_.has_errors() && !had_errors)
+    if (auto* dock = qobject_cast<QDockWidget*>(problems_->parentWidget())) dock->raise();
   compile_->show_plan(validation_.plan ? &*validation_.plan : nullptr);
   show_selection();
   update_title();
@@ -302,7 +306,7 @@ void MainWindow::show_problems() {
 void MainWindow::show_selection() {
   const std::set<std::string> selected = canvas_->selected_nodes();
   const std::string id = selected.size() == 1 ? *selected.begin() : std::string();
-  params_->show_node(doc_->graph(), id);
+  params_->show_node(doc_->graph(), id, validation_.problems);
   // An env.load node's environment goes to the inspector when the inspector is in view.
   const GraphNode* node = id.empty() ? nullptr : find_node(doc_->graph(), id);
   if (!node || node->type != "env.load" || !inspector_->isVisible()) return;

@@ -48,6 +48,15 @@ void NodeModel::set_problem(const QString& message, bool is_error) {
                              : QtNodes::NodeValidationState::Warning;
 }
 
+QString NodeModel::validationMessage() const {
+  // QtNodes draws it on one line as wide as it is: a count keeps nodes their size, and the
+  // tooltip and the Problems list have the words.
+  const qsizetype n = problem_.split('\n', Qt::SkipEmptyParts).size();
+  if (n == 0) return {};
+  const bool error = state_ == QtNodes::NodeValidationState::Error;
+  return n == 1 ? (error ? tr("1 error") : tr("1 warning")) : (error ? tr("%1 errors") : tr("%1 warnings")).arg(n);
+}
+
 QString NodeModel::caption() const {
   const QString id = QString::fromStdString(id_), type = QString::fromStdString(type_);
   return schema_ ? QStringLiteral("%1  ·  %2").arg(id, type) : QStringLiteral("%1  ·  %2 (unknown type)").arg(id, type);

@@ -20,7 +20,9 @@ class NodeModel : public QtNodes::NodeDataModel {
   // The port spec of an index on one side, or null.
   const PortSpec* port(QtNodes::PortType side, int index) const;
 
+  // All of the node's problems, one a line; the node shows how many.
   void set_problem(const QString& message, bool is_error);
+  const QString& problem() const { return problem_; }
 
   QString caption() const override;
   QString name() const override;
@@ -33,7 +35,7 @@ class NodeModel : public QtNodes::NodeDataModel {
   std::shared_ptr<QtNodes::NodeData> outData(QtNodes::PortIndex) override { return nullptr; }
   QWidget* embeddedWidget() override { return nullptr; }
   QtNodes::NodeValidationState validationState() const override { return state_; }
-  QString validationMessage() const override { return problem_; }
+  QString validationMessage() const override;
   QtNodes::NodePainterDelegate* painterDelegate() const override;
 
  private:

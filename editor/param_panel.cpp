@@ -47,15 +47,26 @@ ParamEditor* ParamPanel::editor(const std::string& param) const {
   return it == editors_.end() ? nullptr : it->second;
 }
 
-void ParamPanel::show_node(const Graph& graph, const std::string& id) {
+void ParamPanel::show_node(const Graph& graph, const std::string& id, const std::vector<Problem>& problems) {
   const GraphNode* node = id.empty() ? nullptr : find_node(graph, id);
   if (!node || node->id != node_id_ || node->type != node_type_) rebuild(graph, node);
   if (!node) return;
   const NodeSchema* schema = registry_.find(node->type);
+  std::map<std::string, QString> wrong;
+  for (const Problem& p : problems)
+    if (p.node == id)
+      if (const std::string param = param_of_pointer(p.diagnostic.pointer); !param.empty())
+        wrong[param] += QString::fromStdString(p.diagnostic.message);
   for (const ParamSpec& spec : schema ? schema->params : std::vector<ParamSpec>{}) {
     const JsonValue* set = node->params.find(spec.name);
     editors_[spec.name]->set_value(set ? *set : spec.default_value);
     resets_[spec.name]->setVisible(set != nullptr);
+    QLabel* label = labels_[spec.name];
+    const bool bad = wrong.count(spec.name) > 0;
+    // The editor cannot show a value outside its range: the label says the file holds one.
+    label->setText(bad ? QStringLiteral("<span style='color:#e0413a'>⚠ %1</span>").arg(text_of(spec.name))
+                       : text_of(spec.name));
+    label->setToolTip(bad ? wrong[spec.name] : tooltip_of(spec));
   }
 }
 
@@ -64,6 +75,7 @@ void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
   form_host_ = nullptr;
   editors_.clear();
   resets_.clear();
+  labels_.clear();
   node_id_ = node ? node->id : std::string();
   node_type_ = node ? node->type : std::string();
   const NodeSchema* schema = node ? registry_.find(node->type) : nullptr;
@@ -92,13 +104,13 @@ void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(editor, 1);
     row->addWidget(reset);
-    QString label = text_of(spec.name);
-    auto* name = new QLabel(label, form_host_);
+    auto* name = new QLabel(text_of(spec.name), form_host_);
     name->setToolTip(tooltip_of(spec));
     editor->setToolTip(tooltip_of(spec));
     form_->addRow(name, field);
     editors_[spec.name] = editor;
     resets_[spec.name] = reset;
+    labels_[spec.name] = name;
     const std::string param = spec.name;
     connect(editor, &ParamEditor::edited, this,
             [this, param](const JsonValue& v) { emit param_edited(node_id_, param, v); });

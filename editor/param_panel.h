@@ -8,6 +8,7 @@
 #include <map>
 
 #include "editor/param_widgets.h"
+#include "editor/validation.h"
 #include "graph/graph.h"
 #include "graph/registry.h"
 
@@ -22,8 +23,9 @@ class ParamPanel : public QWidget {
  public:
   ParamPanel(const Registry& registry, QWidget* parent = nullptr);
 
-  // Shows node `id` of `graph` (nothing when empty or absent).
-  void show_node(const Graph& graph, const std::string& id);
+  // Shows node `id` of `graph` (nothing when empty or absent); params that `problems` name
+  // are marked, with the message as their tooltip.
+  void show_node(const Graph& graph, const std::string& id, const std::vector<Problem>& problems = {});
   ParamEditor* editor(const std::string& param) const;
 
  signals:
@@ -41,6 +43,7 @@ class ParamPanel : public QWidget {
   QFormLayout* form_ = nullptr;
   std::map<std::string, ParamEditor*> editors_;
   std::map<std::string, QToolButton*> resets_;
+  std::map<std::string, QLabel*> labels_;
 };
 
 }  // namespace lg::editor

@@ -38,6 +38,14 @@ std::string node_of_pointer(const Graph& graph, const std::string& pointer) {
   return {};
 }
 
+std::string param_of_pointer(const std::string& pointer) {
+  std::string list, rest;
+  size_t i = 0;
+  if (!split_pointer(pointer, list, i, rest) || list != "nodes" || !rest.starts_with("/params/")) return {};
+  const std::string name = rest.substr(8);
+  return name.substr(0, name.find('/'));
+}
+
 Validation validate_graph(const Graph& graph) {
   Validation result;
   Diagnostics diagnostics(graph.file);

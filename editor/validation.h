@@ -29,5 +29,7 @@ Validation validate_graph(const Graph& graph);
 // The node a JSON pointer is about: /nodes/N/..., a link's target (/links/N/to) or source
 // (/links/N/from), or a requested output (/outputs/N); empty when none.
 std::string node_of_pointer(const Graph& graph, const std::string& pointer);
+// The param a pointer is about (/nodes/N/params/NAME...), or empty.
+std::string param_of_pointer(const std::string& pointer);
 
 }  // namespace lg::editor

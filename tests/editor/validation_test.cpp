@@ -43,6 +43,9 @@ TEST(Validation, PointersMapToNodes) {
   EXPECT_EQ(node_of_pointer(g, "/links/0/from"), "gbuf");
   EXPECT_EQ(node_of_pointer(g, "/links/9/to"), "");
   EXPECT_EQ(node_of_pointer(g, "/name"), "");
+  EXPECT_EQ(param_of_pointer("/nodes/2/params/exposure"), "exposure");
+  EXPECT_EQ(param_of_pointer("/nodes/2/params/size/1"), "size");
+  EXPECT_EQ(param_of_pointer("/nodes/2/type"), "");
 }
 
 }  // namespace
