@@ -95,6 +95,8 @@ Canvas::Canvas(const Registry& registry, QWidget* parent)
   view->on_menu = [this](QPointF at, QPoint global) { emit menu_requested({at.x(), at.y()}, global); };
   view->on_delete = [this] { emit delete_requested(); };
   view->on_release = [this] { check_moves(); };
+  // The window's Edit > Delete owns the key; two actions on one shortcut would both be dead.
+  view->removeAction(view->deleteSelectionAction());
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(view_);

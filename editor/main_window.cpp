@@ -58,6 +58,10 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   tabifyDockWidget(params_dock, inspector_dock);
   tabifyDockWidget(compile_dock, problems_dock);
   params_dock->raise();
+  // Coming into view, the inspector shows the selected env.load node's file.
+  connect(inspector_dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+    if (visible) show_selection();
+  });
   compile_dock->raise();
   resizeDocks({palette_dock, params_dock}, {230, 380}, Qt::Horizontal);
   resizeDocks({compile_dock}, {270}, Qt::Vertical);

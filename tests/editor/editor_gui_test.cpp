@@ -7,18 +7,19 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
-#include <QTabWidget>
-#include <QTemporaryDir>
-#include <set>
 #include <QLabel>
 #include <QListWidget>
 #include <QMouseEvent>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
 #include <QUndoStack>
 #include <nodes/FlowScene>
 #include <nodes/FlowView>
 #include <nodes/Node>
+#include <set>
 
 #include "editor/compile_view.h"
 #include "editor/document.h"
@@ -155,6 +156,18 @@ TEST_F(EditorTest, DeleteCopyAndPasteASelection) {
   settle();
   EXPECT_TRUE(window->canvas()->node("gtao"));
   EXPECT_TRUE(has_link(graph(), {"gtao", "ao"}, {"ibl", "ao"}));
+}
+
+TEST_F(EditorTest, KeyboardDeletesAndUndoes) {
+  QApplication::setActiveWindow(window.get());
+  window->canvas()->view()->setFocus();
+  window->canvas()->select_nodes({"dfg"});
+  QTest::keyClick(window->canvas()->view(), Qt::Key_Delete);
+  settle();
+  EXPECT_FALSE(find_node(graph(), "dfg"));
+  QTest::keyClick(window->canvas()->view(), Qt::Key_Z, Qt::ControlModifier);
+  settle();
+  EXPECT_TRUE(find_node(graph(), "dfg"));
 }
 
 TEST_F(EditorTest, DraggingNodesIsRecordedOnRelease) {
