@@ -23,7 +23,6 @@ class DiskSync : public QObject {
   // The autosave of `file` when it is newer than the file and says something else; empty if none.
   static QString recoverable_autosave(const QString& file);
 
-  void set_autosave_interval(int milliseconds) { autosave_.setInterval(milliseconds); }
   void remove_autosave();
 
  public slots:

@@ -40,7 +40,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   window.show();
-  if (!shoot) return app.exec();
+  if (!shoot) {
+    if (files.isEmpty()) window.offer_recovery({});
+    return app.exec();
+  }
 
   if (args.isSet(select)) window.canvas()->select_nodes({args.value(select).toStdString()});
   // Let the docks and the canvas take their sizes before framing and grabbing.

@@ -181,13 +181,18 @@ bool MainWindow::open_file(const QString& path) {
   disk_problems_.clear();
   refresh();
   canvas_->frame_all();
-  if (interactive_ && !DiskSync::recoverable_autosave(path).isEmpty() &&
-      QMessageBox::question(this, tr("Recover unsaved changes?"),
+  offer_recovery(path);
+  return true;
+}
+
+void MainWindow::offer_recovery(const QString& path) {
+  if (!interactive_ || DiskSync::recoverable_autosave(path).isEmpty()) return;
+  const QString what = path.isEmpty() ? tr("an untitled graph") : path;
+  if (QMessageBox::question(this, tr("Recover unsaved changes?"),
                             tr("There are unsaved changes to %1 from an earlier session that did not end "
                                "normally. Recover them?")
-                                .arg(path)) == QMessageBox::Yes)
+                                .arg(what)) == QMessageBox::Yes)
     open_recovered(path);
-  return true;
 }
 
 bool MainWindow::open_recovered(const QString& path) {

@@ -37,6 +37,8 @@ class MainWindow : public QMainWindow {
   bool open_file(const QString& path);
   // Opens the autosave of `path` (after a crash) as unsaved changes to it.
   bool open_recovered(const QString& path);
+  // Asks whether to recover the autosave of `path` (empty: the untitled graph), if there is one.
+  void offer_recovery(const QString& path);
   bool save_to(const QString& path);
   void add_node(const QString& type, std::optional<Position> at = {});
   void copy_selection();

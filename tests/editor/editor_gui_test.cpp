@@ -10,11 +10,13 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMouseEvent>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 #include <QUndoStack>
 #include <nodes/FlowScene>
 #include <nodes/FlowView>
@@ -70,6 +72,18 @@ TEST_F(EditorTest, OpensAnExampleWithEveryNodeLinkAndAPlan) {
   EXPECT_EQ(window->compile_view()->passes()->rowCount(), int(window->validation().plan->passes.size()));
   EXPECT_EQ(window->problems()->count(), 0);
   EXPECT_FALSE(window->document()->is_modified());
+  EXPECT_TRUE(window->compile_view()->totals()->text().contains("with aliasing"));
+}
+
+TEST_F(EditorTest, TheCompileViewSaysWhatWasSkippedAndWhy) {
+  ASSERT_TRUE(window->open_file(example("post.json")));
+  QStringList skipped;
+  for (int i = 0; i < window->compile_view()->skipped()->topLevelItemCount(); ++i)
+    skipped << window->compile_view()->skipped()->topLevelItem(i)->text(0) + " / " +
+                   window->compile_view()->skipped()->topLevelItem(i)->text(1);
+  // The default scene's camera is a pinhole: depth of field has nothing to do.
+  EXPECT_TRUE(skipped.join('\n').contains(QRegularExpression("bypassed: dof.*pinhole")))
+      << skipped.join('\n').toStdString();
 }
 
 TEST_F(EditorTest, PaletteSearchAddsANodeThatShowsItsMissingInput) {
