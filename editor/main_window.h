@@ -1,0 +1,95 @@
+// The editor's main window: the canvas in the middle, the palette on the left, parameters and
+// the inspector on the right, problems and the compile view below; menus for files, editing and
+// views. It turns requests from the views into document edits and, after every change, brings
+// every view up to date (canvas, live validation, parameters, compile view, preview).
+#pragma once
+
+#include <QMainWindow>
+#include <memory>
+
+#include "editor/canvas.h"
+#include "editor/preview.h"
+#include "editor/validation.h"
+
+class QLabel;
+class QListWidget;
+
+namespace lg {
+class InspectorWidget;
+}
+
+namespace lg::editor {
+
+class CompileView;
+class DiskSync;
+class Document;
+class Palette;
+class ParamPanel;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  // `interactive`: false for screenshots and tests, where nothing may wait for a person.
+  explicit MainWindow(bool interactive = true, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Opens a file; on failure the current graph stays and Problems lists why.
+  bool open_file(const QString& path);
+  // Opens the autosave of `path` (after a crash) as unsaved changes to it.
+  bool open_recovered(const QString& path);
+  // Asks whether to recover the autosave of `path` (empty: the untitled graph), if there is one.
+  void offer_recovery(const QString& path);
+  bool save_to(const QString& path);
+  void add_node(const QString& type, std::optional<Position> at = {});
+  void copy_selection();
+  void paste();
+  void delete_selection();
+  void arrange();
+  void set_preview(std::unique_ptr<PreviewRenderer> renderer);
+
+  Document* document() const { return doc_; }
+  Canvas* canvas() const { return canvas_; }
+  Palette* palette() const { return palette_; }
+  ParamPanel* params() const { return params_; }
+  CompileView* compile_view() const { return compile_; }
+  DiskSync* disk_sync() const { return disk_; }
+  QListWidget* problems() const { return problems_; }
+  InspectorWidget* inspector() const { return inspector_; }
+  QLabel* preview_image() const { return preview_; }
+  const Validation& validation() const { return validation_; }
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void build_menus();
+  void refresh();
+  void show_problems();
+  void show_selection();
+  void edit_links(const std::vector<Link>& added, const std::vector<Link>& removed);
+  void move_nodes(const std::map<std::string, Position>& positions);
+  void set_param(const std::string& node, const std::string& param, const JsonValue& value);
+  void show_menu(Position at, QPoint global);
+  void update_title();
+  bool maybe_save();
+  bool save();
+  bool save_as();
+  void open_dialog();
+  void new_graph();
+
+  bool interactive_;
+  Document* doc_;
+  DiskSync* disk_;
+  Canvas* canvas_;
+  Palette* palette_;
+  ParamPanel* params_;
+  CompileView* compile_;
+  QListWidget* problems_;
+  InspectorWidget* inspector_;
+  QLabel* preview_ = nullptr;
+  std::unique_ptr<PreviewRenderer> renderer_;
+  Validation validation_;
+  std::vector<Diagnostic> disk_problems_;  // the file on disk is broken: why
+};
+
+}  // namespace lg::editor

@@ -1,0 +1,175 @@
+// The editor and files: saving writes the runtime's format, examples round-trip untouched, a
+// file changed on disk reloads (a broken one keeps the last good graph), autosave recovers
+// unsaved work, and --screenshot writes the window.
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QListWidget>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include "editor/disk_sync.h"
+#include "editor/document.h"
+#include "editor/graph_edits.h"
+#include "editor/main_window.h"
+#include "graph/graph_io.h"
+#include "qt_app.h"
+
+namespace lg::editor {
+namespace {
+
+using lg::test::settle;
+
+QString example(const QString& name) {
+  return QStringLiteral(LUMAGRAPH_SOURCE_DIR "/examples/") + name;
+}
+
+void write(const QString& path, const QByteArray& text) {
+  QFile f(path);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+  f.write(text);
+}
+
+JsonValue json_of_file(const QString& path) {
+  Diagnostics d;
+  std::optional<Graph> g = load_graph_file(path.toStdString(), d);
+  EXPECT_TRUE(g) << d.to_string();
+  return g ? graph_to_json(*g) : JsonValue();
+}
+
+class FilesTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    lg::test::qt_app();
+    ASSERT_TRUE(dir.isValid());
+    window = std::make_unique<MainWindow>(false);
+  }
+  QString copy_example(const QString& name) {
+    const QString path = dir.filePath(name);
+    QFile::copy(example(name), path);
+    QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+    return path;
+  }
+  QTemporaryDir dir;
+  std::unique_ptr<MainWindow> window;
+};
+
+TEST_F(FilesTest, EveryExampleRoundTripsUnedited) {
+  for (const QString& name : QDir(example("")).entryList({"*.json"}, QDir::Files)) {
+    ASSERT_TRUE(window->open_file(example(name))) << name.toStdString();
+    const QString out = dir.filePath(name);
+    ASSERT_TRUE(window->save_to(out));
+    EXPECT_EQ(json_of_file(out), json_of_file(example(name))) << name.toStdString();
+  }
+}
+
+TEST_F(FilesTest, SavingWritesTheExpectedJson) {
+  const QString path = copy_example("minimal.json");
+  ASSERT_TRUE(window->open_file(path));
+  Graph g = window->document()->graph();
+  set_param(g, "tonemap", "exposure", JsonValue(1.5));
+  set_node_position(g, "out", {760, 40});
+  window->document()->edit(g, "test edit");
+  ASSERT_TRUE(window->document()->is_modified());
+  ASSERT_TRUE(window->save_to(path));
+  EXPECT_FALSE(window->document()->is_modified());
+  const char* expected = R"({
+    "format": "lumagraph/1", "name": "minimal",
+    "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "light", "type": "lighting.deferred" },
+      { "id": "tonemap", "type": "post.tonemap", "params": { "exposure": 1.5 } },
+      { "id": "out", "type": "output.display" }
+    ],
+    "links": [
+      { "from": "gbuf.gbuffer", "to": "light.gbuffer" },
+      { "from": "light.color", "to": "tonemap.color" },
+      { "from": "tonemap.color", "to": "out.color" }
+    ],
+    "outputs": [],
+    "editor": { "positions": { "gbuf": [0, 0], "light": [240, 0], "tonemap": [480, 0], "out": [760, 40] } }
+  })";
+  Diagnostics d;
+  std::optional<Graph> want = parse_graph_text(expected, d);
+  ASSERT_TRUE(want) << d.to_string();
+  EXPECT_EQ(json_of_file(path), graph_to_json(*want));
+}
+
+TEST_F(FilesTest, ABrokenFileOnDiskKeepsTheLastGoodGraph) {
+  const QString path = copy_example("minimal.json");
+  ASSERT_TRUE(window->open_file(path));
+  write(path, "{ \"format\": \"lumagraph/1\", \"nodes\": [ { \"id\": ");
+  window->disk_sync()->check_file();
+  settle();
+  EXPECT_EQ(window->document()->graph().nodes.size(), 4u);
+  ASSERT_GT(window->problems()->count(), 0);
+  EXPECT_TRUE(window->problems()->item(0)->text().startsWith("file on disk"))
+      << window->problems()->item(0)->text().toStdString();
+
+  // Fixed on disk (here: one node fewer): it reloads, and the reload is undoable.
+  QFile original(example("minimal.json"));
+  ASSERT_TRUE(original.open(QIODevice::ReadOnly));
+  Diagnostics d;
+  Graph fixed = *parse_graph_text(original.readAll().toStdString(), d);
+  remove_nodes(fixed, {"out"});
+  write(path, QByteArray::fromStdString(graph_to_text(fixed)));
+  window->disk_sync()->check_file();
+  settle();
+  EXPECT_EQ(window->document()->graph().nodes.size(), 3u);
+  EXPECT_FALSE(window->document()->is_modified());
+  EXPECT_EQ(window->canvas()->node("out"), nullptr);
+}
+
+TEST_F(FilesTest, TheWatcherNoticesChangesOnDisk) {
+  const QString path = copy_example("minimal.json");
+  ASSERT_TRUE(window->open_file(path));
+  Graph g = window->document()->graph();
+  set_param(g, "tonemap", "curve", JsonValue("neutral"));
+  write(path, QByteArray::fromStdString(graph_to_text(g)));
+  // The watcher signals asynchronously; no wall-clock assertion, only a bounded wait.
+  for (int i = 0; i < 200 && !find_node(window->document()->graph(), "tonemap")->params.find("curve"); ++i) {
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  }
+  EXPECT_EQ(*find_node(window->document()->graph(), "tonemap")->params.find("curve"), JsonValue("neutral"));
+}
+
+TEST_F(FilesTest, AutosaveRecoversUnsavedWork) {
+  const QString path = copy_example("minimal.json");
+  ASSERT_TRUE(window->open_file(path));
+  Graph g = window->document()->graph();
+  add_node(g, "post.bloom", {100, 100});
+  window->document()->edit(g, "add bloom");
+  window->disk_sync()->write_autosave();
+  EXPECT_EQ(DiskSync::recoverable_autosave(path), DiskSync::autosave_path(path));
+
+  // A later session (the first one "crashed": its autosave is still there).
+  MainWindow next(false);
+  ASSERT_TRUE(next.open_file(path));
+  EXPECT_FALSE(find_node(next.document()->graph(), "bloom"));
+  ASSERT_TRUE(next.open_recovered(path));
+  EXPECT_TRUE(find_node(next.document()->graph(), "bloom"));
+  EXPECT_TRUE(next.document()->is_modified());
+  ASSERT_TRUE(next.save_to(path));
+  EXPECT_FALSE(QFile::exists(DiskSync::autosave_path(path)));
+}
+
+TEST_F(FilesTest, ScreenshotWritesTheWindow) {
+  const QString png = dir.filePath("default.png");
+  QProcess editor;
+  editor.start(QStringLiteral(LUMAGRAPH_BINARY_DIR "/lumagraph-editor"),
+               {example("default.json"), "--screenshot", png});
+  ASSERT_TRUE(editor.waitForFinished(120'000));
+  EXPECT_EQ(editor.exitCode(), 0) << editor.readAllStandardError().toStdString();
+  QImage image(png);
+  ASSERT_FALSE(image.isNull());
+  EXPECT_EQ(image.size(), QSize(1600, 900));
+  std::set<QRgb> colours;
+  for (int y = 0; y < image.height(); y += 7)
+    for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
+  EXPECT_GT(colours.size(), 50u);
+}
+
+}  // namespace
+}  // namespace lg::editor
