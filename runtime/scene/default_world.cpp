@@ -59,7 +59,7 @@ void add_sphere_rows(World& world) {
 
 void add_lights_and_camera(World& world) {
   Entity sun = place(world, "sun", {0.0f, 0.0f, 0.0f}, look_rotation({-0.4f, -0.8f, -0.45f}));
-  world.add<DirectionalLight>(sun, {{1.0f, 0.95f, 0.85f}, 3.0f, 0.00465f, true});
+  world.add<DirectionalLight>(sun, {{1.0f, 0.95f, 0.85f}, 8.0f, 0.00465f, true});
 
   Entity sky = world.create("sky");
   world.add<EnvironmentLight>(sky, {"", 1.0f});

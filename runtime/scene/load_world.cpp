@@ -53,7 +53,7 @@ void add_viewing_defaults(World& world) {
   if (!lit) {
     Entity sun = world.create("sun");
     world.add<Transform>(sun, {glm::vec3(0.0f), look_rotation({-0.4f, -0.8f, -0.45f}), glm::vec3(1.0f), {}});
-    world.add<DirectionalLight>(sun, {{1.0f, 0.95f, 0.85f}, 3.0f, 0.00465f, true});
+    world.add<DirectionalLight>(sun, {{1.0f, 0.95f, 0.85f}, 8.0f, 0.00465f, true});
   }
   if (world.count<EnvironmentLight>() == 0) world.add<EnvironmentLight>(world.create("sky"), {"", 1.0f});
 }
