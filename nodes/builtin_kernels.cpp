@@ -10,6 +10,8 @@
 #include "nodes/lighting/ibl/ibl_kernel.h"
 #include "nodes/occlusion/gtao/gtao_kernel.h"
 #include "nodes/occlusion/ssao/ssao_kernel.h"
+#include "nodes/post/bloom/bloom_kernel.h"
+#include "nodes/post/dof/dof_kernel.h"
 #include "nodes/post/tonemap/tonemap_kernel.h"
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
@@ -29,6 +31,8 @@ const KernelRegistry& builtin_kernels() {
     r.add("lighting.ibl", make_ibl_kernel);
     r.add("occlusion.gtao", make_gtao_kernel);
     r.add("occlusion.ssao", make_ssao_kernel);
+    r.add("post.bloom", make_bloom_kernel);
+    r.add("post.dof", make_dof_kernel);
     r.add("post.tonemap", make_tonemap_kernel);
     return r;
   }();

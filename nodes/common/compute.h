@@ -20,6 +20,10 @@ inline void dispatch_texels(VkCommandBuffer cmd, uint32_t width, uint32_t height
   vkCmdDispatch(cmd, (width + tile - 1) / tile, (height + tile - 1) / tile, 1);
 }
 
+// Between dispatches of one pass that read what the one before wrote (the levels of a mip
+// chain): the plan's barriers order passes, not the dispatches inside one.
+void compute_to_compute_barrier(VkCommandBuffer cmd);
+
 // The pipeline of `shader` (a path under nodes/, see node_shaders.h) takes its bindings from
 // `writes`; the pass's name labels it in validation messages.
 void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
