@@ -1,6 +1,7 @@
-// lumagraph-editor [GRAPH] [--screenshot FILE]: edits graph files. With --screenshot it opens
-// the graph, lays it out, writes the window to a PNG and exits (for docs and GUI tests);
-// --select ID shows that node's parameters in it.
+// lumagraph-editor [GRAPH] [--screenshot FILE]: edits graph files, with a live preview rendered
+// by the runtime off the UI thread (--no-preview leaves it out). With --screenshot it opens the
+// graph, lays it out, waits for the first preview, writes the window to a PNG and exits (for
+// docs and GUI tests); --select ID shows that node's parameters in it.
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -12,6 +13,7 @@
 
 #include "editor/canvas.h"
 #include "editor/main_window.h"
+#include "editor/runtime_preview.h"
 
 int main(int argc, char** argv) {
   // VTK's view in the inspector needs its GL format before the application exists.
@@ -30,6 +32,8 @@ int main(int argc, char** argv) {
   const QCommandLineOption select(QStringLiteral("select"), QStringLiteral("Select a node (for screenshots)."),
                                   QStringLiteral("ID"));
   args.addOption(select);
+  const QCommandLineOption no_preview(QStringLiteral("no-preview"), QStringLiteral("Do not render a live preview."));
+  args.addOption(no_preview);
   args.process(app);
   const QStringList files = args.positionalArguments();
   const bool shoot = args.isSet(screenshot);
@@ -40,15 +44,21 @@ int main(int argc, char** argv) {
     return 1;
   }
   window.show();
+  if (!args.isSet(no_preview)) window.set_preview(std::make_unique<lg::editor::RuntimePreview>());
   if (!shoot) {
     if (files.isEmpty()) window.offer_recovery({});
     return app.exec();
   }
 
   if (args.isSet(select)) window.canvas()->select_nodes({args.value(select).toStdString()});
-  // Let the docks and the canvas take their sizes before framing and grabbing.
+  // Let the docks and the canvas take their sizes, and the preview arrive, before grabbing.
   QEventLoop settle;
-  QTimer::singleShot(300, &settle, &QEventLoop::quit);
+  if (!args.isSet(no_preview) && window.previews_shown() == 0) {
+    QObject::connect(&window, &lg::editor::MainWindow::preview_shown, &settle, &QEventLoop::quit);
+    QTimer::singleShot(60000, &settle, &QEventLoop::quit);
+  } else {
+    QTimer::singleShot(300, &settle, &QEventLoop::quit);
+  }
   settle.exec();
   window.canvas()->frame_all();
   QApplication::processEvents();

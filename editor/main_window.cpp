@@ -270,14 +270,18 @@ void MainWindow::refresh() {
   compile_->show_plan(validation_.plan ? &*validation_.plan : nullptr);
   show_selection();
   update_title();
-  if (renderer_ && validation_.plan) {
-    QString error;
-    const QImage image = renderer_->render(graph, preview_->size(), &error);
-    if (image.isNull())
-      preview_->setText(error);
-    else
-      preview_->setPixmap(QPixmap::fromImage(image));
+  if (preview_runner_ && validation_.plan) preview_runner_->request(graph, preview_->size());
+}
+
+void MainWindow::show_preview(const QImage& image, const QString& error, double milliseconds) {
+  if (image.isNull()) {
+    preview_->setText(error);
+  } else {
+    preview_->setPixmap(QPixmap::fromImage(image));
+    statusBar()->showMessage(tr("Preview rendered in %1 ms").arg(milliseconds, 0, 'f', 0), 4000);
   }
+  ++previews_shown_;
+  emit preview_shown();
 }
 
 void MainWindow::show_problems() {
@@ -402,7 +406,9 @@ void MainWindow::show_menu(Position at, QPoint global) {
 }
 
 void MainWindow::set_preview(std::unique_ptr<PreviewRenderer> renderer) {
-  renderer_ = std::move(renderer);
+  delete preview_runner_;
+  preview_runner_ = new AsyncPreview(std::move(renderer), this);
+  connect(preview_runner_, &AsyncPreview::finished, this, &MainWindow::show_preview);
   if (!preview_) {
     preview_ = new QLabel(this);
     preview_->setAlignment(Qt::AlignCenter);

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "editor/canvas.h"
+#include "editor/async_preview.h"
 #include "editor/preview.h"
 #include "editor/validation.h"
 
@@ -45,6 +46,7 @@ class MainWindow : public QMainWindow {
   void paste();
   void delete_selection();
   void arrange();
+  // Adds the Preview dock; `renderer` runs off the UI thread after each edit that compiles.
   void set_preview(std::unique_ptr<PreviewRenderer> renderer);
 
   Document* document() const { return doc_; }
@@ -56,7 +58,11 @@ class MainWindow : public QMainWindow {
   QListWidget* problems() const { return problems_; }
   InspectorWidget* inspector() const { return inspector_; }
   QLabel* preview_image() const { return preview_; }
+  int previews_shown() const { return previews_shown_; }
   const Validation& validation() const { return validation_; }
+
+ signals:
+  void preview_shown();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -70,6 +76,7 @@ class MainWindow : public QMainWindow {
   void move_nodes(const std::map<std::string, Position>& positions);
   void set_param(const std::string& node, const std::string& param, const JsonValue& value);
   void show_menu(Position at, QPoint global);
+  void show_preview(const QImage& image, const QString& error, double milliseconds);
   void update_title();
   bool maybe_save();
   bool save();
@@ -87,7 +94,8 @@ class MainWindow : public QMainWindow {
   QListWidget* problems_;
   InspectorWidget* inspector_;
   QLabel* preview_ = nullptr;
-  std::unique_ptr<PreviewRenderer> renderer_;
+  AsyncPreview* preview_runner_ = nullptr;
+  int previews_shown_ = 0;
   Validation validation_;
   std::vector<Diagnostic> disk_problems_;  // the file on disk is broken: why
 };

@@ -21,9 +21,12 @@
 #include <nodes/FlowScene>
 #include <nodes/FlowView>
 #include <nodes/Node>
+#include <atomic>
 #include <set>
+#include <thread>
 
 #include "editor/compile_view.h"
+#include "editor/runtime_preview.h"
 #include "editor/document.h"
 #include "editor/graph_edits.h"
 #include "editor/inspector_widget.h"
@@ -142,8 +145,8 @@ TEST_F(EditorTest, ParamEditsUndoAndRedo) {
   QUndoStack* undo = window->document()->undo_stack();
   EXPECT_EQ(undo->count(), 1);
   undo->undo();
-  EXPECT_EQ(*find_node(graph(), "tonemap")->params.find("exposure"), JsonValue(0));
-  EXPECT_DOUBLE_EQ(spin->value(), 0.0);  // the panel follows the document
+  EXPECT_EQ(*find_node(graph(), "tonemap")->params.find("exposure"), JsonValue(-1.5));  // as in the file
+  EXPECT_DOUBLE_EQ(spin->value(), -1.5);  // the panel follows the document
   undo->redo();
   EXPECT_EQ(*find_node(graph(), "tonemap")->params.find("exposure"), JsonValue(2.0));
   EXPECT_FALSE(window->validation().has_errors());
@@ -196,28 +199,54 @@ TEST_F(EditorTest, DraggingNodesIsRecordedOnRelease) {
   EXPECT_EQ(c->scene()->getNodePosition(*c->node("dfg")), QPointF(240, 380));
 }
 
+// Renders on the preview's worker thread: what it saw is read back after the image arrives.
 class FlatPreview : public PreviewRenderer {
  public:
   QImage render(const Graph& graph, QSize size, QString*) override {
-    ++calls;
     nodes = graph.nodes.size();
+    renderer_thread = std::this_thread::get_id();
     QImage image(size.expandedTo({16, 16}), QImage::Format_RGB32);
     image.fill(Qt::darkCyan);
     return image;
   }
-  int calls = 0;
-  size_t nodes = 0;
+  std::atomic<size_t> nodes = 0;
+  std::thread::id renderer_thread;
 };
 
-TEST_F(EditorTest, APreviewRendererPlugsInAndFollowsEdits) {
+TEST_F(EditorTest, APreviewRendererPlugsInAndFollowsEditsOffTheUiThread) {
   auto preview = std::make_unique<FlatPreview>();
   FlatPreview* p = preview.get();
   window->set_preview(std::move(preview));
-  EXPECT_EQ(p->calls, 1);
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() >= 1; }, 10000));
+  EXPECT_NE(p->renderer_thread, std::this_thread::get_id());
+  const int shown = window->previews_shown();
   emit window->palette()->add_requested("env.sky");
   settle();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() > shown; }, 10000));
   EXPECT_EQ(p->nodes, graph().nodes.size());
   EXPECT_FALSE(window->preview_image()->pixmap(Qt::ReturnByValue).isNull());
+}
+
+// The real preview: the default graph on the default world through the runtime (lavapipe), then
+// again after a parameter edit. The image must show a scene, not a flat colour.
+TEST_F(EditorTest, TheRuntimePreviewRendersTheDefaultGraph) {
+  window->set_preview(std::make_unique<RuntimePreview>());
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() >= 1; }, 60000));
+  QImage image = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
+  ASSERT_FALSE(image.isNull()) << window->preview_image()->text().toStdString();
+  std::set<QRgb> colours;
+  for (int y = 0; y < image.height(); y += 4)
+    for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
+  EXPECT_GT(colours.size(), 50u) << "a rendered scene has many colours";
+  const int shown = window->previews_shown();
+  Graph edited = graph();  // the edit a slider makes
+  set_param(edited, "tonemap", "exposure", JsonValue(-3.0));
+  window->document()->edit(std::move(edited), QStringLiteral("exposure"), QStringLiteral("exposure"));
+  settle();
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() > shown; }, 60000));
+  QImage darker = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
+  ASSERT_FALSE(darker.isNull());
+  EXPECT_LT(qGray(darker.pixel(darker.width() / 2, darker.height() / 2)), qGray(image.pixel(image.width() / 2, image.height() / 2)));
 }
 
 TEST_F(EditorTest, TheMemoryTimelineDrawsThePlan) {
