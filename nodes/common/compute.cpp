@@ -2,20 +2,15 @@
 
 #include "nodes/common/node_shaders.h"
 #include "runtime/gpu/pipeline.h"
-#include "runtime/gpu/vk_struct.h"
+#include "runtime/gpu/direct_barriers.h"
 
 namespace lg {
 
 void compute_to_compute_barrier(VkCommandBuffer cmd) {
-  auto barrier = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
-  barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-  auto dependency = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dependency.memoryBarrierCount = 1;
-  dependency.pMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(cmd, &dependency);
+  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
+                                                              VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                                                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 
 void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,

@@ -7,9 +7,9 @@
 #include "runtime/exec/frame_pass_context.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/context.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/plan_barriers.h"
-#include "runtime/gpu/vk_struct.h"
 
 namespace lg {
 namespace {
@@ -26,31 +26,7 @@ std::string output_name(const PlanNode& node) {
   return name && name->is_string() ? name->as_string() : "main";
 }
 
-// A whole-image barrier between the clear and the frame's first use, whatever that is.
-void image_barrier(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to) {
-  auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-  b.srcStageMask = b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  b.srcAccessMask = b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  b.oldLayout = from;
-  b.newLayout = to;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image.handle();
-  b.subresourceRange = image.whole_range();
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
-void memory_barrier(VkCommandBuffer cmd) {
-  auto b = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
-  b.srcStageMask = b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  b.srcAccessMask = b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.memoryBarrierCount = 1;
-  dep.pMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
 }  // namespace
 

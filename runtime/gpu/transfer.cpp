@@ -8,7 +8,7 @@
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/gpu_error.h"
-#include "runtime/gpu/vk_struct.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/submit.h"
 #include "runtime/gpu/texel_codec.h"
@@ -16,34 +16,7 @@
 namespace lg {
 namespace {
 
-// Waits for all earlier work and moves the whole image between layouts for or after a copy.
-void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to) {
-  auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-  b.srcStageMask = b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  b.srcAccessMask = b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  b.oldLayout = from;
-  b.newLayout = to;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image.handle();
-  b.subresourceRange = image.whole_range();
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
-// Makes copies visible to later work or to the host.
-void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 dst_stages, VkAccessFlags2 dst_access) {
-  auto b = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
-  b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  b.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-  b.dstStageMask = dst_stages;
-  b.dstAccessMask = dst_access;
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.memoryBarrierCount = 1;
-  dep.pMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
 VkBufferImageCopy copy_region(const Image& image, ImageLocation where) {
   const ImageDesc& d = image.desc();
@@ -82,9 +55,9 @@ void upload_image(Submitter& submitter, const Image& image, std::span<const floa
   Buffer stage = staging(submitter, "image '" + image.desc().name + "'", texels * format.bytes_per_texel, MemoryUse::upload);
   encode_texels(format, rgba, {stage.mapped(), texels * format.bytes_per_texel});
   submitter.run([&](VkCommandBuffer cmd) {
-    transition(cmd, image, old_layout, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    image_barrier(cmd, image, old_layout, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     vkCmdCopyBufferToImage(cmd, stage.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    transition(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, new_layout);
+    image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, new_layout);
   });
 }
 
@@ -96,10 +69,10 @@ std::vector<float> read_image(Submitter& submitter, const Image& image, VkImageL
   const uint64_t texels = texel_count(image, where.mip);
   Buffer stage = staging(submitter, "image '" + image.desc().name + "'", texels * format.bytes_per_texel, MemoryUse::readback);
   submitter.run([&](VkCommandBuffer cmd) {
-    transition(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage.handle(), 1, &region);
-    transition(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+    memory_barrier(cmd, {}, {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});  // to the host
   });
   std::vector<float> rgba(texels * 4);
   decode_texels(format, {stage.mapped(), texels * format.bytes_per_texel}, rgba);
@@ -114,10 +87,10 @@ void upload_buffer(Submitter& submitter, const Buffer& buffer, std::span<const s
   Buffer stage = staging(submitter, "buffer '" + buffer.desc().name + "'", bytes.size(), MemoryUse::upload);
   std::memcpy(stage.mapped(), bytes.data(), bytes.size());
   submitter.run([&](VkCommandBuffer cmd) {
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+    memory_barrier(cmd);
     const VkBufferCopy region{0, offset, bytes.size()};
     vkCmdCopyBuffer(cmd, stage.handle(), buffer.handle(), 1, &region);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+    memory_barrier(cmd);
   });
 }
 
@@ -130,10 +103,10 @@ std::vector<std::byte> read_buffer(Submitter& submitter, const Buffer& buffer, u
   if (size == 0) return out;
   Buffer stage = staging(submitter, "buffer '" + buffer.desc().name + "'", size, MemoryUse::readback);
   submitter.run([&](VkCommandBuffer cmd) {
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+    memory_barrier(cmd, {}, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
     const VkBufferCopy region{offset, 0, size};
     vkCmdCopyBuffer(cmd, buffer.handle(), stage.handle(), 1, &region);
-    memory_barrier(cmd, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    memory_barrier(cmd, {}, {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});  // to the host
   });
   std::memcpy(out.data(), stage.mapped(), size);
   return out;

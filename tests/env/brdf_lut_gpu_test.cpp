@@ -11,6 +11,7 @@
 #include "nodes/env/brdf_lut/dfg_reference.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/transfer.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -23,9 +24,9 @@ class BrdfLutGpuTest : public GpuTest {
     Image lut =
         Image::dedicated(context(), {.name = "dfg", .format = VK_FORMAT_R16G16_SFLOAT, .width = size, .height = size});
     submitter().run([&](VkCommandBuffer cmd) {
-      transition(cmd, lut, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, lut, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_brdf_lut(context(), pipelines(), cmd, "dfg/integrate", samples, lut);
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     return read_image(submitter(), lut, VK_IMAGE_LAYOUT_GENERAL);
   }

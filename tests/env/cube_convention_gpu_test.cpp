@@ -12,6 +12,7 @@
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/transfer.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -64,7 +65,7 @@ TEST_F(CubeConventionGpuTest, SamplerCubeAndShadersAgreeWithTheCpu) {
                                       storage_buffer(2, out.handle())};
     bind_pipeline(context(), cmd, p, writes);
     vkCmdDispatch(cmd, uint32_t((queries.size() + 63) / 64), 1, 1);
-    compute_writes_barrier(cmd);
+    memory_barrier(cmd);
   });
   std::vector<Answer> answers(queries.size());
   const std::vector<std::byte> bytes = read_buffer(submitter(), out);

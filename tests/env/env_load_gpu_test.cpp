@@ -21,6 +21,7 @@
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/image/image_file.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -45,9 +46,9 @@ class EnvLoadGpuTest : public GpuTest {
     Image cube = make_cube(context(), "env", face, mips);
     Sampler nearest(context(), {.filter = Filter::nearest});
     submitter().run([&](VkCommandBuffer cmd) {
-      transition(cmd, cube, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, cube, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_env_load(context(), pipelines(), cmd, "env/resample", source, nearest.handle(), cube);
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     std::vector<CubeImage> out;
     for (uint32_t m = 0; m < mips; ++m) out.push_back(read_cube(submitter(), cube, m, VK_IMAGE_LAYOUT_GENERAL));

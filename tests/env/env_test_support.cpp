@@ -12,7 +12,6 @@
 #include "runtime/gpu/submit.h"
 #include "runtime/gpu/texel_codec.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/vk_struct.h"
 #include "runtime/image/image_file.h"
 
 namespace lg::test {
@@ -80,32 +79,7 @@ CubeImage read_cube(Submitter& submitter, const Image& image, uint32_t mip, VkIm
   return cube;
 }
 
-void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to) {
-  auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-  b.srcStageMask = b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  b.srcAccessMask = b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  b.oldLayout = from;
-  b.newLayout = to;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image.handle();
-  b.subresourceRange = image.whole_range();
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
-void compute_writes_barrier(VkCommandBuffer cmd) {
-  auto b = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
-  b.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  b.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-  b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.memoryBarrierCount = 1;
-  dep.pMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
 CubeImage round_to_half(CubeImage cube) {
   for (glm::dvec4& t : cube.texels)

@@ -33,10 +33,6 @@ void upload_cube(Submitter& submitter, const Image& image, const std::vector<Cub
 // Reads one mip of a cube map in `layout`.
 CubeImage read_cube(Submitter& submitter, const Image& image, uint32_t mip, VkImageLayout layout);
 
-// A full barrier moving `image` between layouts (tests only: simple beats minimal).
-void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to);
-// Makes compute-shader writes visible to everything after (before a readback).
-void compute_writes_barrier(VkCommandBuffer cmd);
 
 // The texels rounded to half precision, as an rgba16f image holds them (references must see
 // what the GPU sees).

@@ -28,6 +28,7 @@
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/texel_codec.h"
 #include "runtime/gpu/transfer.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -170,10 +171,10 @@ class IblGpuTest : public GpuTest {
     IblFallbacks fallbacks(context());
     Sampler linear(context(), {.filter = Filter::linear}), nearest(context(), {.filter = Filter::nearest});
     submitter().run([&](VkCommandBuffer cmd) {
-      transition(cmd, color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_ibl(context(), pipelines(), cmd, "ibl/shade", {full, 1.0f, full}, in, fallbacks, linear.handle(),
                  nearest.handle());
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     return read_image(submitter(), color, VK_IMAGE_LAYOUT_GENERAL);
   }

@@ -15,6 +15,7 @@
 #include "nodes/env/irradiance/irradiance_reference.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -30,9 +31,9 @@ class IrradianceGpuTest : public GpuTest {
     Image out = make_cube(context(), "irradiance", out_size, 1);
     Sampler nearest(context(), {.filter = Filter::nearest});
     submitter().run([&](VkCommandBuffer cmd) {
-      transition(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_irradiance(context(), pipelines(), cmd, "irradiance/convolve", source_mip, source, nearest.handle(), out);
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     return read_cube(submitter(), out, 0, VK_IMAGE_LAYOUT_GENERAL);
   }

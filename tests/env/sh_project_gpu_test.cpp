@@ -20,6 +20,7 @@
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/transfer.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -44,7 +45,7 @@ class ShProjectGpuTest : public GpuTest {
     Sampler sampler(context(), {.filter = Filter::nearest});
     submitter().run([&](VkCommandBuffer cmd) {
       record_sh_project(context(), pipelines(), cmd, "sh/project", settings, cube, sampler.handle(), partials, out);
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     const std::vector<std::byte> bytes = read_buffer(submitter(), out);
     std::vector<float> values(count * 4);

@@ -14,6 +14,7 @@
 #include "nodes/env/sky/sky_kernel.h"
 #include "nodes/env/sky/sky_model.h"
 #include "runtime/gpu/image.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -27,9 +28,9 @@ class SkyGpuTest : public GpuTest {
     while ((size >> mips) > 0) ++mips;
     Image cube = make_cube(context(), "sky", size, mips);
     submitter().run([&](VkCommandBuffer cmd) {
-      transition(cmd, cube, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, cube, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_sky(context(), pipelines(), cmd, "sky/render", model, cube);
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     std::vector<CubeImage> out;
     for (uint32_t m = 0; m < mips; ++m) out.push_back(read_cube(submitter(), cube, m, VK_IMAGE_LAYOUT_GENERAL));

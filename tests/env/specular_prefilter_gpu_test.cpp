@@ -19,6 +19,7 @@
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -37,10 +38,10 @@ class SpecularPrefilterGpuTest : public GpuTest {
     Image out = make_cube(context(), "specular", out_size, mips);
     Sampler trilinear(context(), {.filter = Filter::linear});
     submitter().run([&](VkCommandBuffer cmd) {
-      transition(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_specular_prefilter(context(), pipelines(), cmd, "specular/prefilter", samples, source, trilinear.handle(),
                                 out);
-      compute_writes_barrier(cmd);
+      memory_barrier(cmd);
     });
     std::vector<CubeImage> result;
     for (uint32_t m = 0; m < mips; ++m) result.push_back(read_cube(submitter(), out, m, VK_IMAGE_LAYOUT_GENERAL));

@@ -17,7 +17,7 @@
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/vk_struct.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "tests/lighting/area_light_cases.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -104,15 +104,7 @@ class AreaLightGpuTest : public GpuTest {
       const DescriptorWrite writes[] = {storage_buffer(0, in.handle()), storage_buffer(1, out.handle())};
       bind_pipeline(context(), cmd, p, writes);
       vkCmdDispatch(cmd, uint32_t((input.size() + 63) / 64), 1, 1);
-      auto barrier = vk_struct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
-      barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-      barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-      barrier.dstStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-      barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
-      auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-      dep.memoryBarrierCount = 1;
-      dep.pMemoryBarriers = &barrier;
-      vkCmdPipelineBarrier2(cmd, &dep);
+      memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     });
     std::vector<std::byte> bytes = read_buffer(submitter(), out);
     std::vector<float> result(cases.size());

@@ -7,12 +7,12 @@
 
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/gpu_error.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/vk_struct.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -22,18 +22,8 @@ using ComputeTest = GpuTest;
 
 // Readback's own barrier waits for the dispatches, so none is recorded after them.
 void to_general(VkCommandBuffer cmd, const Image& image) {
-  auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-  b.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-  b.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-  b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image.handle();
-  b.subresourceRange = image.whole_range();
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
+  image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE},
+                {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 
 TEST_F(ComputeTest, FillsAnImageWithAFunctionOfTheTexelCoordinate) {

@@ -8,6 +8,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
 #include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/vk_struct.h"
@@ -22,20 +23,6 @@ struct Push {  // nodes/lighting/ibl/shaders/ibl.comp
   float intensity;
 };
 
-void image_barrier(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
-                   VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
-                   VkAccessFlags2 dst_access) {
-  auto b = vk_struct<VkImageMemoryBarrier2>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2);
-  b.srcStageMask = src_stage, b.srcAccessMask = src_access, b.dstStageMask = dst_stage, b.dstAccessMask = dst_access;
-  b.oldLayout = from, b.newLayout = to;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image.handle();
-  b.subresourceRange = image.whole_range();
-  auto dep = vk_struct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
 
 Image fallback_image(Context& gpu, const char* name, ImageKind kind, VkFormat format) {
   return Image::dedicated(gpu, {.name = std::string("lighting.ibl fallback ") + name,
@@ -94,13 +81,13 @@ void IblFallbacks::prepare(VkCommandBuffer cmd) {
   const VkClearColorValue zero{};
   for (Image* image : {&direct, &ao, &bent_normals, &irradiance}) {
     image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                  VK_ACCESS_2_TRANSFER_WRITE_BIT);
+                  {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE},
+                  {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     const VkImageSubresourceRange range = image->whole_range();
     vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
     image_barrier(cmd, *image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                  {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                  {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
   }
   vkCmdFillBuffer(cmd, sh.handle(), 0, VK_WHOLE_SIZE, 0);
   auto b = vk_struct<VkBufferMemoryBarrier2>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2);
