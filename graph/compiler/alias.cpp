@@ -74,7 +74,8 @@ class GreedyPlacer {
         position_(lives.size(), -1),
         ranges_(by_first.size()),
         placed_(by_first.size(), 0),
-        conflicts_(by_first.size()) {
+        conflicts_(by_first.size()),
+        scratch_(by_first.size()) {
     firsts_.reserve(by_first.size());
     for (size_t k = 0; k < by_first.size(); ++k) {
       position_[by_first[k]] = static_cast<int>(k);
@@ -123,19 +124,32 @@ class GreedyPlacer {
     return out;
   }
 
-  // The gap scan does not care how equal starts are ordered. The lists are usually a dozen or
-  // two long, where insertion sort beats std::sort.
-  static void sort_by_start(ByteRange* first, ByteRange* last) {
-    if (last - first > 32) {
-      std::sort(first, last, [](const ByteRange& a, const ByteRange& b) { return a.start < b.start; });
+  // The gap scan does not care how equal starts are ordered. Lists of a dozen or two take an
+  // insertion sort; longer ones a radix sort over the bytes in which their starts differ, as
+  // comparison sorts mispredict about every other comparison on keys with no pattern.
+  void sort_by_start(ByteRange* first, ByteRange* last) {
+    const size_t count = static_cast<size_t>(last - first);
+    if (count <= 32) {
+      for (ByteRange* i = first + (count > 0); i < last; ++i) {
+        ByteRange s = *i;
+        ByteRange* j = i;
+        for (; j > first && (j - 1)->start > s.start; --j) *j = *(j - 1);
+        *j = s;
+      }
       return;
     }
-    for (ByteRange* i = first + (first != last); i < last; ++i) {
-      ByteRange s = *i;
-      ByteRange* j = i;
-      for (; j > first && (j - 1)->start > s.start; --j) *j = *(j - 1);
-      *j = s;
+    uint64_t differ = 0;
+    for (const ByteRange* r = first; r != last; ++r) differ |= r->start ^ first->start;
+    ByteRange *from = first, *to = scratch_.data();
+    for (int shift = 0; shift < 64; shift += 8) {
+      if (((differ >> shift) & 0xff) == 0) continue;
+      uint32_t place[257] = {};
+      for (size_t k = 0; k < count; ++k) ++place[((from[k].start >> shift) & 0xff) + 1];
+      for (size_t d = 1; d < 257; ++d) place[d] += place[d - 1];
+      for (size_t k = 0; k < count; ++k) to[place[(from[k].start >> shift) & 0xff]++] = from[k];
+      std::swap(from, to);
     }
+    if (from != first) std::copy(from, from + count, first);
   }
 
   StabbingTree alive_;          // holds placed ranges
@@ -144,6 +158,7 @@ class GreedyPlacer {
   std::vector<ByteRange> ranges_;  // by position: bytes, once placed
   std::vector<char> placed_;    // by position
   std::vector<ByteRange> conflicts_;  // room for every placed resource
+  std::vector<ByteRange> scratch_;    // as much, for the radix sort
   uint64_t size_ = 0;
 };
 
