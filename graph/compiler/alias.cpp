@@ -1,6 +1,7 @@
 #include "graph/compiler/alias.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace lg {
 namespace {
@@ -125,7 +126,7 @@ class GreedyPlacer {
   }
 
   // The gap scan does not care how equal starts are ordered. Lists of a dozen or two take an
-  // insertion sort; longer ones a radix sort over the bytes in which their starts differ, as
+  // insertion sort; longer ones a radix sort over the bits in which their starts differ, as
   // comparison sorts mispredict about every other comparison on keys with no pattern.
   void sort_by_start(ByteRange* first, ByteRange* last) {
     const size_t count = static_cast<size_t>(last - first);
@@ -140,9 +141,10 @@ class GreedyPlacer {
     }
     uint64_t differ = 0;
     for (const ByteRange* r = first; r != last; ++r) differ |= r->start ^ first->start;
+    if (differ == 0) return;
+    // Digits of 8 bits from the lowest differing bit (aligned starts share their low bits).
     ByteRange *from = first, *to = scratch_.data();
-    for (int shift = 0; shift < 64; shift += 8) {
-      if (((differ >> shift) & 0xff) == 0) continue;
+    for (int shift = std::countr_zero(differ); shift < 64 - std::countl_zero(differ); shift += 8) {
       uint32_t place[257] = {};
       for (size_t k = 0; k < count; ++k) ++place[((from[k].start >> shift) & 0xff) + 1];
       for (size_t d = 1; d < 257; ++d) place[d] += place[d - 1];
