@@ -142,13 +142,18 @@ class GreedyPlacer {
     uint64_t differ = 0;
     for (const ByteRange* r = first; r != last; ++r) differ |= r->start ^ first->start;
     if (differ == 0) return;
-    // Digits of 8 bits from the lowest differing bit (aligned starts share their low bits).
+    // Digits from the lowest differing bit (aligned starts share their low bits) to the highest,
+    // as few passes of at most 8 bits as cover them, each as narrow as they allow.
+    const int low = std::countr_zero(differ), bits = 64 - std::countl_zero(differ) - low;
+    const int passes = (bits + 7) / 8, width = (bits + passes - 1) / passes;
+    const size_t digits = size_t{1} << width, mask = digits - 1;
     ByteRange *from = first, *to = scratch_.data();
-    for (int shift = std::countr_zero(differ); shift < 64 - std::countl_zero(differ); shift += 8) {
-      uint32_t place[257] = {};
-      for (size_t k = 0; k < count; ++k) ++place[((from[k].start >> shift) & 0xff) + 1];
-      for (size_t d = 1; d < 257; ++d) place[d] += place[d - 1];
-      for (size_t k = 0; k < count; ++k) to[place[(from[k].start >> shift) & 0xff]++] = from[k];
+    for (int shift = low; shift < low + bits; shift += width) {
+      uint32_t place[257];
+      std::fill(place, place + digits + 1, 0);
+      for (size_t k = 0; k < count; ++k) ++place[((from[k].start >> shift) & mask) + 1];
+      for (size_t d = 1; d < digits; ++d) place[d] += place[d - 1];
+      for (size_t k = 0; k < count; ++k) to[place[(from[k].start >> shift) & mask]++] = from[k];
       std::swap(from, to);
     }
     if (from != first) std::copy(from, from + count, first);
