@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <unordered_map>
 
 namespace lg {
 namespace {
@@ -18,6 +19,7 @@ bool is_persistent(const LoweredResource& r) {
 // A resource's bytes within its block: [start, end).
 struct ByteRange {
   uint64_t start, end;
+  uint32_t start_id;  // the placer's number for `start`: equal starts, equal numbers
 };
 
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
@@ -96,7 +98,7 @@ class GreedyPlacer {
       *end = ranges_[k];
       end += placed_[k];
     }
-    sort_by_start(conflicts_.data(), end);
+    end = sort_by_start(conflicts_.data(), end);
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
     for (const ByteRange* c = conflicts_.data(); c != end; ++c) {
@@ -108,7 +110,9 @@ class GreedyPlacer {
     }
     if (best == UINT64_MAX) best = align_up(cursor, alignment);
     const int k = position_[r];
-    ranges_[k] = {best, best + bytes};
+    auto [id, added] = start_ids_.try_emplace(best, static_cast<uint32_t>(start_ids_.size()));
+    if (added) seen_.push_back(0), slot_.push_back(0);
+    ranges_[k] = {best, best + bytes, id->second};
     placed_[k] = 1;
     alive_.insert(life, ranges_[k]);
     size_ = std::max(size_, best + bytes);
@@ -125,10 +129,14 @@ class GreedyPlacer {
     return out;
   }
 
-  // The gap scan does not care how equal starts are ordered. Lists of a dozen or two take an
-  // insertion sort; longer ones a radix sort over the bits in which their starts differ, as
-  // comparison sorts mispredict about every other comparison on keys with no pattern.
-  void sort_by_start(ByteRange* first, ByteRange* last) {
+  // Sorts by start; returns the new end. The gap scan does not care how equal starts are
+  // ordered, and sees ranges that share a start as one ending at the furthest end. Longer lists
+  // than a few dozen first merge the ranges that share a start (greedy placement reuses
+  // offsets: about five ranges to a start in long lists). Then short lists take an insertion
+  // sort, long ones a radix sort over the bits in which their starts differ, as comparison
+  // sorts mispredict about every other comparison on keys with no pattern.
+  ByteRange* sort_by_start(ByteRange* first, ByteRange* last) {
+    if (last - first > 32) last = merge_equal_starts(first, last);
     const size_t count = static_cast<size_t>(last - first);
     if (count <= 32) {
       for (ByteRange* i = first + (count > 0); i < last; ++i) {
@@ -137,11 +145,11 @@ class GreedyPlacer {
         for (; j > first && (j - 1)->start > s.start; --j) *j = *(j - 1);
         *j = s;
       }
-      return;
+      return last;
     }
     uint64_t differ = 0;
     for (const ByteRange* r = first; r != last; ++r) differ |= r->start ^ first->start;
-    if (differ == 0) return;
+    if (differ == 0) return last;
     // Digits from the lowest differing bit (aligned starts share their low bits) to the highest,
     // as few passes of at most 8 bits as cover them, each as narrow as they allow.
     const int low = std::countr_zero(differ), bits = 64 - std::countl_zero(differ) - low;
@@ -157,6 +165,25 @@ class GreedyPlacer {
       std::swap(from, to);
     }
     if (from != first) std::copy(from, from + count, first);
+    return last;
+  }
+
+  // Keeps one range per start, ending at the furthest end; returns the new end. In place and
+  // without branches: a range joins the first one with its start, or is kept.
+  ByteRange* merge_equal_starts(ByteRange* first, ByteRange* last) {
+    ++epoch_;
+    size_t kept = 0;
+    for (const ByteRange* r = first; r != last; ++r) {
+      const uint32_t id = r->start_id;
+      const bool seen = seen_[id] == epoch_;
+      const size_t slot = seen ? slot_[id] : kept;
+      const uint64_t end = seen ? std::max(first[slot].end, r->end) : r->end;
+      first[slot] = {r->start, end, id};
+      seen_[id] = epoch_;
+      slot_[id] = static_cast<uint32_t>(slot);
+      kept += !seen;
+    }
+    return first + kept;
   }
 
   StabbingTree alive_;          // holds placed ranges
@@ -166,6 +193,9 @@ class GreedyPlacer {
   std::vector<char> placed_;    // by position
   std::vector<ByteRange> conflicts_;  // room for every placed resource
   std::vector<ByteRange> scratch_;    // as much, for the radix sort
+  std::unordered_map<uint64_t, uint32_t> start_ids_;  // offset -> its number
+  std::vector<uint32_t> seen_, slot_;  // by start number: when last seen in a list, and where
+  uint32_t epoch_ = 0;
   uint64_t size_ = 0;
 };
 
