@@ -234,7 +234,8 @@ class Lowerer {
     bool is_static = s.is_static;
     uint64_t key = 0;
     if (is_static) {
-      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(node_params(r_, n, roots_)));
+      const JsonValue& params = out_.static_params.emplace_back(n, node_params(r_, n, roots_)).second;
+      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(params));
       for (int li : rn.input_link) {
         if (li < 0) continue;
         if (r_.links[li].history) {
