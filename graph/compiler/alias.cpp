@@ -282,13 +282,11 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     return a.first != b.first ? a.first < b.first : a.index < b.index;
   });
   // By first use, ties by index: the order the placer scans and the order bytes change hands.
-  std::vector<std::pair<int, int>> firsts;
-  firsts.reserve(shared.size());
-  for (int r : shared) firsts.emplace_back(lifetimes[r].first, r);
-  std::sort(firsts.begin(), firsts.end());
-  std::vector<int> by_first;
-  by_first.reserve(shared.size());
-  for (const auto& [first, r] : firsts) by_first.push_back(r);
+  // A counting sort over schedule positions (`shared` is in index order, and it is stable).
+  std::vector<int> start(static_cast<size_t>(passes) + 1, 0), by_first(shared.size());
+  for (int r : shared) ++start[lifetimes[r].first + 1];
+  for (int p = 0; p < passes; ++p) start[p + 1] += start[p];
+  for (int r : shared) by_first[start[lifetimes[r].first]++] = r;
 
   GreedyPlacer placer(passes, by_first, lifetimes);
   for (const Key& key : keys) {
