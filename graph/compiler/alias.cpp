@@ -1,8 +1,8 @@
 #include "graph/compiler/alias.h"
 
 #include <algorithm>
-#include <map>
-#include <memory_resource>
+#include <bit>
+#include <unordered_map>
 
 namespace lg {
 namespace {
@@ -16,37 +16,51 @@ bool is_persistent(const LoweredResource& r) {
   return r.lifetime == ResourceLifetime::cached || r.lifetime == ResourceLifetime::history;
 }
 
+// A resource's bytes within its block: [start, end).
+struct ByteRange {
+  uint64_t start, end;
+  uint32_t start_id;  // the placer's number for `start`: equal starts, equal numbers
+};
+
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
-// a bottom-up segment tree whose nodes hold, as linked lists in one pool, the intervals that
-// cover their whole range; the answer is the lists on the path from leaf t to the root.
+// a bottom-up segment tree whose nodes hold the byte ranges of the placed intervals that cover
+// their whole range; the answer is the ranges on the path from leaf t to the root. Every
+// interval is known before any is placed, so each node's room is counted up front and all
+// ranges sit in one array, node after node: a stab reads a few contiguous runs.
 class StabbingTree {
  public:
-  explicit StabbingTree(int passes) : leaves_(std::max(passes, 1)), head_(2 * static_cast<size_t>(leaves_), -1) {}
-
-  void insert(int first, int last, int id) {
-    for (int lo = first + leaves_, hi = last + 1 + leaves_; lo < hi; lo /= 2, hi /= 2) {
-      if (lo & 1) link(lo++, id);
-      if (hi & 1) link(--hi, id);
-    }
+  StabbingTree(int passes, const std::vector<Lifetime>& intervals)
+      : leaves_(std::max(passes, 1)), start_(2 * static_cast<size_t>(leaves_) + 1, 0) {
+    for (const Lifetime& life : intervals) for_nodes(life, [&](int node) { ++start_[node + 1]; });
+    for (size_t node = 1; node < start_.size(); ++node) start_[node] += start_[node - 1];
+    fill_.assign(start_.begin(), start_.end() - 1);
+    ranges_.resize(start_.back());
   }
 
-  template <class F>
-  void stab(int t, F&& visit) const {
+  void insert(Lifetime life, ByteRange range) {
+    for_nodes(life, [&](int node) { ranges_[fill_[node]++] = range; });
+  }
+
+  // Appends the ranges alive at pass t to `out`, which has room for them; returns the new end.
+  ByteRange* stab(int t, ByteRange* out) const {
     for (int node = t + leaves_; node > 0; node /= 2)
-      for (int e = head_[node]; e >= 0; e = pool_[e].next) visit(pool_[e].id);
+      out = std::copy(ranges_.begin() + start_[node], ranges_.begin() + fill_[node], out);
+    return out;
   }
 
  private:
-  struct Entry {
-    int id, next;
-  };
   int leaves_;
-  std::vector<int> head_;
-  std::vector<Entry> pool_;
+  std::vector<int> start_;  // node -> its first slot in ranges_; start_[node + 1] ends it
+  std::vector<int> fill_;   // node -> its next free slot
+  std::vector<ByteRange> ranges_;
 
-  void link(int node, int id) {
-    pool_.push_back({id, head_[node]});
-    head_[node] = static_cast<int>(pool_.size()) - 1;
+  // The nodes whose ranges together cover [first, last] exactly.
+  template <class F>
+  void for_nodes(Lifetime life, F&& visit) const {
+    for (int lo = life.first + leaves_, hi = life.last + 1 + leaves_; lo < hi; lo /= 2, hi /= 2) {
+      if (lo & 1) visit(lo++);
+      if (hi & 1) visit(--hi);
+    }
   }
 };
 
@@ -57,9 +71,14 @@ class StabbingTree {
 class GreedyPlacer {
  public:
   // `by_first`: the resources to place, sorted by first use. Internally a resource is its
-  // position in that order, so the scan below reads placed spans from one contiguous array.
+  // position in that order, so the scan below reads placed ranges from one contiguous array.
   GreedyPlacer(int passes, const std::vector<int>& by_first, const std::vector<Lifetime>& lives)
-      : alive_(passes), position_(lives.size(), -1), spans_(by_first.size()), placed_(by_first.size(), 0) {
+      : alive_(passes, lifetimes_of(by_first, lives)),
+        position_(lives.size(), -1),
+        ranges_(by_first.size()),
+        placed_(by_first.size(), 0),
+        conflicts_(by_first.size()),
+        scratch_(by_first.size()) {
     firsts_.reserve(by_first.size());
     for (size_t k = 0; k < by_first.size(); ++k) {
       position_[by_first[k]] = static_cast<int>(k);
@@ -69,25 +88,33 @@ class GreedyPlacer {
 
   uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment) {
     // The two sources are disjoint (first use at or before this one's, or after it) and the
-    // tree holds each interval once on any root path, so nothing is counted twice.
-    conflicts_.clear();
-    alive_.stab(life.first, [&](int k) { conflicts_.push_back(spans_[k]); });
+    // tree holds each interval once on any root path, so nothing is counted twice: the
+    // conflicts are distinct placed resources, fewer than all of them.
+    ByteRange* end = alive_.stab(life.first, conflicts_.data());
+    // Without a branch on `placed_`, which follows no pattern: each range is written, and
+    // kept only if placed.
     for (auto k = std::upper_bound(firsts_.begin(), firsts_.end(), life.first) - firsts_.begin();
-         k < static_cast<long>(firsts_.size()) && firsts_[k] <= life.last; ++k)
-      if (placed_[k]) conflicts_.push_back(spans_[k]);
-    sort_by_start(conflicts_);
+         k < static_cast<long>(firsts_.size()) && firsts_[k] <= life.last; ++k) {
+      *end = ranges_[k];
+      end += placed_[k];
+    }
+    end = sort_by_start(conflicts_.data(), end);
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
-    for (const auto& [start, end] : conflicts_) {
-      uint64_t offset = align_up(cursor, alignment);
-      if (offset + bytes <= start && start - cursor < best_gap) best = offset, best_gap = start - cursor;
-      cursor = std::max(cursor, end);
+    for (const ByteRange* c = conflicts_.data(); c != end; ++c) {
+      uint64_t offset = align_up(cursor, alignment), gap = c->start - cursor;
+      bool better = offset + bytes <= c->start && gap < best_gap;
+      best = better ? offset : best;
+      best_gap = better ? gap : best_gap;
+      cursor = std::max(cursor, c->end);
     }
     if (best == UINT64_MAX) best = align_up(cursor, alignment);
     const int k = position_[r];
-    alive_.insert(life.first, life.last, k);
-    spans_[k] = {best, best + bytes};
+    auto [id, added] = start_ids_.try_emplace(best, static_cast<uint32_t>(start_ids_.size()));
+    if (added) seen_.push_back(0), slot_.push_back(0);
+    ranges_[k] = {best, best + bytes, id->second};
     placed_[k] = 1;
+    alive_.insert(life, ranges_[k]);
     size_ = std::max(size_, best + bytes);
     return best;
   }
@@ -95,31 +122,80 @@ class GreedyPlacer {
   uint64_t size() const { return size_; }
 
  private:
-  struct Span {
-    uint64_t start, end;
-  };
-
-  // The gap scan does not care how equal starts are ordered. The lists are usually a dozen or
-  // two long, where insertion sort beats std::sort.
-  static void sort_by_start(std::vector<Span>& spans) {
-    if (spans.size() > 32) {
-      std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.start < b.start; });
-      return;
-    }
-    for (size_t i = 1; i < spans.size(); ++i) {
-      Span s = spans[i];
-      size_t j = i;
-      for (; j > 0 && spans[j - 1].start > s.start; --j) spans[j] = spans[j - 1];
-      spans[j] = s;
-    }
+  static std::vector<Lifetime> lifetimes_of(const std::vector<int>& resources, const std::vector<Lifetime>& lives) {
+    std::vector<Lifetime> out;
+    out.reserve(resources.size());
+    for (int r : resources) out.push_back(lives[r]);
+    return out;
   }
 
-  StabbingTree alive_;          // holds positions
+  // Sorts by start; returns the new end. The gap scan does not care how equal starts are
+  // ordered, and sees ranges that share a start as one ending at the furthest end. Longer lists
+  // than a few dozen first merge the ranges that share a start (greedy placement reuses
+  // offsets: about five ranges to a start in long lists). Then short lists take an insertion
+  // sort, long ones a radix sort over the bits in which their starts differ, as comparison
+  // sorts mispredict about every other comparison on keys with no pattern.
+  ByteRange* sort_by_start(ByteRange* first, ByteRange* last) {
+    if (last - first > 32) last = merge_equal_starts(first, last);
+    const size_t count = static_cast<size_t>(last - first);
+    if (count <= 32) {
+      for (ByteRange* i = first + (count > 0); i < last; ++i) {
+        ByteRange s = *i;
+        ByteRange* j = i;
+        for (; j > first && (j - 1)->start > s.start; --j) *j = *(j - 1);
+        *j = s;
+      }
+      return last;
+    }
+    uint64_t differ = 0;
+    for (const ByteRange* r = first; r != last; ++r) differ |= r->start ^ first->start;
+    if (differ == 0) return last;
+    // Digits from the lowest differing bit (aligned starts share their low bits) to the highest,
+    // as few passes of at most 8 bits as cover them, each as narrow as they allow.
+    const int low = std::countr_zero(differ), bits = 64 - std::countl_zero(differ) - low;
+    const int passes = (bits + 7) / 8, width = (bits + passes - 1) / passes;
+    const size_t digits = size_t{1} << width, mask = digits - 1;
+    ByteRange *from = first, *to = scratch_.data();
+    for (int shift = low; shift < low + bits; shift += width) {
+      uint32_t place[257];
+      std::fill(place, place + digits + 1, 0);
+      for (size_t k = 0; k < count; ++k) ++place[((from[k].start >> shift) & mask) + 1];
+      for (size_t d = 1; d < digits; ++d) place[d] += place[d - 1];
+      for (size_t k = 0; k < count; ++k) to[place[(from[k].start >> shift) & mask]++] = from[k];
+      std::swap(from, to);
+    }
+    if (from != first) std::copy(from, from + count, first);
+    return last;
+  }
+
+  // Keeps one range per start, ending at the furthest end; returns the new end. In place and
+  // without branches: a range joins the first one with its start, or is kept.
+  ByteRange* merge_equal_starts(ByteRange* first, ByteRange* last) {
+    ++epoch_;
+    size_t kept = 0;
+    for (const ByteRange* r = first; r != last; ++r) {
+      const uint32_t id = r->start_id;
+      const bool seen = seen_[id] == epoch_;
+      const size_t slot = seen ? slot_[id] : kept;
+      const uint64_t end = seen ? std::max(first[slot].end, r->end) : r->end;
+      first[slot] = {r->start, end, id};
+      seen_[id] = epoch_;
+      slot_[id] = static_cast<uint32_t>(slot);
+      kept += !seen;
+    }
+    return first + kept;
+  }
+
+  StabbingTree alive_;          // holds placed ranges
   std::vector<int> position_;   // resource -> position in first-use order
   std::vector<int> firsts_;     // by position: first use
-  std::vector<Span> spans_;     // by position: bytes, once placed
+  std::vector<ByteRange> ranges_;  // by position: bytes, once placed
   std::vector<char> placed_;    // by position
-  std::vector<Span> conflicts_;
+  std::vector<ByteRange> conflicts_;  // room for every placed resource
+  std::vector<ByteRange> scratch_;    // as much, for the radix sort
+  std::unordered_map<uint64_t, uint32_t> start_ids_;  // offset -> its number
+  std::vector<uint32_t> seen_, slot_;  // by start number: when last seen in a list, and where
+  uint32_t epoch_ = 0;
   uint64_t size_ = 0;
 };
 
@@ -128,28 +204,32 @@ class GreedyPlacer {
 // have conflicted).
 class LastOwners {
  public:
-  explicit LastOwners(size_t resources) : pool_(resources * 3 * sizeof(std::pair<const uint64_t, std::pair<uint64_t, int>>) + 4096), owners_(&pool_) {}
-
   void take(uint64_t start, uint64_t end, int owner, std::vector<int>& predecessors) {
-    auto it = owners_.upper_bound(start);
-    if (it != owners_.begin() && std::prev(it)->second.first > start) --it;
-    while (it != owners_.end() && it->first < end) {
-      auto [s, value] = *it;
-      auto [e, previous] = value;
-      predecessors.push_back(previous);
-      it = owners_.erase(it);
-      if (s < start) owners_.emplace(s, std::pair{start, previous});
-      if (e > end) it = owners_.emplace(end, std::pair{e, previous}).first;
-    }
-    owners_.emplace(start, std::pair{end, owner});
+    // Disjoint and sorted by start, so sorted by end too.
+    auto first = std::partition_point(owned_.begin(), owned_.end(), [&](const Owned& o) { return o.end <= start; });
+    auto last = first;
+    for (; last != owned_.end() && last->start < end; ++last) predecessors.push_back(last->owner);
+    // What replaces [first, last): the part of the first one before `start`, the new owner,
+    // and the part of the last one after `end`.
+    Owned pieces[3];
+    int count = 0;
+    if (first != last && first->start < start) pieces[count++] = {first->start, start, first->owner};
+    pieces[count++] = {start, end, owner};
+    if (first != last && (last - 1)->end > end) pieces[count++] = {end, (last - 1)->end, (last - 1)->owner};
+    const auto at = first - owned_.begin(), removed = last - first;
+    if (count > removed) owned_.insert(owned_.begin() + at + removed, count - removed, Owned{});
+    else owned_.erase(owned_.begin() + at + count, owned_.begin() + at + removed);
+    std::copy(pieces, pieces + count, owned_.begin() + at);
     std::sort(predecessors.begin(), predecessors.end());
     predecessors.erase(std::unique(predecessors.begin(), predecessors.end()), predecessors.end());
   }
 
  private:
-  // Nodes come from one arena: the map is rebuilt for every plan and dropped whole.
-  std::pmr::monotonic_buffer_resource pool_;
-  std::pmr::map<uint64_t, std::pair<uint64_t, int>> owners_;  // start -> (end, owner)
+  struct Owned {
+    uint64_t start = 0, end = 0;
+    int owner = -1;
+  };
+  std::vector<Owned> owned_;  // by start
 };
 
 }  // namespace
@@ -202,13 +282,11 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     return a.first != b.first ? a.first < b.first : a.index < b.index;
   });
   // By first use, ties by index: the order the placer scans and the order bytes change hands.
-  std::vector<std::pair<int, int>> firsts;
-  firsts.reserve(shared.size());
-  for (int r : shared) firsts.emplace_back(lifetimes[r].first, r);
-  std::sort(firsts.begin(), firsts.end());
-  std::vector<int> by_first;
-  by_first.reserve(shared.size());
-  for (const auto& [first, r] : firsts) by_first.push_back(r);
+  // A counting sort over schedule positions (`shared` is in index order, and it is stable).
+  std::vector<int> start(static_cast<size_t>(passes) + 1, 0), by_first(shared.size());
+  for (int r : shared) ++start[lifetimes[r].first + 1];
+  for (int p = 0; p < passes; ++p) start[p + 1] += start[p];
+  for (int r : shared) by_first[start[lifetimes[r].first]++] = r;
 
   GreedyPlacer placer(passes, by_first, lifetimes);
   for (const Key& key : keys) {
@@ -227,7 +305,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     out.blocks[0].size = end;
   }
 
-  LastOwners owners(shared.size());
+  LastOwners owners;
   for (int r : by_first) {
     Placement& p = out.placements[r];
     owners.take(p.offset, p.offset + p.size, r, p.predecessors);

@@ -3,13 +3,18 @@
 namespace lg {
 namespace {
 
+// "in.a", built in place: one string, no temporaries.
 std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
+  std::string_view prefix, name;
   switch (a.target) {
-    case PassUse::Target::input: return "in." + s.inputs[a.port].name;
-    case PassUse::Target::output: return "out." + s.outputs[a.port].name;
-    case PassUse::Target::internal: return "tmp." + s.resources[a.port].name;
+    case PassUse::Target::input: prefix = "in.", name = s.inputs[a.port].name; break;
+    case PassUse::Target::output: prefix = "out.", name = s.outputs[a.port].name; break;
+    case PassUse::Target::internal: prefix = "tmp.", name = s.resources[a.port].name; break;
   }
-  return {};
+  std::string slot;
+  slot.reserve(prefix.size() + name.size());
+  slot.append(prefix).append(name);
+  return slot;
 }
 
 }  // namespace
@@ -27,28 +32,32 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
   plan.nodes.reserve(node_order.size());
   plan.passes.reserve(order.size());
+  auto kept_params = lowered.static_params.begin();  // in lowering order, which is node_order
   for (int n : node_order) {
     const NodeSchema& s = *resolved.nodes[n].schema;
-    PlanNode node{graph.nodes[n].id, s.type, states[n].kind, states[n].reason, {}, JsonValue::object(),
-                  lowered.nodes[n].is_static};
-    if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, n, options.roots);
+    // Built in place (aggregates take parentheses in C++20): no temporary to move and destroy.
+    PlanNode& node = plan.nodes.emplace_back(graph.nodes[n].id, s.type, states[n].kind, states[n].reason,
+                                             std::vector<std::pair<std::string, std::string>>{}, JsonValue::object(),
+                                             lowered.nodes[n].is_static);
+    if (kept_params != lowered.static_params.end() && kept_params->first == n) node.params = std::move(kept_params++->second);
+    else if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, n, options.roots);
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
-    plan.nodes.push_back(std::move(node));
   }
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    PlanPass pass{std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue, {}, lp.is_static, lp.cache_key};
-    for (const auto& a : lp.accesses) pass.accesses.push_back({a.resource, a.usage, slot_name(s, a), a.component});
-    plan.passes.push_back(std::move(pass));
+    PlanPass& pass = plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
+                                              std::vector<PlanAccess>{}, lp.is_static, lp.cache_key);
+    pass.accesses.reserve(lp.accesses.size());
+    for (const auto& a : lp.accesses) pass.accesses.emplace_back(a.resource, a.usage, slot_name(s, a), a.component);
   }
   plan.resources.reserve(lowered.resources.size());
   for (size_t r = 0; r < lowered.resources.size(); ++r) {
     auto lifetime = lowered.resources[r].lifetime;
     bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
     if (lives[r].used() && !persistent) plan.memory.transient_unaliased += memory.placements[r].size;
-    plan.resources.push_back({std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r])});
+    plan.resources.emplace_back(std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r]));
     plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
   }
   plan.blocks = memory.blocks;

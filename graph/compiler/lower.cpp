@@ -1,7 +1,10 @@
 #include "graph/compiler/lower.h"
 
 #include <algorithm>
+#include <bit>
+#include <charconv>
 #include <cmath>
+#include <initializer_list>
 #include <tuple>
 
 #include "graph/compiler/cull.h"
@@ -17,10 +20,22 @@ uint64_t fnv1a(uint64_t h, std::string_view text) {
 }
 constexpr uint64_t fnv_basis = 0xcbf29ce484222325ull;
 
-uint32_t full_mip_count(uint32_t w, uint32_t h) {
-  uint32_t n = 1;
-  while ((std::max(w, h) >> n) > 0) ++n;
-  return n;
+uint32_t full_mip_count(uint32_t w, uint32_t h) { return std::max(1u, static_cast<uint32_t>(std::bit_width(std::max(w, h)))); }
+
+// "a/b" or "a.b.c": one string, built without temporaries. Names are mostly short enough for
+// the string's own buffer, so they are put together on the stack first.
+std::string joined(std::initializer_list<std::string_view> parts) {
+  char small[16];
+  size_t size = 0;
+  for (std::string_view p : parts) {
+    if (size + p.size() > sizeof small) {
+      std::string out;
+      for (std::string_view q : parts) out.append(q);
+      return out;
+    }
+    for (char c : p) small[size++] = c;
+  }
+  return std::string(small, size);
 }
 
 // The resources of one port: a bundle's components are created together, so they are
@@ -181,11 +196,12 @@ class Lowerer {
                    ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
   }
 
-  Span make_resources(int n, const PortSpec& spec, const std::string& name) {
+  // Named "<node><separator><port>", and ".<component>" after that for a bundle's parts.
+  Span make_resources(int n, const PortSpec& spec, std::string_view separator) {
     Span span{static_cast<int>(out_.resources.size()), 0};
     for (const PortComponent& c : spec.type.components()) {
       LoweredResource res;
-      res.name = c.name.empty() ? name : name + '.' + c.name;
+      res.name = c.name.empty() ? joined({id(n), separator, spec.name}) : joined({id(n), separator, spec.name, ".", c.name});
       res.node = n;
       res.kind = spec.type.resource;
       res.format = c.format;
@@ -228,7 +244,8 @@ class Lowerer {
     bool is_static = s.is_static;
     uint64_t key = 0;
     if (is_static) {
-      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(node_params(r_, n, roots_)));
+      const JsonValue& params = out_.static_params.emplace_back(n, node_params(r_, n, roots_)).second;
+      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(params));
       for (int li : rn.input_link) {
         if (li < 0) continue;
         if (r_.links[li].history) {
@@ -239,7 +256,8 @@ class Lowerer {
         for (int c = 0; c < source.count; ++c) {
           const LoweredNode& producer = out_.nodes[out_.resources[source[c]].node];
           is_static &= producer.is_static;
-          key = fnv1a(key, std::to_string(producer.cache_key));
+          char digits[24];
+          key = fnv1a(key, std::string_view(digits, std::to_chars(digits, digits + sizeof digits, producer.cache_key).ptr));
         }
       }
     }
@@ -247,13 +265,13 @@ class Lowerer {
     node.cache_key = is_static ? key : 0;
 
     for (size_t o = 0; o < s.outputs.size(); ++o) {
-      Span span = port(n, static_cast<int>(o)) = make_resources(n, s.outputs[o], id(n) + '.' + s.outputs[o].name);
+      Span span = port(n, static_cast<int>(o)) = make_resources(n, s.outputs[o], ".");
       if (is_static)
         for (int c = 0; c < span.count; ++c) out_.resources[span[c]].lifetime = ResourceLifetime::cached;
     }
     size_t first_pass = out_.passes.size();
     internal_.clear();
-    for (const auto& spec : s.resources) internal_.push_back(make_resources(n, spec, id(n) + '/' + spec.name));
+    for (const auto& spec : s.resources) internal_.push_back(make_resources(n, spec, "/"));
 
     bool dropped_any = false;
     for (size_t p = 0; p < s.passes.size(); ++p) {
@@ -265,7 +283,7 @@ class Lowerer {
       LoweredPass pass;
       pass.node = n;
       pass.pass = static_cast<int>(p);
-      pass.name = id(n) + '/' + spec.name;
+      pass.name = joined({id(n), "/", spec.name});
       pass.queue = spec.queue;
       pass.is_static = is_static;
       pass.cache_key = is_static ? fnv1a(key, spec.name) : 0;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "graph/json_value.h"
@@ -68,6 +69,9 @@ struct LoweredGraph {
   std::vector<LoweredPass> passes;  // in a valid (topological) order
   std::vector<LoweredResource> resources;
   std::vector<LoweredOutput> outputs;  // the file's outputs, then output nodes' inputs
+  // (node, node_params) for each node of a static schema, in lowering order: what its cache key
+  // covers, kept so the plan does not build the params again.
+  std::vector<std::pair<int, JsonValue>> static_params;
 };
 
 }  // namespace lg

@@ -3,6 +3,7 @@
 #include <bit>
 #include <functional>
 #include <type_traits>
+#include <unordered_map>
 
 #include "graph/spelling.h"
 
@@ -24,6 +25,15 @@ std::vector<std::string> names_of(const std::vector<T>& items) {
   return out;
 }
 
+// FNV-1a, folded: ids and type names are short, where it beats std::hash's out-of-line call.
+struct NameHash {
+  size_t operator()(std::string_view name) const {
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : name) h = (h ^ c) * 0x100000001b3ull;
+    return static_cast<size_t>(h ^ (h >> 32));
+  }
+};
+
 // Node index by id: open addressing in one array, as a map with a node per entry costs an
 // allocation per graph node.
 class NodeIds {
@@ -44,7 +54,7 @@ class NodeIds {
   // The slot holding `id`, or the empty one where it would go.
   size_t slot(std::string_view id) const {
     const size_t mask = slots_.size() - 1;
-    size_t s = std::hash<std::string_view>{}(id) & mask;
+    size_t s = NameHash{}(id) & mask;
     while (slots_[s] >= 0 && g_.nodes[slots_[s]].id != id) s = (s + 1) & mask;
     return s;
   }
@@ -58,8 +68,12 @@ class Resolver {
     out_.graph = &g_;
     out_.nodes.resize(g_.nodes.size());
     size_t params = 0, inputs = 0;
+    // A graph uses few types many times: each is looked up in the registry once.
+    std::unordered_map<std::string_view, const NodeSchema*, NameHash> schemas;
     for (size_t k = 0; k < g_.nodes.size(); ++k) {
-      if (const NodeSchema* s = out_.nodes[k].schema = r_.find(g_.nodes[k].type)) {
+      auto [it, added] = schemas.try_emplace(g_.nodes[k].type, nullptr);
+      if (added) it->second = r_.find(g_.nodes[k].type);
+      if (const NodeSchema* s = out_.nodes[k].schema = it->second) {
         params += s->params.size();
         inputs += s->inputs.size();
       }

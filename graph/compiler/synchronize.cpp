@@ -69,6 +69,9 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
 std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory) {
   const size_t count = lowered.resources.size();
   std::vector<Group> groups;
+  size_t accesses = 0;  // each starts at most one group: room for all, no regrowth
+  for (int p : order) accesses += lowered.passes[p].accesses.size();
+  groups.reserve(accesses);
   std::vector<int> head(count, -1), tail(count, -1);  // per resource: its first and last group
   std::vector<std::pair<int, AccessInfo>> uses;  // one pass's uses, one per resource
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
@@ -99,6 +102,7 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     if (lowered.resources[r].history_of >= 0) previous_copy[lowered.resources[r].history_of] = static_cast<int>(r);
 
   std::vector<Barrier> out;
+  out.reserve(groups.size());  // at most one barrier per group
   for (size_t r = 0; r < count; ++r) {
     if (head[r] < 0) continue;
     const Group& front = groups[head[r]];

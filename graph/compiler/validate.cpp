@@ -26,6 +26,14 @@ bool in_range(const ParamSpec& spec, double v) {
 
 std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
 
+// The first 8 bytes of an id as a big-endian number, zero-padded: ordering these orders the ids,
+// except where they are equal and the rest of the ids decides.
+uint64_t id_prefix(std::string_view id) {
+  uint64_t key = 0;
+  for (size_t k = 0; k < 8; ++k) key = key << 8 | (k < id.size() ? static_cast<unsigned char>(id[k]) : 0u);
+  return key;
+}
+
 }  // namespace
 
 std::string check_param_value(const ParamSpec& spec, const JsonValue& v) {
@@ -137,7 +145,9 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
   std::vector<int> consumers(start[node_count]), fill(start.begin(), start.end() - 1);
   for (const auto& l : resolved.links)
     if (!l.history) consumers[fill[l.from_node]++] = l.to_node;
-  auto later = [&](int a, int b) { return g.nodes[a].id > g.nodes[b].id; };
+  std::vector<uint64_t> prefix(node_count);
+  for (int n = 0; n < node_count; ++n) prefix[n] = id_prefix(g.nodes[n].id);
+  auto later = [&](int a, int b) { return prefix[a] != prefix[b] ? prefix[a] > prefix[b] : g.nodes[a].id > g.nodes[b].id; };
   std::vector<int> heap;
   heap.reserve(node_count);
   std::priority_queue<int, std::vector<int>, decltype(later)> ready(later, std::move(heap));

@@ -1,7 +1,7 @@
 // `lumagraph render` run as a process: it writes the image, the stats and the dump it is asked
 // for with zero validation messages, and broken input — a corrupt or missing scene, a broken
-// graph, a node without a kernel, bad options — ends in an exit status and a message that
-// names the file or the node, never a crash.
+// graph, bad options — ends in an exit status and a message that names the file, never a
+// crash. (A node without a kernel is the executor's error; tests/runtime/exec_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -59,18 +59,6 @@ TEST(RenderCli, BrokenGraphGetsLocatedErrors) {
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(contains(r.err, "g.json:1:")) << r.err;
   EXPECT_TRUE(contains(r.err, "did you mean 'scene.gbuffer'")) << r.err;
-}
-
-TEST(RenderCli, NodeWithoutKernelIsNamed) {
-  TempDir dir;
-  write_text(dir.file("g.json"), R"({ "format": "lumagraph/1", "nodes": [
-      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" },
-      { "id": "glow", "type": "post.bloom", "params": { "intensity": 0.5 } }, { "id": "out", "type": "output.display" } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" }, { "from": "light.color", "to": "glow.color" },
-               { "from": "glow.color", "to": "out.color" } ] })");
-  Outcome r = lumagraph({"render", dir.file("g.json"), "--out", dir.file("x.png")});
-  EXPECT_EQ(r.status, 3) << r.err;
-  EXPECT_TRUE(contains(r.err, "node 'glow' (post.bloom) has no kernel")) << r.err;
 }
 
 TEST(RenderCli, BadOptionsAreUsageErrors) {

@@ -37,11 +37,13 @@ World floor_world(bool wall) {
   if (wall) {
     Entity w = world.create("wall");
     world.add(w, MeshRenderer{world.add_mesh(make_box({6.0f, 2.0f, 0.2f})), white});
-    world.add(w, Transform{.position = {0.0f, 1.0f, -3.0f}});
+    world.add(w, Transform{}).position = {0.0f, 1.0f, -3.0f};
   }
   Entity camera = world.create("camera");
   world.add(camera, Camera{});
-  world.add(camera, Transform{.position = {0.0f, 2.0f, 0.0f}, .rotation = look_rotation({0.0f, -0.64f, -0.77f})});
+  Transform& view = world.add(camera, Transform{});
+  view.position = {0.0f, 2.0f, 0.0f};
+  view.rotation = look_rotation({0.0f, -0.64f, -0.77f});
   return world;
 }
 
