@@ -76,7 +76,9 @@ Executor& Renderer::executor() {
   return *executor_;
 }
 
-Image& Renderer::output_image(std::string_view name) { return executor().output_image(name); }
+Image& Renderer::output_image(std::string_view name) {
+  return executor().output_image(name);
+}
 
 VkImageLayout Renderer::output_layout(std::string_view name) {
   return executor().layout(executor().output_resource(name));

@@ -42,10 +42,10 @@ class GraphError : public std::runtime_error {
 };
 
 struct RendererOptions {
-  ContextOptions device{};            // a device of its own: validation, device name
-  const HostDevice* host = nullptr;   // or the host engine's device, which it keeps owning
-  AssetRoots asset_roots{};           // where file paths in graphs may point
-  bool alias = true;                  // false: every transient resource keeps its own memory
+  ContextOptions device{};           // a device of its own: validation, device name
+  const HostDevice* host = nullptr;  // or the host engine's device, which it keeps owning
+  AssetRoots asset_roots{};          // where file paths in graphs may point
+  bool alias = true;                 // false: every transient resource keeps its own memory
 };
 
 class Renderer {

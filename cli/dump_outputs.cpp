@@ -27,8 +27,10 @@ void dump_image(Executor& executor, const PlanResource& r, const fs::path& dir) 
   for (uint32_t mip = 0; mip < d.mips; ++mip)
     for (uint32_t layer = 0; layer < layers; ++layer) {
       std::string name = d.name;
-      if (d.kind == ResourceKind::cube) name += std::string(".") + faces[layer % 6];
-      else if (layers > 1) name += ".layer" + std::to_string(layer);
+      if (d.kind == ResourceKind::cube)
+        name += std::string(".") + faces[layer % 6];
+      else if (layers > 1)
+        name += ".layer" + std::to_string(layer);
       if (mip > 0) name += ".mip" + std::to_string(mip);
       std::vector<float> rgba = executor.read_image(d.name, {mip, layer});
       const uint32_t w = std::max(d.width >> mip, 1u), h = std::max(d.height >> mip, 1u);
@@ -71,8 +73,10 @@ void dump_outputs(Executor& executor, const std::string& dir) {
   size_t files = 0;
   for (const PlanResource& r : executor.plan().resources) {
     if (!is_port(r.desc.name) || r.placement.block < 0) continue;
-    if (r.desc.kind == ResourceKind::buffer) dump_buffer(executor, r, dir);
-    else dump_image(executor, r, dir);
+    if (r.desc.kind == ResourceKind::buffer)
+      dump_buffer(executor, r, dir);
+    else
+      dump_image(executor, r, dir);
     ++files;
   }
   std::printf("dumped %zu node outputs to %s\n", files, dir.c_str());

@@ -25,7 +25,8 @@ embedded default graph (examples/default.json); render and compile, the embedded
 namespace lg::cli {
 
 int usage_error(const std::string& command, const std::string& message) {
-  std::fprintf(stderr, "lumagraph %s: %s\n(see 'lumagraph %s --help')\n", command.c_str(), message.c_str(), command.c_str());
+  std::fprintf(stderr, "lumagraph %s: %s\n(see 'lumagraph %s --help')\n", command.c_str(), message.c_str(),
+               command.c_str());
   return exit_usage;
 }
 

@@ -11,8 +11,8 @@
 #include "graph/json_writer.h"
 #include "runtime/image/image_file.h"
 #include "runtime/scene/default_world.h"
-#include "runtime/scene/scene_error.h"
 #include "runtime/scene/load_world.h"
+#include "runtime/scene/scene_error.h"
 
 namespace lg::cli {
 namespace {
@@ -73,7 +73,8 @@ int render_command(const std::vector<std::string>& argv) {
     std::fputs(help, stdout);
     return exit_ok;
   }
-  if (args->positional.size() > 1) return usage_error("render", "expected one graph file, got " + std::to_string(args->positional.size()));
+  if (args->positional.size() > 1)
+    return usage_error("render", "expected one graph file, got " + std::to_string(args->positional.size()));
   FrameSize frame;
   if (auto bad = read_frame_size(*args, frame)) return usage_error("render", *bad);
   unsigned frames = 1;
@@ -141,7 +142,8 @@ int render_command(const std::vector<std::string>& argv) {
     return exit_runtime;
   }
   if (validation_messages > 0) {
-    std::fprintf(stderr, "lumagraph render: %zu validation message%s\n", validation_messages, validation_messages == 1 ? "" : "s");
+    std::fprintf(stderr, "lumagraph render: %zu validation message%s\n", validation_messages,
+                 validation_messages == 1 ? "" : "s");
     return exit_runtime;
   }
   return exit_ok;

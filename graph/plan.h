@@ -17,9 +17,9 @@ namespace lg {
 struct PlanNode {
   std::string id, type;
   NodeState::Kind state = NodeState::Kind::active;
-  std::string reason;                                           // bypassed or culled: why
-  std::vector<std::pair<std::string, std::string>> dropped;     // (pass, why) for dropped passes
-  JsonValue params = JsonValue::object();                       // defaults filled, paths absolute
+  std::string reason;                                        // bypassed or culled: why
+  std::vector<std::pair<std::string, std::string>> dropped;  // (pass, why) for dropped passes
+  JsonValue params = JsonValue::object();                    // defaults filled, paths absolute
   bool is_static = false;
 };
 
@@ -65,7 +65,7 @@ struct Plan {
   std::vector<PlanNode> nodes;  // in topological order, ties broken by id
   std::vector<PlanPass> passes;
   std::vector<PlanResource> resources;
-  std::vector<Barrier> barriers;  // sorted by Barrier::before
+  std::vector<Barrier> barriers;    // sorted by Barrier::before
   std::vector<PlanOutput> outputs;  // the file's outputs, then output nodes' inputs
   std::vector<MemoryBlock> blocks;
   MemoryTotals memory;

@@ -18,7 +18,9 @@ std::string_view state_name(NodeState::Kind k) {
   return names[static_cast<int>(k)];
 }
 
-std::string_view queue_name(Queue q) { return q == Queue::compute ? "compute" : "graphics"; }
+std::string_view queue_name(Queue q) {
+  return q == Queue::compute ? "compute" : "graphics";
+}
 
 JsonValue int_pair(int64_t a, int64_t b) {
   JsonValue v = JsonValue::array();
@@ -42,9 +44,12 @@ std::string percent(double part, double whole) {
 
 std::string format_bytes(uint64_t bytes) {
   char buf[32];
-  if (bytes >= (1ull << 20)) std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1 << 20));
-  else if (bytes >= 1024) std::snprintf(buf, sizeof buf, "%.1f KiB", static_cast<double>(bytes) / 1024);
-  else std::snprintf(buf, sizeof buf, "%llu B", static_cast<unsigned long long>(bytes));
+  if (bytes >= (1ull << 20))
+    std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1 << 20));
+  else if (bytes >= 1024)
+    std::snprintf(buf, sizeof buf, "%.1f KiB", static_cast<double>(bytes) / 1024);
+  else
+    std::snprintf(buf, sizeof buf, "%llu B", static_cast<unsigned long long>(bytes));
   return buf;
 }
 
@@ -155,8 +160,9 @@ std::string plan_to_dot(const Plan& plan) {
   for (size_t p = 0; p < plan.passes.size(); ++p) {
     const PlanPass& pass = plan.passes[p];
     out += "  p" + std::to_string(p) + " [shape=box, style=\"rounded,filled\", fillcolor=\"" +
-           (pass.is_static ? "#d9ead3" : "#cfe2f3") + "\", label=" +
-           json_quote(std::to_string(p) + ": " + pass.name + (pass.is_static ? "\n(cached)" : "")) + "];\n";
+           (pass.is_static ? "#d9ead3" : "#cfe2f3") +
+           "\", label=" + json_quote(std::to_string(p) + ": " + pass.name + (pass.is_static ? "\n(cached)" : "")) +
+           "];\n";
   }
   for (size_t r = 0; r < plan.resources.size(); ++r) {
     const PlanResource& res = plan.resources[r];
@@ -170,7 +176,8 @@ std::string plan_to_dot(const Plan& plan) {
     for (const auto& a : plan.passes[p].accesses) {
       std::string pass = "p" + std::to_string(p), res = "r" + std::to_string(a.resource);
       if (usage_writes(a.usage)) out += "  " + pass + " -> " + res + ";\n";
-      if (usage_reads(a.usage)) out += "  " + res + " -> " + pass + (usage_writes(a.usage) ? " [style=dashed]" : "") + ";\n";
+      if (usage_reads(a.usage))
+        out += "  " + res + " -> " + pass + (usage_writes(a.usage) ? " [style=dashed]" : "") + ";\n";
     }
   for (size_t n = 0; n < plan.nodes.size(); ++n) {
     const PlanNode& node = plan.nodes[n];
@@ -205,7 +212,8 @@ std::string plan_to_text(const Plan& plan) {
     if (n.state == NodeState::Kind::bypassed) bypassed += who + ": " + n.reason + "\n";
     if (n.state == NodeState::Kind::culled) culled += who + ": " + n.reason + "\n";
     if (n.state == NodeState::Kind::active)
-      for (const auto& [pass, why] : n.dropped) dropped += "  " + n.id + "/" + pass + " (" + n.type + "): " + why + "\n";
+      for (const auto& [pass, why] : n.dropped)
+        dropped += "  " + n.id + "/" + pass + " (" + n.type + "): " + why + "\n";
   }
   if (!bypassed.empty()) out += "\nbypassed:\n" + bypassed;
   if (!dropped.empty()) out += "\npasses dropped:\n" + dropped;
@@ -219,15 +227,16 @@ std::string plan_to_text(const Plan& plan) {
     if (r.desc.layers > 1) extent += "x" + std::to_string(r.desc.layers);
     if (r.desc.mips > 1) extent += " m" + std::to_string(r.desc.mips);
     std::string where = (r.placement.block == 1 ? "P+" : "T+") + format_bytes(r.placement.offset);
-    out += pad("  " + r.desc.name, 30) + pad(r.desc.format, 12) + pad(extent, 14) + pad(format_bytes(r.desc.bytes), 12) +
-           pad(std::string(lifetime_name(r.desc.lifetime)), 11) +
+    out += pad("  " + r.desc.name, 30) + pad(r.desc.format, 12) + pad(extent, 14) +
+           pad(format_bytes(r.desc.bytes), 12) + pad(std::string(lifetime_name(r.desc.lifetime)), 11) +
            pad(std::to_string(r.first) + "-" + std::to_string(r.last), 9) + where + "\n";
   }
 
   const MemoryTotals& m = plan.memory;
   out += "\nmemory: transient " + format_bytes(m.transient) + " with aliasing, " + format_bytes(m.transient_unaliased) +
-         " without (saves " + percent(static_cast<double>(m.transient_unaliased - std::min(m.transient, m.transient_unaliased)),
-                                     static_cast<double>(m.transient_unaliased)) +
+         " without (saves " +
+         percent(static_cast<double>(m.transient_unaliased - std::min(m.transient, m.transient_unaliased)),
+                 static_cast<double>(m.transient_unaliased)) +
          "); persistent " + format_bytes(m.persistent) + "; " + std::to_string(plan.barriers.size()) + " barriers\n";
   return out;
 }

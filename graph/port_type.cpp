@@ -7,7 +7,7 @@ namespace {
 
 struct KindInfo {
   ResourceKind resource;
-  std::string words;  // how error messages name the kind
+  std::string words;                                                       // how error messages name the kind
   std::map<std::string, std::vector<PortComponent>, std::less<>> classes;  // "" when classless
 };
 
@@ -44,8 +44,7 @@ const std::map<std::string, KindInfo, std::less<>>& kinds() {
 
 }  // namespace
 
-std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildcard,
-                                        std::string* error) {
+std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildcard, std::string* error) {
   size_t colon = text.find(':');
   std::string_view kind = text.substr(0, colon);
   std::string_view cls = colon == std::string_view::npos ? "" : text.substr(colon + 1);
@@ -56,12 +55,14 @@ std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildca
   }
   static const std::vector<PortComponent> none;  // wildcards have no layout of their own
   const KindInfo& info = it->second;
-  if (cls == "*" && allow_wildcard && !info.classes.contains("")) return PortType{std::string(kind), "*", info.resource, &none};
+  if (cls == "*" && allow_wildcard && !info.classes.contains(""))
+    return PortType{std::string(kind), "*", info.resource, &none};
   auto layout = info.classes.find(cls);
   if (layout == info.classes.end()) {
     if (error) {
       *error = "'" + std::string(kind) + "' has no format class '" + std::string(cls) + "'; expected one of";
-      for (const auto& [name, _] : info.classes) *error += " '" + std::string(kind) + (name.empty() ? "" : ":" + name) + "'";
+      for (const auto& [name, _] : info.classes)
+        *error += " '" + std::string(kind) + (name.empty() ? "" : ":" + name) + "'";
     }
     return std::nullopt;
   }

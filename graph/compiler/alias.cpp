@@ -186,15 +186,15 @@ class GreedyPlacer {
     return first + kept;
   }
 
-  StabbingTree alive_;          // holds placed ranges
-  std::vector<int> position_;   // resource -> position in first-use order
-  std::vector<int> firsts_;     // by position: first use
-  std::vector<ByteRange> ranges_;  // by position: bytes, once placed
-  std::vector<char> placed_;    // by position
-  std::vector<ByteRange> conflicts_;  // room for every placed resource
-  std::vector<ByteRange> scratch_;    // as much, for the radix sort
+  StabbingTree alive_;                                // holds placed ranges
+  std::vector<int> position_;                         // resource -> position in first-use order
+  std::vector<int> firsts_;                           // by position: first use
+  std::vector<ByteRange> ranges_;                     // by position: bytes, once placed
+  std::vector<char> placed_;                          // by position
+  std::vector<ByteRange> conflicts_;                  // room for every placed resource
+  std::vector<ByteRange> scratch_;                    // as much, for the radix sort
   std::unordered_map<uint64_t, uint32_t> start_ids_;  // offset -> its number
-  std::vector<uint32_t> seen_, slot_;  // by start number: when last seen in a list, and where
+  std::vector<uint32_t> seen_, slot_;                 // by start number: when last seen in a list, and where
   uint32_t epoch_ = 0;
   uint64_t size_ = 0;
 };
@@ -217,8 +217,10 @@ class LastOwners {
     pieces[count++] = {start, end, owner};
     if (first != last && (last - 1)->end > end) pieces[count++] = {end, (last - 1)->end, (last - 1)->owner};
     const auto at = first - owned_.begin(), removed = last - first;
-    if (count > removed) owned_.insert(owned_.begin() + at + removed, count - removed, Owned{});
-    else owned_.erase(owned_.begin() + at + count, owned_.begin() + at + removed);
+    if (count > removed)
+      owned_.insert(owned_.begin() + at + removed, count - removed, Owned{});
+    else
+      owned_.erase(owned_.begin() + at + count, owned_.begin() + at + removed);
     std::copy(pieces, pieces + count, owned_.begin() + at);
     std::sort(predecessors.begin(), predecessors.end());
     predecessors.erase(std::unique(predecessors.begin(), predecessors.end()), predecessors.end());
@@ -243,8 +245,10 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   for (size_t r = 0; r < count; ++r) {
     const LoweredResource& res = lowered.resources[r];
     if (!lifetimes[r].used()) continue;
-    if (options.memory) needs[r] = options.memory(res);
-    else needs[r] = {res.bytes, res.kind == ResourceKind::buffer ? options.buffer_alignment : options.image_alignment};
+    if (options.memory)
+      needs[r] = options.memory(res);
+    else
+      needs[r] = {res.bytes, res.kind == ResourceKind::buffer ? options.buffer_alignment : options.image_alignment};
   }
 
   // Persistent resources, and everything when aliasing is off: one after another.

@@ -7,9 +7,15 @@ namespace {
 std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
   std::string_view prefix, name;
   switch (a.target) {
-    case PassUse::Target::input: prefix = "in.", name = s.inputs[a.port].name; break;
-    case PassUse::Target::output: prefix = "out.", name = s.outputs[a.port].name; break;
-    case PassUse::Target::internal: prefix = "tmp.", name = s.resources[a.port].name; break;
+    case PassUse::Target::input:
+      prefix = "in.", name = s.inputs[a.port].name;
+      break;
+    case PassUse::Target::output:
+      prefix = "out.", name = s.outputs[a.port].name;
+      break;
+    case PassUse::Target::internal:
+      prefix = "tmp.", name = s.resources[a.port].name;
+      break;
   }
   std::string slot;
   slot.reserve(prefix.size() + name.size());
@@ -39,8 +45,10 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
     PlanNode& node = plan.nodes.emplace_back(graph.nodes[n].id, s.type, states[n].kind, states[n].reason,
                                              std::vector<std::pair<std::string, std::string>>{}, JsonValue::object(),
                                              lowered.nodes[n].is_static);
-    if (kept_params != lowered.static_params.end() && kept_params->first == n) node.params = std::move(kept_params++->second);
-    else if (states[n].kind == NodeState::Kind::active) node.params = node_params(resolved, n, options.roots);
+    if (kept_params != lowered.static_params.end() && kept_params->first == n)
+      node.params = std::move(kept_params++->second);
+    else if (states[n].kind == NodeState::Kind::active)
+      node.params = node_params(resolved, n, options.roots);
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }
@@ -57,7 +65,8 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
     auto lifetime = lowered.resources[r].lifetime;
     bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
     if (lives[r].used() && !persistent) plan.memory.transient_unaliased += memory.placements[r].size;
-    plan.resources.emplace_back(std::move(lowered.resources[r]), lives[r].first, lives[r].last, std::move(memory.placements[r]));
+    plan.resources.emplace_back(std::move(lowered.resources[r]), lives[r].first, lives[r].last,
+                                std::move(memory.placements[r]));
     plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
   }
   plan.blocks = memory.blocks;
@@ -68,6 +77,5 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
     plan.outputs.push_back({o.node < 0 ? -1 : plan_index[o.node], std::move(o.port), std::move(o.resources)});
   return plan;
 }
-
 
 }  // namespace lg

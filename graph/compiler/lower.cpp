@@ -20,7 +20,9 @@ uint64_t fnv1a(uint64_t h, std::string_view text) {
 }
 constexpr uint64_t fnv_basis = 0xcbf29ce484222325ull;
 
-uint32_t full_mip_count(uint32_t w, uint32_t h) { return std::max(1u, static_cast<uint32_t>(std::bit_width(std::max(w, h)))); }
+uint32_t full_mip_count(uint32_t w, uint32_t h) {
+  return std::max(1u, static_cast<uint32_t>(std::bit_width(std::max(w, h))));
+}
 
 // "a/b" or "a.b.c": one string, built without temporaries. Names are mostly short enough for
 // the string's own buffer, so they are put together on the stack first.
@@ -62,8 +64,10 @@ class Lowerer {
     reserve(order);
     for (int n : order) {
       if (s_[n].kind == NodeState::Kind::culled) continue;
-      if (s_[n].kind == NodeState::Kind::bypassed) forward(n);
-      else lower_node(n);
+      if (s_[n].kind == NodeState::Kind::bypassed)
+        forward(n);
+      else
+        lower_node(n);
     }
     // Backwards: binding a bundle inserts accesses, which would move the later slots.
     for (auto it = deferred_history_.rbegin(); it != deferred_history_.rend(); ++it) {
@@ -85,7 +89,8 @@ class Lowerer {
           if (li >= 0) {
             export_resources(source_of(li));
             const ResolvedLink& l = r_.links[li];
-            add_output(n, id(l.from_node) + '.' + r_.nodes[l.from_node].schema->outputs[l.from_port].name, source_of(li));
+            add_output(n, id(l.from_node) + '.' + r_.nodes[l.from_node].schema->outputs[l.from_port].name,
+                       source_of(li));
           }
     return std::move(out_);
   }
@@ -98,9 +103,9 @@ class Lowerer {
   Diagnostics& d_;
   LoweredGraph out_;
   std::vector<int> port_base_;  // node -> index of its first output in ports_
-  std::vector<Span> ports_;      // per output port: its resources (a bypassed node's are its input's)
-  std::vector<Span> previous_;   // per output port: previous-frame copies, made on demand
-  std::vector<Span> internal_;   // the node being lowered: its internal resources
+  std::vector<Span> ports_;     // per output port: its resources (a bypassed node's are its input's)
+  std::vector<Span> previous_;  // per output port: previous-frame copies, made on demand
+  std::vector<Span> internal_;  // the node being lowered: its internal resources
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
@@ -140,7 +145,8 @@ class Lowerer {
 
   void export_resources(Span span) {
     for (int c = 0; c < span.count; ++c)
-      if (out_.resources[span[c]].lifetime == ResourceLifetime::transient) out_.resources[span[c]].lifetime = ResourceLifetime::exported;
+      if (out_.resources[span[c]].lifetime == ResourceLifetime::transient)
+        out_.resources[span[c]].lifetime = ResourceLifetime::exported;
   }
 
   std::optional<double> number_param(int n, int param) const {
@@ -154,8 +160,11 @@ class Lowerer {
     double w = frame_.width, h = frame_.height;
     const ResolvedNode& rn = r_.nodes[n];
     switch (rule.from) {
-      case SizeRule::From::frame: break;
-      case SizeRule::From::fixed: w = rule.fixed[0], h = rule.fixed[1]; break;
+      case SizeRule::From::frame:
+        break;
+      case SizeRule::From::fixed:
+        w = rule.fixed[0], h = rule.fixed[1];
+        break;
       case SizeRule::From::input: {
         int li = rn.input_link[rule.ref];
         if (li >= 0 && !source_of(li).empty()) {
@@ -166,8 +175,10 @@ class Lowerer {
       }
       case SizeRule::From::param: {
         const JsonValue& v = rn.param(rule.ref);
-        if (v.is_array() && v.items().size() == 2) w = v.items()[0].as_number(), h = v.items()[1].as_number();
-        else if (v.is_number()) w = h = v.as_number();
+        if (v.is_array() && v.items().size() == 2)
+          w = v.items()[0].as_number(), h = v.items()[1].as_number();
+        else if (v.is_number())
+          w = h = v.as_number();
         break;
       }
     }
@@ -177,10 +188,18 @@ class Lowerer {
     res.layers = res.kind == ResourceKind::cube ? 6 : 1;
     uint32_t full = full_mip_count(res.width, res.height);
     switch (rule.mips) {
-      case SizeRule::Mips::one: res.mips = 1; break;
-      case SizeRule::Mips::full: res.mips = full; break;
-      case SizeRule::Mips::param: res.mips = std::min(full, static_cast<uint32_t>(number_param(n, rule.mips_param).value_or(1))); break;
-      case SizeRule::Mips::fixed: res.mips = std::min(full, rule.mips_fixed); break;
+      case SizeRule::Mips::one:
+        res.mips = 1;
+        break;
+      case SizeRule::Mips::full:
+        res.mips = full;
+        break;
+      case SizeRule::Mips::param:
+        res.mips = std::min(full, static_cast<uint32_t>(number_param(n, rule.mips_param).value_or(1)));
+        break;
+      case SizeRule::Mips::fixed:
+        res.mips = std::min(full, rule.mips_fixed);
+        break;
     }
     if (res.kind == ResourceKind::buffer) {
       uint32_t elements = 1;
@@ -201,7 +220,8 @@ class Lowerer {
     Span span{static_cast<int>(out_.resources.size()), 0};
     for (const PortComponent& c : spec.type.components()) {
       LoweredResource res;
-      res.name = c.name.empty() ? joined({id(n), separator, spec.name}) : joined({id(n), separator, spec.name, ".", c.name});
+      res.name =
+          c.name.empty() ? joined({id(n), separator, spec.name}) : joined({id(n), separator, spec.name, ".", c.name});
       res.node = n;
       res.kind = spec.type.resource;
       res.format = c.format;
@@ -216,8 +236,7 @@ class Lowerer {
 
   static uint64_t resource_bytes_for(const LoweredResource& r, uint32_t bytes_per_texel) {
     uint64_t texels = 0;
-    for (uint32_t m = 0; m < r.mips; ++m)
-      texels += uint64_t{std::max(1u, r.width >> m)} * std::max(1u, r.height >> m);
+    for (uint32_t m = 0; m < r.mips; ++m) texels += uint64_t{std::max(1u, r.width >> m)} * std::max(1u, r.height >> m);
     return texels * r.layers * bytes_per_texel;
   }
 
@@ -257,7 +276,8 @@ class Lowerer {
           const LoweredNode& producer = out_.nodes[out_.resources[source[c]].node];
           is_static &= producer.is_static;
           char digits[24];
-          key = fnv1a(key, std::string_view(digits, std::to_chars(digits, digits + sizeof digits, producer.cache_key).ptr));
+          key = fnv1a(key,
+                      std::string_view(digits, std::to_chars(digits, digits + sizeof digits, producer.cache_key).ptr));
         }
       }
     }
@@ -291,8 +311,10 @@ class Lowerer {
       pass.accesses.reserve(spec.uses.size());
       for (const PassUse& use : spec.uses) {
         Span span;
-        if (use.target == PassUse::Target::output) span = port(n, use.index);
-        else if (use.target == PassUse::Target::internal) span = internal_[use.index];
+        if (use.target == PassUse::Target::output)
+          span = port(n, use.index);
+        else if (use.target == PassUse::Target::internal)
+          span = internal_[use.index];
         else if (int li = rn.input_link[use.index]; li >= 0) {
           if (r_.links[li].history) {
             deferred_history_.emplace_back(pass_index, pass.accesses.size(), li);
@@ -319,7 +341,8 @@ class Lowerer {
         if (a.target == PassUse::Target::internal && usage_writes(a.usage)) written.push_back(a.resource);
     for (size_t p = first_pass; p < out_.passes.size(); ++p)
       std::erase_if(out_.passes[p].accesses, [&](const LoweredAccess& a) {
-        return a.target == PassUse::Target::internal && std::find(written.begin(), written.end(), a.resource) == written.end();
+        return a.target == PassUse::Target::internal &&
+               std::find(written.begin(), written.end(), a.resource) == written.end();
       });
   }
 

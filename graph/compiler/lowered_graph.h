@@ -43,7 +43,7 @@ struct LoweredAccess {
 
 struct LoweredPass {
   int node = -1;
-  int pass = -1;  // index into the schema's passes
+  int pass = -1;     // index into the schema's passes
   std::string name;  // "bloom/downsample"
   Queue queue = Queue::compute;
   std::vector<LoweredAccess> accesses;
@@ -65,7 +65,7 @@ struct LoweredOutput {
 };
 
 struct LoweredGraph {
-  std::vector<LoweredNode> nodes;  // one per graph node (culled ones stay empty)
+  std::vector<LoweredNode> nodes;   // one per graph node (culled ones stay empty)
   std::vector<LoweredPass> passes;  // in a valid (topological) order
   std::vector<LoweredResource> resources;
   std::vector<LoweredOutput> outputs;  // the file's outputs, then output nodes' inputs

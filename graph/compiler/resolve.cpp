@@ -54,7 +54,7 @@ class NodeIds {
   // The slot holding `id`, or the empty one where it would go.
   size_t slot(std::string_view id) const {
     const size_t mask = slots_.size() - 1;
-    size_t s = NameHash{}(id) & mask;
+    size_t s = NameHash{}(id)&mask;
     while (slots_[s] >= 0 && g_.nodes[slots_[s]].id != id) s = (s + 1) & mask;
     return s;
   }
@@ -106,7 +106,7 @@ class Resolver {
 
   // Where a reference sits in the file. Its JSON pointer is spelled out only for an error.
   struct RefPlace {
-    const char* list;   // "/links" or "/outputs"
+    const char* list;  // "/links" or "/outputs"
     int index;
     const char* field;  // "/from", "/to" or ""
     std::string pointer() const { return json_pointer_append(list, static_cast<size_t>(index)) + field; }
@@ -150,7 +150,8 @@ class Resolver {
         for (const auto& n : g_.nodes) ids.push_back(n.id);
         guess = closest_name(ref.node, ids);
       }
-      d_.error(pos, place.pointer(), "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+      d_.error(pos, place.pointer(),
+               "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
       return -1;
     }
     return out_.nodes[found].schema ? found : -1;
@@ -162,11 +163,12 @@ class Resolver {
     if (index >= 0) return index;
     const auto& ports = output ? s.outputs : s.inputs;
     const auto& other = output ? s.inputs : s.outputs;
-    std::string message = "node '" + ref.node + "' (" + s.type + ") has no " + (output ? "output" : "input") + " '" +
-                          ref.port + "'";
+    std::string message =
+        "node '" + ref.node + "' (" + s.type + ") has no " + (output ? "output" : "input") + " '" + ref.port + "'";
     bool wrong_direction = false;
     for (const auto& p : other) wrong_direction |= p.name == ref.port;
-    if (wrong_direction) message += std::string("; '") + ref.port + "' is an " + (output ? "input" : "output");
+    if (wrong_direction)
+      message += std::string("; '") + ref.port + "' is an " + (output ? "input" : "output");
     else {
       std::string guess = closest_name(ref.port, names_of(ports));
       message += guess.empty() ? std::string("; its ") + (output ? "outputs" : "inputs") + " are: " + name_list(ports)

@@ -48,9 +48,12 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
   const uint32_t depth_stages = stage_early_fragment_tests | stage_late_fragment_tests;
   const uint32_t depth_access = access_depth_stencil_attachment_read | access_depth_stencil_attachment_write;
   switch (usage) {
-    case Usage::sampled: return {shader, access_shader_sampled_read, buffer ? Layout::none : Layout::read_only, false};
-    case Usage::storage_read: return {shader, access_shader_storage_read, shader_layout, false};
-    case Usage::storage_write: return {shader, access_shader_storage_write, shader_layout, true};
+    case Usage::sampled:
+      return {shader, access_shader_sampled_read, buffer ? Layout::none : Layout::read_only, false};
+    case Usage::storage_read:
+      return {shader, access_shader_storage_read, shader_layout, false};
+    case Usage::storage_write:
+      return {shader, access_shader_storage_write, shader_layout, true};
     case Usage::storage_read_write:
       return {shader, access_shader_storage_read | access_shader_storage_write, shader_layout, true};
     case Usage::attachment_write:
@@ -60,20 +63,23 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
       if (resource.depth_format) return {depth_stages, depth_access, Layout::attachment, true};
       return {stage_color_attachment_output, access_color_attachment_read | access_color_attachment_write,
               Layout::attachment, true};
-    case Usage::buffer_read: return {shader, access_shader_storage_read, Layout::none, false};
-    case Usage::buffer_write: return {shader, access_shader_storage_write, Layout::none, true};
+    case Usage::buffer_read:
+      return {shader, access_shader_storage_read, Layout::none, false};
+    case Usage::buffer_write:
+      return {shader, access_shader_storage_write, Layout::none, true};
   }
   return {};
 }
 
-std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory) {
+std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order,
+                                 const MemoryLayout& memory) {
   const size_t count = lowered.resources.size();
   std::vector<Group> groups;
   size_t accesses = 0;  // each starts at most one group: room for all, no regrowth
   for (int p : order) accesses += lowered.passes[p].accesses.size();
   groups.reserve(accesses);
   std::vector<int> head(count, -1), tail(count, -1);  // per resource: its first and last group
-  std::vector<std::pair<int, AccessInfo>> uses;  // one pass's uses, one per resource
+  std::vector<std::pair<int, AccessInfo>> uses;       // one pass's uses, one per resource
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
     const LoweredPass& pass = lowered.passes[order[pos]];
     // A pass that uses a resource twice (sampled and as storage, say) needs both at once: merge
@@ -82,8 +88,10 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     for (const auto& a : pass.accesses) {
       AccessInfo info = access_info(a.usage, pass.queue, lowered.resources[a.resource]);
       auto same = std::find_if(uses.begin(), uses.end(), [&](const auto& u) { return u.first == a.resource; });
-      if (same != uses.end()) same->second = merge(same->second, info);
-      else uses.emplace_back(a.resource, info);
+      if (same != uses.end())
+        same->second = merge(same->second, info);
+      else
+        uses.emplace_back(a.resource, info);
     }
     for (const auto& [resource, info] : uses) {
       int last = tail[resource];
@@ -158,7 +166,8 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
   return sorted_by_pass(std::move(out), order.size());
 }
 
-JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order, const std::vector<Barrier>& barriers) {
+JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order,
+                        const std::vector<Barrier>& barriers) {
   JsonValue out = JsonValue::array();
   for (const auto& b : barriers) {
     JsonValue& item = out.push(JsonValue::object());

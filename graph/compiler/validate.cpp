@@ -24,7 +24,9 @@ bool in_range(const ParamSpec& spec, double v) {
   return (!spec.min || v >= *spec.min) && (!spec.max || v <= *spec.max);
 }
 
-std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
+std::string node_pointer(int n) {
+  return json_pointer_append("/nodes", static_cast<size_t>(n));
+}
 
 // The first 8 bytes of an id as a big-endian number, zero-padded: ordering these orders the ids,
 // except where they are equal and the rest of the ids decides.
@@ -47,7 +49,8 @@ std::string check_param_value(const ParamSpec& spec, const JsonValue& v) {
     case ParamType::bool_:
       return v.is_bool() ? "" : "true or false";
     case ParamType::enum_: {
-      if (v.is_string() && std::find(spec.values.begin(), spec.values.end(), v.as_string()) != spec.values.end()) return {};
+      if (v.is_string() && std::find(spec.values.begin(), spec.values.end(), v.as_string()) != spec.values.end())
+        return {};
       std::string list;
       for (const auto& e : spec.values) list += (list.empty() ? "" : ", ") + ("\"" + e + "\"");
       return "one of " + list;
@@ -94,8 +97,9 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
         std::string why;
         if (spec.type == ParamType::path &&
             !resolve_asset_path(g.file, spec.default_value.as_string(), roots, spec.extensions, &why))
-          diagnostics.error(gn.pos, node_pointer(n),
-                            "param '" + spec.name + "' of node '" + gn.id + "' is not set, so its default is used: " + why);
+          diagnostics.error(
+              gn.pos, node_pointer(n),
+              "param '" + spec.name + "' of node '" + gn.id + "' is not set, so its default is used: " + why);
         continue;
       }
       auto pointer = [&] { return node_pointer(n) + "/params/" + spec.name; };
@@ -134,7 +138,8 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
   bool unresolved = resolved.outputs.size() < g.outputs.size();
   for (const ResolvedNode& rn : resolved.nodes) unresolved |= !rn.schema;
   if (!has_root && !unresolved && diagnostics.error_count() == before)
-    diagnostics.error({1, 1}, "/outputs", "the graph asks for nothing: list ports under \"outputs\" or add an output node");
+    diagnostics.error({1, 1}, "/outputs",
+                      "the graph asks for nothing: list ports under \"outputs\" or add an output node");
 
   // Kahn's algorithm over non-history links, ties broken by id so file order does not matter.
   // Each node's consumers, all in one array: node n's are consumers[start[n] .. start[n + 1]).
@@ -147,7 +152,9 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
     if (!l.history) consumers[fill[l.from_node]++] = l.to_node;
   std::vector<uint64_t> prefix(node_count);
   for (int n = 0; n < node_count; ++n) prefix[n] = id_prefix(g.nodes[n].id);
-  auto later = [&](int a, int b) { return prefix[a] != prefix[b] ? prefix[a] > prefix[b] : g.nodes[a].id > g.nodes[b].id; };
+  auto later = [&](int a, int b) {
+    return prefix[a] != prefix[b] ? prefix[a] > prefix[b] : g.nodes[a].id > g.nodes[b].id;
+  };
   std::vector<int> heap;
   heap.reserve(node_count);
   std::priority_queue<int, std::vector<int>, decltype(later)> ready(later, std::move(heap));
@@ -185,7 +192,8 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
     for (int c : cycle) text += g.nodes[c].id + " -> ";
     text += g.nodes[cycle.front()].id;
     const GraphLink& gl = g.links[resolved.links[via_link].source];
-    diagnostics.error(gl.to_pos, json_pointer_append("/links", static_cast<size_t>(resolved.links[via_link].source)) + "/to",
+    diagnostics.error(gl.to_pos,
+                      json_pointer_append("/links", static_cast<size_t>(resolved.links[via_link].source)) + "/to",
                       "cycle: " + text + "; a loop is only allowed through a history input");
   }
   if (diagnostics.error_count() > before) return std::nullopt;

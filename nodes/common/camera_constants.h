@@ -2,10 +2,9 @@
 // scene's camera for a target of a given size.
 #pragma once
 
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
-
-#include <cstdint>
 
 #include "runtime/scene/scene_view.h"
 

@@ -1,8 +1,8 @@
 #include "nodes/common/compute.h"
 
 #include "nodes/common/node_shaders.h"
-#include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/pipeline.h"
 
 namespace lg {
 

@@ -29,7 +29,8 @@ const std::string& param_string(const PlanNode& node, std::string_view name) {
 
 glm::vec3 param_float3(const PlanNode& node, std::string_view name) {
   const JsonValue& v = param(node, name, JsonValue::Kind::array);
-  if (v.items().size() != 3) throw std::logic_error("param '" + std::string(name) + "' of node '" + node.id + "' is not a float3");
+  if (v.items().size() != 3)
+    throw std::logic_error("param '" + std::string(name) + "' of node '" + node.id + "' is not a float3");
   return glm::vec3(v.items()[0].as_number(), v.items()[1].as_number(), v.items()[2].as_number());
 }
 

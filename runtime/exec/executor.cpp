@@ -26,8 +26,6 @@ std::string output_name(const PlanNode& node) {
   return name && name->is_string() ? name->as_string() : "main";
 }
 
-
-
 }  // namespace
 
 Executor::Executor(Context& context, const KernelRegistry& kernels, Plan plan)
@@ -56,7 +54,9 @@ Executor::Executor(Context& context, const KernelRegistry& kernels, Plan plan)
 
 Executor::~Executor() = default;
 
-void Executor::invalidate_cache() { std::fill(ran_keys_.begin(), ran_keys_.end(), 0); }
+void Executor::invalidate_cache() {
+  std::fill(ran_keys_.begin(), ran_keys_.end(), 0);
+}
 
 // Static passes run as a whole or not at all: a partial run would find the cached images in
 // their readers' layouts, not in the layouts the plan's barriers before static passes expect.
@@ -137,7 +137,7 @@ void Executor::record_frame(VkCommandBuffer cmd, const SceneView& scene, GpuScen
   timestamps_.reset(cmd);
   const uint32_t whole = timestamps_.begin(cmd, "frame");
   if (frames_ == 0) clear_history(cmd);
-  const FrameResources frame{context_, pipelines_, cmd,     plan_,  memory_.resources,
+  const FrameResources frame{context_, pipelines_, cmd,     plan_, memory_.resources,
                              linear_,  nearest_,   frames_, scene, gpu_scene};
   BarrierBatch batch;
   size_t next_barrier = 0;
@@ -149,8 +149,10 @@ void Executor::record_frame(VkCommandBuffer cmd, const SceneView& scene, GpuScen
       const Barrier& b = plan_.barriers[next_barrier];
       if (skip || (skip_cached && b.skip_when_cached)) continue;
       const PlacedResource& r = memory_.resources[b.resource];
-      if (auto* image = std::get_if<Image>(&r)) batch.add(b, *image);
-      else batch.add(b, std::get<Buffer>(r));
+      if (auto* image = std::get_if<Image>(&r))
+        batch.add(b, *image);
+      else
+        batch.add(b, std::get<Buffer>(r));
     }
     batch.record(cmd);
     if (skip) continue;

@@ -11,7 +11,9 @@ const PlanAccess* FramePassContext::find(std::string_view slot, int component) c
   return nullptr;
 }
 
-bool FramePassContext::has(std::string_view slot, int component) const { return find(slot, component) != nullptr; }
+bool FramePassContext::has(std::string_view slot, int component) const {
+  return find(slot, component) != nullptr;
+}
 
 void FramePassContext::missing(std::string_view slot, int component, std::string_view what) const {
   std::string bound;
@@ -35,7 +37,11 @@ Buffer& FramePassContext::buffer(std::string_view slot) {
   missing(slot, 0, "buffer");
 }
 
-VkSampler FramePassContext::linear_sampler() { return frame_.linear.handle(); }
-VkSampler FramePassContext::nearest_sampler() { return frame_.nearest.handle(); }
+VkSampler FramePassContext::linear_sampler() {
+  return frame_.linear.handle();
+}
+VkSampler FramePassContext::nearest_sampler() {
+  return frame_.nearest.handle();
+}
 
 }  // namespace lg

@@ -18,7 +18,9 @@ std::string pad(std::string s, size_t width) {
   return s;
 }
 
-std::string_view state_name(NodeState::Kind k) { return k == NodeState::Kind::culled ? "culled" : "bypassed"; }
+std::string_view state_name(NodeState::Kind k) {
+  return k == NodeState::Kind::culled ? "culled" : "bypassed";
+}
 
 }  // namespace
 

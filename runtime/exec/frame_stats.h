@@ -14,8 +14,8 @@
 namespace lg {
 
 struct PassStats {
-  std::string name;   // "light/direct"
-  double gpu_ms = 0;  // 0 when skipped
+  std::string name;     // "light/direct"
+  double gpu_ms = 0;    // 0 when skipped
   bool cached = false;  // a static pass skipped: its key is unchanged since it last ran
 };
 
@@ -30,10 +30,10 @@ struct DroppedPass {
 };
 
 struct FrameStats {
-  uint64_t frame = 0;              // 0 for the first frame
-  std::vector<PassStats> passes;   // in schedule order
-  double gpu_ms = 0;               // the whole command buffer, barriers included
-  double cpu_ms = 0;               // recording, submission and the wait for the GPU
+  uint64_t frame = 0;               // 0 for the first frame
+  std::vector<PassStats> passes;    // in schedule order
+  double gpu_ms = 0;                // the whole command buffer, barriers included
+  double cpu_ms = 0;                // recording, submission and the wait for the GPU
   uint64_t device_memory_used = 0;  // Context::device_memory_used() after the frame
   MemoryTotals plan_memory;
   std::vector<SkippedNode> skipped_nodes;

@@ -15,8 +15,8 @@ struct SyncScope {
 };
 
 // The whole image (every mip and layer) from layout `from` to `to`.
-void image_barrier(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
-                   SyncScope before = {}, SyncScope after = {});
+void image_barrier(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to, SyncScope before = {},
+                   SyncScope after = {});
 void memory_barrier(VkCommandBuffer cmd, SyncScope before = {}, SyncScope after = {});
 
 }  // namespace lg

@@ -6,17 +6,15 @@
 
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/context.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/gpu_error.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/submit.h"
 #include "runtime/gpu/texel_codec.h"
 
 namespace lg {
 namespace {
-
-
 
 VkBufferImageCopy copy_region(const Image& image, ImageLocation where) {
   const ImageDesc& d = image.desc();
@@ -31,9 +29,9 @@ VkBufferImageCopy copy_region(const Image& image, ImageLocation where) {
 }
 
 Buffer staging(Submitter& submitter, const std::string& what, uint64_t bytes, MemoryUse use) {
-  return Buffer::dedicated(submitter.context(),
-                           {"staging for " + what, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT},
-                           use);
+  return Buffer::dedicated(
+      submitter.context(),
+      {"staging for " + what, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT}, use);
 }
 
 }  // namespace
@@ -52,7 +50,8 @@ void upload_image(Submitter& submitter, const Image& image, std::span<const floa
   if (rgba.size() != texels * 4)
     throw GpuError("upload to image '" + image.desc().name + "': " + std::to_string(rgba.size()) + " floats given, " +
                    std::to_string(texels * 4) + " expected (4 per texel)");
-  Buffer stage = staging(submitter, "image '" + image.desc().name + "'", texels * format.bytes_per_texel, MemoryUse::upload);
+  Buffer stage =
+      staging(submitter, "image '" + image.desc().name + "'", texels * format.bytes_per_texel, MemoryUse::upload);
   encode_texels(format, rgba, {stage.mapped(), texels * format.bytes_per_texel});
   submitter.run([&](VkCommandBuffer cmd) {
     image_barrier(cmd, image, old_layout, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
@@ -67,7 +66,8 @@ std::vector<float> read_image(Submitter& submitter, const Image& image, VkImageL
   const FormatInfo& format = format_info(image.desc().format);
   const VkBufferImageCopy region = copy_region(image, where);
   const uint64_t texels = texel_count(image, where.mip);
-  Buffer stage = staging(submitter, "image '" + image.desc().name + "'", texels * format.bytes_per_texel, MemoryUse::readback);
+  Buffer stage =
+      staging(submitter, "image '" + image.desc().name + "'", texels * format.bytes_per_texel, MemoryUse::readback);
   submitter.run([&](VkCommandBuffer cmd) {
     image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage.handle(), 1, &region);
@@ -82,7 +82,8 @@ std::vector<float> read_image(Submitter& submitter, const Image& image, VkImageL
 void upload_buffer(Submitter& submitter, const Buffer& buffer, std::span<const std::byte> bytes, uint64_t offset) {
   if (offset + bytes.size() > buffer.size())
     throw GpuError("upload of " + std::to_string(bytes.size()) + " bytes at offset " + std::to_string(offset) +
-                   " runs past the end of buffer '" + buffer.desc().name + "' (" + std::to_string(buffer.size()) + " bytes)");
+                   " runs past the end of buffer '" + buffer.desc().name + "' (" + std::to_string(buffer.size()) +
+                   " bytes)");
   if (bytes.empty()) return;
   Buffer stage = staging(submitter, "buffer '" + buffer.desc().name + "'", bytes.size(), MemoryUse::upload);
   std::memcpy(stage.mapped(), bytes.data(), bytes.size());
@@ -98,7 +99,8 @@ std::vector<std::byte> read_buffer(Submitter& submitter, const Buffer& buffer, u
   if (size == VK_WHOLE_SIZE) size = offset < buffer.size() ? buffer.size() - offset : 0;
   if (offset + size > buffer.size())
     throw GpuError("reading " + std::to_string(size) + " bytes at offset " + std::to_string(offset) +
-                   " runs past the end of buffer '" + buffer.desc().name + "' (" + std::to_string(buffer.size()) + " bytes)");
+                   " runs past the end of buffer '" + buffer.desc().name + "' (" + std::to_string(buffer.size()) +
+                   " bytes)");
   std::vector<std::byte> out(size);
   if (size == 0) return out;
   Buffer stage = staging(submitter, "buffer '" + buffer.desc().name + "'", size, MemoryUse::readback);

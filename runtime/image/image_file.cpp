@@ -56,10 +56,14 @@ void save_image(const std::string& path, uint32_t width, uint32_t height, std::s
   const std::string ext = lower_extension(path);
   OIIO::TypeDesc type;
   int channels = 4;
-  if (ext == ".png") type = OIIO::TypeDesc::UINT8;
-  else if (ext == ".exr") type = OIIO::TypeDesc::HALF;
-  else if (ext == ".hdr") type = OIIO::TypeDesc::FLOAT, channels = 3;
-  else throw ImageFileError(path + ": error: unknown image extension '" + ext + "'; expected .png, .exr or .hdr");
+  if (ext == ".png")
+    type = OIIO::TypeDesc::UINT8;
+  else if (ext == ".exr")
+    type = OIIO::TypeDesc::HALF;
+  else if (ext == ".hdr")
+    type = OIIO::TypeDesc::FLOAT, channels = 3;
+  else
+    throw ImageFileError(path + ": error: unknown image extension '" + ext + "'; expected .png, .exr or .hdr");
 
   std::vector<float> pixels(uint64_t(width) * height * channels);
   for (uint64_t p = 0; p < uint64_t(width) * height; ++p)
@@ -71,7 +75,8 @@ void save_image(const std::string& path, uint32_t width, uint32_t height, std::s
   auto out = OIIO::ImageOutput::create(temporary.string());
   if (!out) throw ImageFileError(path + ": error: cannot write this format: " + OIIO::geterror());
   OIIO::ImageSpec spec(int(width), int(height), channels, type);
-  bool ok = out->open(temporary.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
+  bool ok =
+      out->open(temporary.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
   std::error_code ec;
   if (!ok) {
     std::string why = out->geterror();

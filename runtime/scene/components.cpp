@@ -1,8 +1,7 @@
 #include "runtime/scene/components.h"
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace lg {
 

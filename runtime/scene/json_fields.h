@@ -6,7 +6,6 @@
 #pragma once
 
 #include <glm/vec3.hpp>
-
 #include <string>
 #include <string_view>
 #include <vector>

@@ -1,10 +1,9 @@
 #include "runtime/scene/load_world.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
 
 #include "runtime/scene/mesh_import.h"
 #include "runtime/scene/mesh_tools.h"

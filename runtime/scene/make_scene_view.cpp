@@ -1,10 +1,9 @@
 #include "runtime/scene/make_scene_view.h"
 
-#include <glm/geometric.hpp>
-#include <glm/gtc/matrix_inverse.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
 #include <stdexcept>
 #include <unordered_map>
 

@@ -1,10 +1,9 @@
 #include "runtime/scene/mesh_generators.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
-
-#include <cmath>
 
 namespace lg {
 namespace {

@@ -1,8 +1,7 @@
 #include "runtime/scene/mesh_tools.h"
 
-#include <glm/geometric.hpp>
-
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace lg {
 

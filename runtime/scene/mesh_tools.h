@@ -3,7 +3,6 @@
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
-
 #include <string>
 
 #include "runtime/scene/scene_view.h"

@@ -1,11 +1,10 @@
 #include "runtime/scene/scene_file.h"
 
-#include <glm/gtc/quaternion.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <glm/gtc/quaternion.hpp>
 #include <map>
 #include <optional>
 

@@ -4,12 +4,11 @@
 // itself. Units: metres; light colours are linear RGB (Rec.709 primaries).
 #pragma once
 
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,7 +38,7 @@ struct PbrMaterial {
   glm::vec4 base_color{1.0f};  // linear; multiplies the texture
   float roughness = 0.5f;      // perceptual roughness (alpha = roughness^2)
   float metalness = 0.0f;
-  glm::vec3 emissive{0.0f};    // radiance, linear RGB
+  glm::vec3 emissive{0.0f};     // radiance, linear RGB
   int base_color_texture = -1;  // index into SceneView::textures, or -1
 };
 
@@ -48,7 +47,7 @@ struct DrawItem {
   int material = -1;  // index into SceneView::materials
   glm::mat4 world{1.0f};
   glm::mat4 previous_world{1.0f};  // last frame's, for motion vectors
-  uint64_t entity = 0;  // Entity::id() of its world entity: matches draws across frames
+  uint64_t entity = 0;             // Entity::id() of its world entity: matches draws across frames
 };
 
 // Vulkan clip space with reversed Z: depth 1 at the near plane, 0 at infinity (infinite far
@@ -60,7 +59,7 @@ struct CameraView {
   glm::vec3 position{0.0f};
   float vertical_fov = 1.0f;  // radians
   float near_plane = 0.05f;
-  float aperture = 0.0f;      // lens diameter in metres; 0 is a pinhole
+  float aperture = 0.0f;  // lens diameter in metres; 0 is a pinhole
   float focus_distance = 5.0f;
 };
 

@@ -5,9 +5,8 @@
 // the frame's passes.
 #pragma once
 
-#include <glm/mat4x4.hpp>
-
 #include <algorithm>
+#include <glm/mat4x4.hpp>
 #include <stdexcept>
 #include <string>
 #include <tuple>

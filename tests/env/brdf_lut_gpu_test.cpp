@@ -9,9 +9,9 @@
 
 #include "nodes/env/brdf_lut/brdf_lut_kernel.h"
 #include "nodes/env/brdf_lut/dfg_reference.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

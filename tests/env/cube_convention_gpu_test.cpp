@@ -10,9 +10,9 @@
 #include "nodes/env/common/cube_map.h"
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

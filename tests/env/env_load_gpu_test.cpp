@@ -18,10 +18,10 @@
 
 #include "nodes/env/common/equirect.h"
 #include "nodes/env/load/env_load_kernel.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/image/image_file.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

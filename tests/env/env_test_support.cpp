@@ -79,8 +79,6 @@ CubeImage read_cube(Submitter& submitter, const Image& image, uint32_t mip, VkIm
   return cube;
 }
 
-
-
 CubeImage round_to_half(CubeImage cube) {
   for (glm::dvec4& t : cube.texels)
     for (int c = 0; c < 4; ++c) t[c] = half_to_float(float_to_half(float(t[c])));

@@ -33,7 +33,6 @@ void upload_cube(Submitter& submitter, const Image& image, const std::vector<Cub
 // Reads one mip of a cube map in `layout`.
 CubeImage read_cube(Submitter& submitter, const Image& image, uint32_t mip, VkImageLayout layout);
 
-
 // The texels rounded to half precision, as an rgba16f image holds them (references must see
 // what the GPU sees).
 CubeImage round_to_half(CubeImage cube);

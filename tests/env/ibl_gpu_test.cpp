@@ -24,11 +24,11 @@
 #include "nodes/lighting/ibl/ibl_kernel.h"
 #include "nodes/lighting/ibl/ibl_reference.h"
 #include "runtime/gpu/buffer.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/texel_codec.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

@@ -13,9 +13,9 @@
 
 #include "nodes/env/irradiance/irradiance_kernel.h"
 #include "nodes/env/irradiance/irradiance_reference.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

@@ -18,9 +18,9 @@
 #include "nodes/env/sh_project/sh_project_kernel.h"
 #include "nodes/env/sh_project/sh_reference.h"
 #include "runtime/gpu/buffer.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

@@ -13,8 +13,8 @@
 
 #include "nodes/env/sky/sky_kernel.h"
 #include "nodes/env/sky/sky_model.h"
-#include "runtime/gpu/image.h"
 #include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/image.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

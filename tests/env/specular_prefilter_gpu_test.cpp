@@ -17,9 +17,9 @@
 
 #include "nodes/env/specular_prefilter/prefilter_reference.h"
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
-#include "runtime/gpu/direct_barriers.h"
 #include "tests/env/env_test_support.h"
 #include "tests/runtime/gpu_test.h"
 

@@ -16,8 +16,8 @@
 #include "nodes/lighting/deferred/area_light_reference.h"
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
-#include "runtime/gpu/transfer.h"
 #include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/transfer.h"
 #include "tests/lighting/area_light_cases.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -97,9 +97,10 @@ class AreaLightGpuTest : public GpuTest {
     Buffer in = Buffer::dedicated(context(), {.name = "cases", .size = input.size() * sizeof(GpuCase)});
     Buffer out = Buffer::dedicated(context(), {.name = "irradiance", .size = input.size() * sizeof(float)});
     upload_buffer(submitter(), in, std::as_bytes(std::span(input)));
-    const Pipeline& p = pipelines().compute(
-        {"area_irradiance", find_shader(lighting_test_shaders(), "tests/lighting/shaders/area_irradiance.comp"),
-         {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
+    const Pipeline& p =
+        pipelines().compute({"area_irradiance",
+                             find_shader(lighting_test_shaders(), "tests/lighting/shaders/area_irradiance.comp"),
+                             {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
     submitter().run([&](VkCommandBuffer cmd) {
       const DescriptorWrite writes[] = {storage_buffer(0, in.handle()), storage_buffer(1, out.handle())};
       bind_pipeline(context(), cmd, p, writes);
@@ -123,7 +124,8 @@ class AreaLightGpuTest : public GpuTest {
       ASSERT_TRUE(std::isfinite(gpu[i])) << names[kind] << " case " << i;
       const double err = std::abs(double(gpu[i]) - cases[i].reference);
       worst_scaled = std::max(worst_scaled, err / cases[i].scale);
-      if (cases[i].reference > 1e-3 * cases[i].scale) worst_relative = std::max(worst_relative, err / cases[i].reference);
+      if (cases[i].reference > 1e-3 * cases[i].scale)
+        worst_relative = std::max(worst_relative, err / cases[i].reference);
     }
     std::cout << names[kind] << (horizon == Horizon::kAbove ? " above" : " across")
               << " the horizon, GPU formulas: max relative error " << worst_relative << ", max error / scale "
@@ -136,18 +138,30 @@ class AreaLightGpuTest : public GpuTest {
 
 // Above the horizon: 1% relative, the bound (measured on lavapipe: sphere 4.6e-7,
 // tube 2.5e-5, rectangle 1.1e-3), and 1e-4 of the scale.
-TEST_F(AreaLightGpuTest, SphereAboveHorizonWithinOnePercent) { check(0, Horizon::kAbove, 301, 0.01, 1e-4); }
-TEST_F(AreaLightGpuTest, TubeAboveHorizonWithinOnePercent) { check(1, Horizon::kAbove, 302, 0.01, 1e-4); }
-TEST_F(AreaLightGpuTest, RectangleAboveHorizonWithinOnePercent) { check(2, Horizon::kAbove, 303, 0.01, 1e-4); }
+TEST_F(AreaLightGpuTest, SphereAboveHorizonWithinOnePercent) {
+  check(0, Horizon::kAbove, 301, 0.01, 1e-4);
+}
+TEST_F(AreaLightGpuTest, TubeAboveHorizonWithinOnePercent) {
+  check(1, Horizon::kAbove, 302, 0.01, 1e-4);
+}
+TEST_F(AreaLightGpuTest, RectangleAboveHorizonWithinOnePercent) {
+  check(2, Horizon::kAbove, 303, 0.01, 1e-4);
+}
 
 // Across the horizon the GPU's acos and atan (lavapipe evaluates them by polynomials, less
 // exactly than the CPU's libm) lose about 1e-4 of the scale where the formulas' terms cancel;
 // on cases lit under 2% of the scale that is a relative error of a few percent (measured
 // worst: sphere 28% at 0.1% lit, tube 3.8%, rectangle 4.1%; the CPU formulas stay under 0.14%).
 // Bound: 1e-3 of the scale (measured 3.1e-4, 7.8e-5, 8.0e-5); relative error only logged.
-TEST_F(AreaLightGpuTest, SphereAcrossHorizonWithinAThousandthOfTheScale) { check(0, Horizon::kCrossing, 304, 1.0, 1e-3); }
-TEST_F(AreaLightGpuTest, TubeAcrossHorizonWithinAThousandthOfTheScale) { check(1, Horizon::kCrossing, 305, 1.0, 1e-3); }
-TEST_F(AreaLightGpuTest, RectangleAcrossHorizonWithinAThousandthOfTheScale) { check(2, Horizon::kCrossing, 306, 1.0, 1e-3); }
+TEST_F(AreaLightGpuTest, SphereAcrossHorizonWithinAThousandthOfTheScale) {
+  check(0, Horizon::kCrossing, 304, 1.0, 1e-3);
+}
+TEST_F(AreaLightGpuTest, TubeAcrossHorizonWithinAThousandthOfTheScale) {
+  check(1, Horizon::kCrossing, 305, 1.0, 1e-3);
+}
+TEST_F(AreaLightGpuTest, RectangleAcrossHorizonWithinAThousandthOfTheScale) {
+  check(2, Horizon::kCrossing, 306, 1.0, 1e-3);
+}
 
 }  // namespace
 }  // namespace lg::test

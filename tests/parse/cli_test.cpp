@@ -18,11 +18,11 @@ namespace lg {
 namespace {
 
 namespace fs = std::filesystem;
+using parse_test::lumagraph;
+using parse_test::Outcome;
 using parse_test::read_text;
 using parse_test::TempDir;
 using parse_test::write_text;
-using parse_test::lumagraph;
-using parse_test::Outcome;
 
 std::optional<JsonValue> json_of(const std::string& text, std::string* errors) {
   Diagnostics d;
@@ -31,7 +31,9 @@ std::optional<JsonValue> json_of(const std::string& text, std::string* errors) {
   return v;
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
 
 TEST(ParseCli, TheBinaryExists) {
   // Every other test here would fail confusingly without it.
@@ -88,10 +90,13 @@ TEST(ParseCli, ValidateReportsEachErrorAsPathLineColumnAndExits2) {
   Outcome r = lumagraph({"validate", path});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "");
-  EXPECT_EQ(r.err, path + ":6:66: error: param 'exposure' of node 't' (post.tonemap) must be a number from -20 to 20 (EV) "
-                          "(/nodes/2/params/exposure)\n" +
-                       path + ":12:15: error: node 't' (post.tonemap) has no output 'colour'; did you mean 'color'? (/outputs/0)\n" +
-                       path + ": invalid (2 errors)\n");
+  EXPECT_EQ(r.err,
+            path +
+                ":6:66: error: param 'exposure' of node 't' (post.tonemap) must be a number from -20 to 20 (EV) "
+                "(/nodes/2/params/exposure)\n" +
+                path +
+                ":12:15: error: node 't' (post.tonemap) has no output 'colour'; did you mean 'color'? (/outputs/0)\n" +
+                path + ": invalid (2 errors)\n");
 }
 
 TEST(ParseCli, ValidateReportsASyntaxErrorWithItsPlace) {
@@ -114,7 +119,9 @@ TEST(ParseCli, ValidateAMissingFileExits2AndNamesIt) {
   TempDir dir;
   Outcome r = lumagraph({"validate", dir.file("absent.json")});
   EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(starts_with(r.err, dir.file("absent.json") + ": error: cannot open the file: No such file or directory\n")) << r.err;
+  EXPECT_TRUE(
+      starts_with(r.err, dir.file("absent.json") + ": error: cannot open the file: No such file or directory\n"))
+      << r.err;
 }
 
 TEST(ParseCli, CompileAnInvalidGraphExits2AndCountsTheErrors) {
@@ -124,7 +131,8 @@ TEST(ParseCli, CompileAnInvalidGraphExits2AndCountsTheErrors) {
   Outcome r = lumagraph({"compile", path});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "");
-  EXPECT_NE(r.err.find(path + ":1:57: error: unknown node type 'post.tonemapp'; did you mean 'post.tonemap'?"), std::string::npos)
+  EXPECT_NE(r.err.find(path + ":1:57: error: unknown node type 'post.tonemapp'; did you mean 'post.tonemap'?"),
+            std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("lumagraph compile: 1 error\n"), std::string::npos) << r.err;
 }
@@ -135,7 +143,8 @@ TEST(ParseCli, ABrokenSceneSummaryExits2WithItsErrors) {
   write_text(scene, "{\n  \"format\": \"lumagraph-scene-summary/1\",\n  \"lights\": { \"point\": -2 }\n}\n");
   Outcome r = lumagraph({"compile", "--scene", scene});
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find(scene + ":3:24: error: expected a whole number from 0 to 1000000 (/lights/point)"), std::string::npos)
+  EXPECT_NE(r.err.find(scene + ":3:24: error: expected a whole number from 0 to 1000000 (/lights/point)"),
+            std::string::npos)
       << r.err;
 }
 

@@ -20,7 +20,9 @@ using parse_test::read_text;
 using parse_test::TempDir;
 using parse_test::write_text;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 TEST(RenderCli, WritesImageStatsAndDump) {
   TempDir dir;
@@ -42,7 +44,9 @@ TEST(RenderCli, WritesImageStatsAndDump) {
 
 TEST(RenderCli, CorruptSceneNamesTheFile) {
   TempDir dir;
-  write_text(dir.file("broken.gltf"), "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { \"primitives\": [ { \"attributes\": { \"POSITION\": 7 } } ] } ] ");
+  write_text(dir.file("broken.gltf"),
+             "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { \"primitives\": [ { \"attributes\": { "
+             "\"POSITION\": 7 } } ] } ] ");
   write_text(dir.file("broken.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
   for (const char* name : {"broken.gltf", "broken.obj", "missing.json"}) {
     Outcome r = lumagraph({"render", "examples/minimal.json", "--scene", dir.file(name), "--out", dir.file("x.png")});
@@ -54,7 +58,9 @@ TEST(RenderCli, CorruptSceneNamesTheFile) {
 
 TEST(RenderCli, BrokenGraphGetsLocatedErrors) {
   TempDir dir;
-  write_text(dir.file("g.json"), "{ \"format\": \"lumagraph/1\", \"nodes\": [ { \"id\": \"a\", \"type\": \"scene.gbufer\" } ], \"links\": [] }");
+  write_text(
+      dir.file("g.json"),
+      "{ \"format\": \"lumagraph/1\", \"nodes\": [ { \"id\": \"a\", \"type\": \"scene.gbufer\" } ], \"links\": [] }");
   Outcome r = lumagraph({"render", dir.file("g.json"), "--out", dir.file("x.png")});
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(contains(r.err, "g.json:1:")) << r.err;
@@ -63,7 +69,9 @@ TEST(RenderCli, BrokenGraphGetsLocatedErrors) {
 
 TEST(RenderCli, BadOptionsAreUsageErrors) {
   for (std::vector<std::string> args : {std::vector<std::string>{"render", "--frames", "0"},
-                                        {"render", "--size", "12x"}, {"render", "--colour"}, {"render", "a.json", "b.json"}}) {
+                                        {"render", "--size", "12x"},
+                                        {"render", "--colour"},
+                                        {"render", "a.json", "b.json"}}) {
     Outcome r = lumagraph(args);
     EXPECT_EQ(r.status, 1) << args[1] << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "lumagraph render:")) << r.err;

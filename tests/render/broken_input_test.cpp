@@ -20,8 +20,9 @@ namespace fs = std::filesystem;
 
 // A folder of its own for the graph and its environment file (paths resolve next to the graph).
 struct Folder {
-  fs::path path = fs::temp_directory_path() / ("lumagraph-broken-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::path path = fs::temp_directory_path() /
+                  ("lumagraph-broken-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
   Folder() { fs::create_directories(path); }
   ~Folder() { fs::remove_all(path); }
   std::string write(const std::string& name, const std::string& bytes) const {
@@ -32,7 +33,8 @@ struct Folder {
 
 std::string environment_graph(const std::string& file) {
   return R"({ "format": "lumagraph/1", "nodes": [
-      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "env", "type": "env.load", "params": { "path": ")" + file + R"(", "face_size": 16 } },
+      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "env", "type": "env.load", "params": { "path": ")" +
+         file + R"(", "face_size": 16 } },
       { "id": "sh", "type": "env.sh_project", "params": { "convolve_cosine": true } },
       { "id": "specular", "type": "env.specular_prefilter", "params": { "face_size": 16, "mips": 3 } },
       { "id": "dfg", "type": "env.brdf_lut", "params": { "size": 16 } }, { "id": "ibl", "type": "lighting.ibl" },

@@ -18,7 +18,8 @@ constexpr FrameSize kFrame{160, 120};
 
 Graph occlusion_graph(const std::string& node) {
   const std::string text = R"({ "format": "lumagraph/1", "name": "occlusion-test",
-    "nodes": [ { "id": "gbuf", "type": "scene.gbuffer" }, )" + node + R"( ],
+    "nodes": [ { "id": "gbuf", "type": "scene.gbuffer" }, )" +
+                           node + R"( ],
     "links": [ { "from": "gbuf.gbuffer", "to": "ao.gbuffer" } ],
     "outputs": [ "ao.ao" ] })";
   Diagnostics d("occlusion-test.json");
@@ -59,9 +60,12 @@ std::vector<float> render_ao(const std::string& node, const World& world, int fr
   return renderer.executor().read_image("ao.ao");
 }
 
-float at(const std::vector<float>& ao, uint32_t x, uint32_t y) { return ao[(y * kFrame.width + x) * 4]; }
+float at(const std::vector<float>& ao, uint32_t x, uint32_t y) {
+  return ao[(y * kFrame.width + x) * 4];
+}
 
-constexpr const char* kGtao = R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "radius": 0.5 } })";
+constexpr const char* kGtao =
+    R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "radius": 0.5 } })";
 constexpr const char* kSsao = R"({ "id": "ao", "type": "occlusion.ssao", "params": { "radius": 0.5 } })";
 
 // On a plane every horizon is the tangent plane, so the integral is exactly 1; what remains is

@@ -22,7 +22,8 @@ using ComputeTest = GpuTest;
 
 // Readback's own barrier waits for the dispatches, so none is recorded after them.
 void to_general(VkCommandBuffer cmd, const Image& image) {
-  image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE},
+  image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE},
                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 
@@ -52,13 +53,19 @@ TEST_F(ComputeTest, FillsAnImageWithAFunctionOfTheTexelCoordinate) {
 
 TEST_F(ComputeTest, WritesEveryFaceOfACubeMap) {
   const uint32_t size = 16;
-  Image cube = Image::dedicated(context(), {.name = "cube", .kind = ImageKind::cube, .format = vk_format("rgba32f"),
-                                            .width = size, .height = size, .mips = 2, .layers = 6});
+  Image cube = Image::dedicated(context(), {.name = "cube",
+                                            .kind = ImageKind::cube,
+                                            .format = vk_format("rgba32f"),
+                                            .width = size,
+                                            .height = size,
+                                            .mips = 2,
+                                            .layers = 6});
   const Pipeline& p = compute("fill_layers.comp", {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
   submitter().run([&](VkCommandBuffer cmd) {
     to_general(cmd, cube);
     // Storage access to a cube goes through a 2D array view of its faces.
-    const DescriptorWrite writes[] = {storage_image(0, cube.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .mip_count = 1}))};
+    const DescriptorWrite writes[] = {
+        storage_image(0, cube.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .mip_count = 1}))};
     bind_pipeline(context(), cmd, p, writes);
     vkCmdDispatch(cmd, size / 8, size / 8, 6);
   });
@@ -68,15 +75,17 @@ TEST_F(ComputeTest, WritesEveryFaceOfACubeMap) {
     for (uint32_t y = 0; y < size; ++y)
       for (uint32_t x = 0; x < size; ++x) {
         const float* t = &texels[(y * size + x) * 4];
-        ASSERT_TRUE(t[0] == x && t[1] == y && t[2] == face && t[3] == 1) << "face " << face << " texel " << x << "," << y;
+        ASSERT_TRUE(t[0] == x && t[1] == y && t[2] == face && t[3] == 1)
+            << "face " << face << " texel " << x << "," << y;
       }
   }
 }
 
 TEST_F(ComputeTest, WritesA3DImage) {
   const uint32_t w = 8, h = 4, d = 12;
-  Image volume = Image::dedicated(context(), {.name = "volume", .kind = ImageKind::image3d, .format = vk_format("r32f"),
-                                              .width = w, .height = h, .depth = d});
+  Image volume = Image::dedicated(
+      context(),
+      {.name = "volume", .kind = ImageKind::image3d, .format = vk_format("r32f"), .width = w, .height = h, .depth = d});
   const Pipeline& p = compute("fill_volume.comp", {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
   submitter().run([&](VkCommandBuffer cmd) {
     to_general(cmd, volume);
@@ -97,18 +106,20 @@ TEST_F(ComputeTest, WritesA3DImage) {
 TEST_F(ComputeTest, SamplesAnUploadedTexture) {
   const uint32_t w = 16, h = 8;
   Image source = Image::dedicated(context(), {.name = "source", .format = vk_format("rgba8"), .width = w, .height = h});
-  Image target = Image::dedicated(context(), {.name = "target", .format = vk_format("rgba32f"), .width = w, .height = h});
+  Image target =
+      Image::dedicated(context(), {.name = "target", .format = vk_format("rgba32f"), .width = w, .height = h});
   std::vector<float> texels(w * h * 4);
   for (size_t i = 0; i < texels.size(); ++i) texels[i] = static_cast<float>((i * 37) % 256) / 255;
   upload_image(submitter(), source, texels, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
 
   Sampler sampler(context(), {.filter = Filter::nearest, .address = Address::repeat});
-  const Pipeline& p = compute("sample.comp",
-                              {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
-                              2 * sizeof(float));
+  const Pipeline& p =
+      compute("sample.comp", {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+              2 * sizeof(float));
   submitter().run([&](VkCommandBuffer cmd) {
     to_general(cmd, target);
-    const DescriptorWrite writes[] = {sampled_image(0, source.view(), sampler.handle()), storage_image(1, target.view())};
+    const DescriptorWrite writes[] = {sampled_image(0, source.view(), sampler.handle()),
+                                      storage_image(1, target.view())};
     bind_pipeline(context(), cmd, p, writes);
     const float shift[2] = {2, -1};  // whole repeats: the same texels
     push_constants(cmd, p, shift);

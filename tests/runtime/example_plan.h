@@ -15,7 +15,9 @@ namespace lg::test {
 inline const std::string example_graphs[] = {"examples/minimal.json", "examples/default.json", "examples/post.json"};
 
 // "examples/default.json" -> "default", for test names.
-inline std::string example_name(const std::string& path) { return path.substr(9, path.size() - 14); }
+inline std::string example_name(const std::string& path) {
+  return path.substr(9, path.size() - 14);
+}
 
 // Throws with the diagnostics on errors.
 inline Plan compile_example(const Context& context, const std::string& path, FrameSize frame) {

@@ -36,8 +36,8 @@ TEST_P(ExecExamplesTest, FramesValidateAndLaterFramesSkipCachedPasses) {
   ASSERT_FALSE(outputs.empty());
   const std::string& resource = exec.output_resource(outputs.front());
   EXPECT_NE(exec.layout(resource), VK_IMAGE_LAYOUT_UNDEFINED);
-  EXPECT_EQ(exec.read_image(resource).size(), size_t{exec.image(resource).desc().width} *
-                                                  exec.image(resource).desc().height * 4);
+  EXPECT_EQ(exec.read_image(resource).size(),
+            size_t{exec.image(resource).desc().width} * exec.image(resource).desc().height * 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExecExamplesTest, ::testing::ValuesIn(example_graphs),

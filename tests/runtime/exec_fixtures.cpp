@@ -99,7 +99,8 @@ class TestKernel final : public NodeKernel {
     ++(*calls_)[pc.node().type];
     auto step = std::find_if(steps_.begin(), steps_.end(), [&](const TestStep& s) { return s.pass == pc.pass().pass; });
     if (step == steps_.end()) throw std::runtime_error("no step for pass " + pc.pass().pass);
-    if (pc.plan().resources[resource_of(pc, step->target)].desc.kind == ResourceKind::buffer) return fill_buffer(pc, *step);
+    if (pc.plan().resources[resource_of(pc, step->target)].desc.kind == ResourceKind::buffer)
+      return fill_buffer(pc, *step);
     Image& target = pc.image(step->target);
     std::vector<DescriptorWrite> writes;
     std::string shader = "exec_fill.comp";
@@ -196,9 +197,8 @@ class ThrowingKernel final : public NodeKernel {
 TestKernels test_kernels() {
   TestKernels k;
   auto add = [&](std::string type, std::vector<TestStep> steps) {
-    k.registry.add(std::move(type), [steps, calls = k.calls](const PlanNode&) {
-      return std::make_unique<TestKernel>(steps, calls);
-    });
+    k.registry.add(std::move(type),
+                   [steps, calls = k.calls](const PlanNode&) { return std::make_unique<TestKernel>(steps, calls); });
   };
   add("test.fill", {{"fill", "", "out.color"}});
   add("test.bake", {{"fill", "", "out.color"}});

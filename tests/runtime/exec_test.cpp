@@ -142,8 +142,9 @@ TEST_F(ExecTest, AliasedResourcesKeepResultsExact) {
     exec->read_image("fill.color");
     ADD_FAILURE() << "no throw";
   } catch (const ExecutorError& e) {
-    EXPECT_STREQ(e.what(), "cannot read 'fill.color': later passes of the frame reuse its memory (compile without "
-                           "aliasing to read it)");
+    EXPECT_STREQ(e.what(),
+                 "cannot read 'fill.color': later passes of the frame reuse its memory (compile without "
+                 "aliasing to read it)");
   }
 }
 
@@ -221,7 +222,9 @@ TEST_F(ExecTest, DrawsTheGpuScenesMeshIntoAnAttachment) {
   for (int frame = 0; frame < 2; ++frame) {
     exec->run_frame(scene, gpu_scene);
     EXPECT_EQ(wrong_texels(exec->read_image("raster.color"),
-                           [](uint32_t, uint32_t) { return Texel{0.25f, 0.5f, 0.75f, 1}; }),
+                           [](uint32_t, uint32_t) {
+                             return Texel{0.25f, 0.5f, 0.75f, 1};
+                           }),
               0);
   }
   EXPECT_EQ(exec->layout("raster.color"), VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL);
@@ -291,8 +294,9 @@ TEST_F(ExecTest, AnUnknownSlotNamesTheNodeAndWhatThePassBinds) {
     exec.run_frame(scene, gpu_scene);
     ADD_FAILURE() << "no throw";
   } catch (const ExecutorError& e) {
-    EXPECT_STREQ(e.what(), "pass 'f/fill': node 'f' (test.fill) has no image at 'out.colour' in this pass; it binds "
-                           "out.color");
+    EXPECT_STREQ(e.what(),
+                 "pass 'f/fill': node 'f' (test.fill) has no image at 'out.colour' in this pass; it binds "
+                 "out.color");
   }
 }
 
@@ -343,9 +347,11 @@ TEST_F(ExecTest, StatsNameSkippedNodesAndWriteJsonAndText) {
 TEST_F(ExecTest, StatsNameDroppedPasses) {
   SceneSummary no_area_lights = default_scene_summary();
   no_area_lights.sphere_lights = no_area_lights.tube_lights = 0;
-  Executor exec(context(), kernels.registry, compile_test_graph(context(), R"({ "format": "lumagraph/1",
+  Executor exec(context(), kernels.registry,
+                compile_test_graph(context(), R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "light", "type": "test.lit" }, { "id": "out", "type": "test.display" } ],
-    "links": [ { "from": "light.color", "to": "out.color" } ] })", true, {width, height}, no_area_lights));
+    "links": [ { "from": "light.color", "to": "out.color" } ] })",
+                                   true, {width, height}, no_area_lights));
   GpuScene gpu_scene(context(), exec.submitter());
   FrameStats stats = exec.run_frame(scene, gpu_scene);
   ASSERT_EQ(stats.passes.size(), 1u);

@@ -1,13 +1,14 @@
 // GpuScene: meshes and textures uploaded from a SceneView and read back byte for byte;
 // uploads happen again only when the scene's version changes; malformed meshes are refused
 // with their names.
+#include "runtime/exec/gpu_scene.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <span>
 #include <stdexcept>
 
-#include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/texel_codec.h"
 #include "runtime/gpu/transfer.h"
@@ -37,7 +38,8 @@ SceneView one_triangle_scene() {
   texture.name = "checker";
   texture.width = 3;
   texture.height = 2;
-  texture.rgba8 = {0, 1, 2, 255, 17, 34, 51, 68, 128, 129, 130, 131, 200, 201, 202, 203, 254, 253, 252, 0, 9, 99, 199, 255};
+  texture.rgba8 = {0,   1,   2,   255, 17,  34,  51,  68, 128, 129, 130, 131,
+                   200, 201, 202, 203, 254, 253, 252, 0,  9,   99,  199, 255};
   return scene;
 }
 
@@ -57,8 +59,14 @@ TEST_F(GpuSceneTest, UploadsInterleavedVerticesAndIndices) {
     std::memcpy(vertices.data(), bytes.data(), bytes.size());
     for (size_t v = 0; v < vertices.size(); ++v) {
       const glm::vec2 uv = want.uvs.empty() ? glm::vec2(0) : want.uvs[v];
-      const float expected[8] = {want.positions[v].x, want.positions[v].y, want.positions[v].z, want.normals[v].x,
-                                 want.normals[v].y,   want.normals[v].z,   uv.x,                uv.y};
+      const float expected[8] = {want.positions[v].x,
+                                 want.positions[v].y,
+                                 want.positions[v].z,
+                                 want.normals[v].x,
+                                 want.normals[v].y,
+                                 want.normals[v].z,
+                                 uv.x,
+                                 uv.y};
       EXPECT_EQ(std::memcmp(&vertices[v], expected, sizeof expected), 0) << want.name << " vertex " << v;
     }
     std::vector<std::byte> indices = read_buffer(submitter(), mesh.indices);

@@ -19,9 +19,12 @@ TEST_P(PlanTest, ResourcesFitTheirPlacementsAndBarriersValidate) {
 
   auto add = [&](BarrierBatch& batch, const Barrier& b) {
     auto& r = device.resources.at(b.resource);
-    if (auto* image = std::get_if<Image>(&r)) batch.add(b, *image);
-    else if (auto* buffer = std::get_if<Buffer>(&r)) batch.add(b, *buffer);
-    else ADD_FAILURE() << "barrier on unplaced resource " << plan.resources[b.resource].desc.name;
+    if (auto* image = std::get_if<Image>(&r))
+      batch.add(b, *image);
+    else if (auto* buffer = std::get_if<Buffer>(&r))
+      batch.add(b, *buffer);
+    else
+      ADD_FAILURE() << "barrier on unplaced resource " << plan.resources[b.resource].desc.name;
   };
   submitter().run([&](VkCommandBuffer cmd) {
     // First frame: history images start cleared, in the layout their first barrier expects.
@@ -31,8 +34,11 @@ TEST_P(PlanTest, ResourcesFitTheirPlacementsAndBarriersValidate) {
       if (seen[b.resource]) continue;
       seen[b.resource] = true;
       if (b.old_layout == Layout::undefined || b.old_layout == Layout::none) continue;
-      add(setup, {.resource = b.resource, .dst_stages = b.src_stages, .dst_access = b.src_access,
-                  .old_layout = Layout::undefined, .new_layout = b.old_layout});
+      add(setup, {.resource = b.resource,
+                  .dst_stages = b.src_stages,
+                  .dst_access = b.src_access,
+                  .old_layout = Layout::undefined,
+                  .new_layout = b.old_layout});
     }
     setup.record(cmd);
     BarrierBatch batch;

@@ -1,10 +1,11 @@
 // The embedded default world: its summary is the compiler's default_scene_summary(), its
 // meshes are well formed, and its camera frames the room's contents at 16:9.
+#include "runtime/scene/default_world.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
-#include "runtime/scene/default_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
 #include "runtime/scene/mesh_tools.h"

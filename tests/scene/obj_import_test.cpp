@@ -3,9 +3,8 @@
 // mesh. Tolerance on imported numbers: 1e-5.
 #include <gtest/gtest.h>
 
-#include <glm/geometric.hpp>
-
 #include <filesystem>
+#include <glm/geometric.hpp>
 
 #include "import_test_support.h"
 #include "runtime/scene/load_world.h"

@@ -1,5 +1,7 @@
 // Scene files: a file using every kind of entity loads into the expected world, and broken
 // files report every error with its exact line, column and JSON pointer.
+#include "runtime/scene/scene_file.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/scene_error.h"
-#include "runtime/scene/scene_file.h"
 
 namespace lg {
 namespace {

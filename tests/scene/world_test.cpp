@@ -1,12 +1,12 @@
 // The sparse-set store: handles, generations, components, iteration, parents and asset
 // revisions, and random add/remove/destroy sequences checked against a std::map model.
+#include "runtime/scene/world.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
 #include <random>
 #include <set>
-
-#include "runtime/scene/world.h"
 
 namespace lg {
 namespace {

@@ -1,7 +1,6 @@
 #include "nodes/lighting/deferred/deferred_kernel.h"
 
 #include <glm/vec4.hpp>
-
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -29,11 +28,21 @@ struct Constants {
   uint32_t counts[4];
   uint32_t counts2[4];
 };
-struct GpuDirectional { glm::vec4 direction, irradiance; };
-struct GpuPoint { glm::vec4 position_range, intensity; };
-struct GpuSphere { glm::vec4 center_radius, radiance; };
-struct GpuTube { glm::vec4 end0_radius, end1, radiance; };
-struct GpuRect { glm::vec4 center_two_sided, half_x, half_y, radiance; };
+struct GpuDirectional {
+  glm::vec4 direction, irradiance;
+};
+struct GpuPoint {
+  glm::vec4 position_range, intensity;
+};
+struct GpuSphere {
+  glm::vec4 center_radius, radiance;
+};
+struct GpuTube {
+  glm::vec4 end0_radius, end1, radiance;
+};
+struct GpuRect {
+  glm::vec4 center_two_sided, half_x, half_y, radiance;
+};
 
 // The first directional light that casts shadows owns the shadow map, or -1.
 int shadow_caster(const SceneView& scene) {
@@ -48,10 +57,14 @@ class DeferredKernel final : public NodeKernel {
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
-    if (pass == "shadows") record_shadows(ctx);
-    else if (pass == "direct") record_direct(ctx);
-    else if (pass == "area") record_area(ctx);
-    else throw std::logic_error("lighting.deferred has no pass '" + pass + "'");
+    if (pass == "shadows")
+      record_shadows(ctx);
+    else if (pass == "direct")
+      record_direct(ctx);
+    else if (pass == "area")
+      record_area(ctx);
+    else
+      throw std::logic_error("lighting.deferred has no pass '" + pass + "'");
   }
 
  private:
@@ -89,9 +102,11 @@ class DeferredKernel final : public NodeKernel {
       directional.push_back({glm::vec4(l.direction, int(i) == caster ? 1.0f : 0.0f), glm::vec4(l.irradiance, 0.0f)});
     }
     std::vector<GpuPoint> points;
-    for (const auto& l : scene.point_lights) points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, 0.0f)});
+    for (const auto& l : scene.point_lights)
+      points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, 0.0f)});
     std::vector<GpuSphere> spheres;
-    for (const auto& l : scene.sphere_lights) spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
+    for (const auto& l : scene.sphere_lights)
+      spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
     std::vector<GpuTube> tubes;
     for (const auto& l : scene.tube_lights)
       tubes.push_back({glm::vec4(l.end0, l.radius), glm::vec4(l.end1, 0.0f), glm::vec4(l.radiance, 0.0f)});
@@ -189,7 +204,8 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(6, color.view()));
     writes.push_back(storage_buffer(7, buffers_->directional.handle()));
     writes.push_back(storage_buffer(8, buffers_->points.handle()));
-    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width, color.desc().height);
+    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width,
+                     color.desc().height);
   }
 
   void record_area(PassContext& ctx) {

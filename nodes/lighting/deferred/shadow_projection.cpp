@@ -1,9 +1,8 @@
 #include "nodes/lighting/deferred/shadow_projection.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace lg {
 

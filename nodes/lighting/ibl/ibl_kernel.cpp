@@ -23,7 +23,6 @@ struct Push {  // nodes/lighting/ibl/shaders/ibl.comp
   float intensity;
 };
 
-
 Image fallback_image(Context& gpu, const char* name, ImageKind kind, VkFormat format) {
   return Image::dedicated(gpu, {.name = std::string("lighting.ibl fallback ") + name,
                                 .kind = kind,
@@ -133,8 +132,8 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
   for (uint32_t b = 1; b <= 11; ++b)
     bindings.push_back({b, b == 6 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   bindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
-  const Pipeline& pipeline = pipelines.compute(
-      {name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"), std::move(bindings), sizeof(Push)});
+  const Pipeline& pipeline =
+      pipelines.compute({name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"), std::move(bindings), sizeof(Push)});
   bind_pipeline(gpu, cmd, pipeline, writes);
   push_constants(cmd, pipeline, Push{flags, settings.intensity});
   dispatch_texels(cmd, in.color->desc().width, in.color->desc().height);

@@ -1,9 +1,8 @@
 #include "nodes/occlusion/gtao/gtao_kernel.h"
 
-#include <glm/matrix.hpp>
-
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -47,10 +46,14 @@ class GtaoKernel final : public NodeKernel {
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
-    if (pass == "prefilter") prefilter(ctx);
-    else if (pass == "horizons") horizons(ctx);
-    else if (pass == "denoise") denoise(ctx);
-    else throw std::logic_error("occlusion.gtao has no pass '" + pass + "'");
+    if (pass == "prefilter")
+      prefilter(ctx);
+    else if (pass == "horizons")
+      horizons(ctx);
+    else if (pass == "denoise")
+      denoise(ctx);
+    else
+      throw std::logic_error("occlusion.gtao has no pass '" + pass + "'");
   }
 
  private:
@@ -90,16 +93,21 @@ class GtaoKernel final : public NodeKernel {
       const uint32_t mip = std::min(level, mips.desc().mips - 1);
       writes.push_back(storage_image(2 + level, mips.view({.base_mip = mip, .mip_count = 1})));
     }
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/prefilter.comp", writes, mips.desc().width, mips.desc().height, {}, 16);
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/prefilter.comp", writes, mips.desc().width, mips.desc().height,
+                     {}, 16);
   }
 
   void horizons(PassContext& ctx) {
     Image& noisy = ctx.image("tmp.noisy");
     write_constants(ctx, noisy);
-    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, ctx.image("tmp.depth_mips").view(), ctx.nearest_sampler()),
-         sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()), storage_image(3, noisy.view()),
-         storage_image(4, ctx.image("tmp.edges").view()), storage_image(5, ctx.image("out.bent_normals").view())};
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height);
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
+                                      sampled_image(1, ctx.image("tmp.depth_mips").view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(3, noisy.view()),
+                                      storage_image(4, ctx.image("tmp.edges").view()),
+                                      storage_image(5, ctx.image("out.bent_normals").view())};
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width,
+                     noisy.desc().height);
   }
 
   void denoise(PassContext& ctx) {
@@ -107,10 +115,12 @@ class GtaoKernel final : public NodeKernel {
     write_constants(ctx, ao);
     Image& noisy = ctx.image("tmp.noisy");
     Image& history = ctx.has("in.history") ? ctx.image("in.history") : noisy;
-    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, noisy.view(), ctx.nearest_sampler()),
-         sampled_image(2, ctx.image("tmp.edges").view(), ctx.nearest_sampler()),
-         sampled_image(3, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
-         sampled_image(4, history.view(), ctx.linear_sampler()), storage_image(5, ao.view())};
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
+                                      sampled_image(1, noisy.view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("tmp.edges").view(), ctx.nearest_sampler()),
+                                      sampled_image(3, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
+                                      sampled_image(4, history.view(), ctx.linear_sampler()),
+                                      storage_image(5, ao.view())};
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/denoise.comp", writes, ao.desc().width, ao.desc().height);
   }
 

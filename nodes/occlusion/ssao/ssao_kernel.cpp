@@ -34,13 +34,16 @@ class SsaoKernel final : public NodeKernel {
     if (pass == "sample") {
       Image& noisy = ctx.image("tmp.noisy");
       write_constants(ctx, noisy);
-      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, depth.view(), ctx.nearest_sampler()),
-           sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()), storage_image(3, noisy.view())};
-      dispatch_compute(ctx, "nodes/occlusion/ssao/shaders/sample.comp", writes, noisy.desc().width, noisy.desc().height);
+      const DescriptorWrite writes[] = {
+          uniform_buffer(0, constants_->handle()), sampled_image(1, depth.view(), ctx.nearest_sampler()),
+          sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()), storage_image(3, noisy.view())};
+      dispatch_compute(ctx, "nodes/occlusion/ssao/shaders/sample.comp", writes, noisy.desc().width,
+                       noisy.desc().height);
     } else if (pass == "blur") {
       Image& ao = ctx.image("out.ao");
-      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), sampled_image(1, depth.view(), ctx.nearest_sampler()),
-           sampled_image(2, ctx.image("tmp.noisy").view(), ctx.nearest_sampler()), storage_image(3, ao.view())};
+      const DescriptorWrite writes[] = {
+          uniform_buffer(0, constants_->handle()), sampled_image(1, depth.view(), ctx.nearest_sampler()),
+          sampled_image(2, ctx.image("tmp.noisy").view(), ctx.nearest_sampler()), storage_image(3, ao.view())};
       dispatch_compute(ctx, "nodes/occlusion/ssao/shaders/blur.comp", writes, ao.desc().width, ao.desc().height);
     } else {
       throw std::logic_error("occlusion.ssao has no pass '" + pass + "'");

@@ -19,7 +19,9 @@ struct CompositePush {  // shaders/bloom_composite.comp
   float intensity, threshold, levels;
 };
 
-uint32_t extent(uint32_t size, uint32_t mip) { return std::max(size >> mip, 1u); }
+uint32_t extent(uint32_t size, uint32_t mip) {
+  return std::max(size >> mip, 1u);
+}
 
 class BloomKernel final : public NodeKernel {
  public:
@@ -28,10 +30,14 @@ class BloomKernel final : public NodeKernel {
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
-    if (pass == "downsample") downsample(ctx);
-    else if (pass == "upsample") upsample(ctx);
-    else if (pass == "composite") composite(ctx);
-    else throw std::logic_error("post.bloom has no pass '" + pass + "'");
+    if (pass == "downsample")
+      downsample(ctx);
+    else if (pass == "upsample")
+      upsample(ctx);
+    else if (pass == "composite")
+      composite(ctx);
+    else
+      throw std::logic_error("post.bloom has no pass '" + pass + "'");
   }
 
  private:
@@ -57,9 +63,9 @@ class BloomKernel final : public NodeKernel {
     // The plan's barrier before this pass covers storage access; the coarser levels are sampled.
     compute_to_compute_barrier(ctx.cmd());
     for (uint32_t mip = chain.desc().mips - 1; mip-- > 0;) {
-      const DescriptorWrite writes[] = {
-          sampled_image(0, chain.view({.base_mip = mip + 1, .mip_count = 1}), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-          storage_image(1, chain.view({.base_mip = mip, .mip_count = 1}))};
+      const DescriptorWrite writes[] = {sampled_image(0, chain.view({.base_mip = mip + 1, .mip_count = 1}),
+                                                      ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+                                        storage_image(1, chain.view({.base_mip = mip, .mip_count = 1}))};
       dispatch_compute(ctx, "nodes/post/bloom/shaders/bloom_upsample.comp", writes, extent(chain.desc().width, mip),
                        extent(chain.desc().height, mip));
       if (mip > 0) compute_to_compute_barrier(ctx.cmd());

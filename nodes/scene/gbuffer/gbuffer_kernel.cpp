@@ -1,7 +1,6 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
 #include <glm/matrix.hpp>
-
 #include <optional>
 #include <vector>
 
@@ -39,8 +38,8 @@ std::vector<DrawConstants> draw_constants(const SceneView& scene) {
   out.reserve(scene.draws.size());
   for (const DrawItem& d : scene.draws) {
     const PbrMaterial& m = scene.materials.at(d.material);
-    out.push_back({d.world, d.previous_world, glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world)))),
-                   m.base_color, glm::vec4(m.roughness, m.metalness, 0.0f, 0.0f)});
+    out.push_back({d.world, d.previous_world, glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world)))), m.base_color,
+                   glm::vec4(m.roughness, m.metalness, 0.0f, 0.0f)});
   }
   return out;
 }
@@ -63,7 +62,8 @@ class GbufferKernel final : public NodeKernel {
 
     VkRenderingAttachmentInfo colors[4];
     for (int c = 0; c < 4; ++c) colors[c] = cleared(targets[c + 1]->view(), {});
-    VkRenderingAttachmentInfo depth = cleared(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
+    VkRenderingAttachmentInfo depth =
+        cleared(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
     auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     rendering.renderArea = {{0, 0}, {w, h}};
     rendering.layerCount = 1;
