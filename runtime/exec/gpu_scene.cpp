@@ -87,4 +87,13 @@ void GpuScene::update(const SceneView& scene) {
   version_ = scene.version;
 }
 
+void draw_mesh(VkCommandBuffer cmd, const GpuMesh& mesh) {
+  if (mesh.index_count == 0) return;
+  const VkDeviceSize offset = 0;
+  const VkBuffer vertices = mesh.vertices.handle();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+  vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+}
+
 }  // namespace lg

@@ -4,6 +4,8 @@
 // update() uploads again only when SceneView::version changes.
 #pragma once
 
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -33,6 +35,10 @@ struct GpuMesh {
   Buffer indices;   // INDEX_BUFFER usage, VK_INDEX_TYPE_UINT32
   uint32_t index_count = 0, vertex_count = 0;
 };
+
+// Binds the mesh's vertex and index buffers and draws it once; a mesh without triangles draws
+// nothing (its buffers are null).
+void draw_mesh(VkCommandBuffer cmd, const GpuMesh& mesh);
 
 class GpuScene {
  public:

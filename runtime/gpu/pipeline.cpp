@@ -107,6 +107,13 @@ Pipeline finish(const Context& context, Pipeline p, const std::string& name, Cre
 
 }  // namespace
 
+void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
+  const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
+  const VkRect2D scissor{{0, 0}, {width, height}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
 PipelineCache::PipelineCache(Context& context) : context_(context) {}
 
 PipelineCache::~PipelineCache() {

@@ -58,6 +58,9 @@ struct Pipeline {
   uint32_t push_constant_bytes = 0;
 };
 
+// Graphics pipelines take viewport and scissor as dynamic state: the whole target's.
+void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height);
+
 class PipelineCache {
  public:
   explicit PipelineCache(Context& context);

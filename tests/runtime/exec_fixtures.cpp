@@ -174,15 +174,8 @@ class RasterKernel final : public NodeKernel {
     VkCommandBuffer cmd = pc.cmd();
     vkCmdBeginRendering(cmd, &rendering);
     bind_pipeline(pc.gpu(), cmd, p);
-    const VkViewport viewport{0, 0, float(w), float(h), 0, 1};
-    const VkRect2D scissor{{0, 0}, {w, h}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    const VkDeviceSize offset = 0;
-    const VkBuffer vertices = mesh.vertices.handle();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
-    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+    set_viewport(cmd, w, h);
+    draw_mesh(cmd, mesh);
     vkCmdEndRendering(cmd);
   }
 };

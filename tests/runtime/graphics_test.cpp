@@ -67,10 +67,7 @@ TEST_F(GraphicsTest, DrawsAFullScreenPassWithDepth) {
     rendering.pDepthAttachment = &depth_attachment;
     vkCmdBeginRendering(cmd, &rendering);
     bind_pipeline(context(), cmd, p);
-    const VkViewport viewport{0, 0, float(w), float(h), 0, 1};
-    const VkRect2D scissor{{0, 0}, {w, h}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    set_viewport(cmd, w, h);
     push_constants(cmd, p, Constants{{float(w), float(h)}, 0.25f});
     vkCmdDraw(cmd, 3, 1, 0, 0);
     push_constants(cmd, p, Constants{{float(w), float(h)}, 0.125f});  // farther: hidden

@@ -166,20 +166,12 @@ class DeferredKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    const VkViewport viewport{0, 0, float(size), float(size), 0, 1};
-    const VkRect2D scissor{{0, 0}, {size, size}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    set_viewport(cmd, size, size);
     const DescriptorWrite writes[] = {storage_buffer(0, buffers_->worlds.handle())};
     bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       push_constants(cmd, pipeline, ShadowPush{constants_.shadow_from_world, i, {}});
-      const GpuMesh& mesh = ctx.gpu_scene().mesh(scene.draws[i].mesh);
-      const VkDeviceSize offset = 0;
-      const VkBuffer vertices = mesh.vertices.handle();
-      vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
-      vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+      draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
     }
     vkCmdEndRendering(cmd);
   }

@@ -74,10 +74,7 @@ class GbufferKernel final : public NodeKernel {
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
     const Pipeline& pipeline = this->pipeline(ctx, targets);
-    const VkViewport viewport{0, 0, float(w), float(h), 0, 1};
-    const VkRect2D scissor{{0, 0}, {w, h}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    set_viewport(cmd, w, h);
     GpuScene& gpu_scene = ctx.gpu_scene();
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       const DrawItem& d = scene.draws[i];
@@ -87,12 +84,7 @@ class GbufferKernel final : public NodeKernel {
                                         sampled_image(2, base_color.view(), ctx.linear_sampler())};
       bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       push_constants(cmd, pipeline, i);
-      const GpuMesh& mesh = gpu_scene.mesh(d.mesh);
-      const VkDeviceSize offset = 0;
-      const VkBuffer vertices = mesh.vertices.handle();
-      vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
-      vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-      vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+      draw_mesh(cmd, gpu_scene.mesh(d.mesh));
     }
     vkCmdEndRendering(cmd);
   }
