@@ -16,8 +16,8 @@ commands:
   validate GRAPH    check a graph file and report every error
   nodes             list the node types, their ports and params
 
-`lumagraph COMMAND --help` describes each command. With no GRAPH, compile uses the
-embedded default graph (examples/default.json); render and compile, the embedded default scene.
+`lumagraph COMMAND --help` describes each command. With no GRAPH, render and compile use
+the embedded default graph (examples/default.json) and the embedded default scene.
 )";
 
 }  // namespace
