@@ -21,12 +21,20 @@ struct PreviewPort {
   int component = 0;  // within a bundle (the G-buffer's components)
 };
 
+// What an image's values are, which says how to show them.
+enum class PreviewEncoding {
+  display,  // sRGB values already (texture2d:ldr): shown as they are
+  colour,   // linear light (hdr, decoded sRGB albedo): exposed, then sRGB-encoded
+  data,     // normals, depth, occlusion, lookup tables: exposed, shown as values
+};
+
 // One image of a port: its own values, before exposure, at the resource's own size.
 struct PreviewImage {
   int width = 0, height = 0;
-  std::vector<float> rgba;       // 4 floats a pixel, rows top down
-  bool display_encoded = false;  // sRGB values (texture2d:ldr), shown as they are; else linear
-  QString note;                  // which part of the resource it is ("face +X"), or empty
+  std::vector<float> rgba;  // 4 floats a pixel, rows top down
+  PreviewEncoding encoding = PreviewEncoding::colour;
+  int channels = 4;  // of the resource's format: a one-channel image shows as grey
+  QString note;      // which part of the resource it is ("face +X"), or empty
 
   bool empty() const { return rgba.empty(); }
 };

@@ -12,9 +12,10 @@ QImage display_image(const PreviewImage& image, double exposure_ev, PreviewChann
   const float scale = float(std::exp2(exposure_ev));
   // Alpha is coverage, not light: neither exposed nor encoded.
   auto shown = [&](float v, int c) {
-    if (c == 3) return std::clamp(v, 0.0f, 1.0f);
-    return image.display_encoded ? std::clamp(v, 0.0f, 1.0f) : linear_to_srgb(v * scale);
+    if (c == 3 || image.encoding == PreviewEncoding::display) return std::clamp(v, 0.0f, 1.0f);
+    return image.encoding == PreviewEncoding::colour ? linear_to_srgb(v * scale) : std::clamp(v * scale, 0.0f, 1.0f);
   };
+  const bool grey = channel == PreviewChannel::rgb && image.channels == 1;
   for (int y = 0; y < image.height; ++y) {
     uchar* row = out.scanLine(y);
     for (int x = 0; x < image.width; ++x) {
@@ -25,7 +26,7 @@ QImage display_image(const PreviewImage& image, double exposure_ev, PreviewChann
         continue;
       }
       for (int c = 0; c < 3; ++c) {
-        const int from = channel == PreviewChannel::rgb ? c : int(channel) - 1;
+        const int from = grey ? 0 : channel == PreviewChannel::rgb ? c : int(channel) - 1;
         q[c] = uchar(std::lround(shown(p[from], from) * 255.0f));
       }
     }

@@ -1,6 +1,7 @@
 // How the preview turns a port's float pixels into something to look at: an exposure in EV
-// for linear images and an sRGB encode, or the sRGB values of a display-encoded (ldr) image as
-// they are; all channels or one as grey. And the read-out of one pixel's own values.
+// for linear images, then an sRGB encode for light (PreviewEncoding says which), and the sRGB
+// values of a display-encoded (ldr) image as they are; all channels or one as grey. And the
+// read-out of one pixel's own values.
 #pragma once
 
 #include <QImage>

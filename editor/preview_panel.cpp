@@ -30,7 +30,7 @@ PreviewPanel::PreviewPanel(QWidget* parent)
   exposure_->setSingleStep(0.5);
   exposure_->setDecimals(1);
   exposure_->setSuffix(tr(" EV"));
-  exposure_->setToolTip(tr("Exposure of linear (HDR) images; display-encoded (LDR) ones show as they are"));
+  exposure_->setToolTip(tr("Scales linear images by 2^EV; display-encoded (LDR) ones show as they are"));
   channel_->addItems({tr("RGB"), tr("R"), tr("G"), tr("B"), tr("A")});
   channel_->setToolTip(tr("All channels, or one as grey"));
   label_->setAlignment(Qt::AlignCenter);

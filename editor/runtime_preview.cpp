@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "api/renderer.h"
+#include "runtime/gpu/format.h"
 #include "runtime/scene/default_world.h"
 
 namespace lg::editor {
@@ -17,6 +18,15 @@ const std::string& port_resource(const Plan& plan, const PreviewPort& port) {
     if (o.node < 0 && o.port == text && port.component < int(o.resources.size()))
       return plan.resources[o.resources[port.component]].desc.name;
   throw std::runtime_error("the plan has no resource for " + port.name);
+}
+
+// texture2d:ldr (rgba8) holds sRGB values; four float or sRGB channels are linear light; the
+// rest (normals, depth, masks, motion, lookup tables) are data.
+PreviewEncoding preview_encoding(const FormatInfo& format) {
+  if (format.channels < 4 || format.encoding == TexelEncoding::snorm8 ||
+      format.encoding == TexelEncoding::unorm10_10_10_2)
+    return PreviewEncoding::data;
+  return format.encoding == TexelEncoding::unorm8 ? PreviewEncoding::display : PreviewEncoding::colour;
 }
 
 }  // namespace
@@ -49,7 +59,9 @@ PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const Previe
     image.height = int(desc.height);
     image.rgba = executor.read_image(name);  // mip 0, layer 0
     image.rgba.resize(size_t(desc.width) * desc.height * 4);  // a 3D texture's first slice
-    image.display_encoded = desc.format == "rgba8";         // texture2d:ldr holds sRGB values
+    const FormatInfo& format = format_info(desc.format);
+    image.channels = int(format.channels);
+    image.encoding = preview_encoding(format);
     if (desc.kind == ResourceKind::cube) image.note = QStringLiteral("face +X of %1").arg(QString::fromStdString(name));
     if (desc.kind == ResourceKind::texture3d)
       image.note = QStringLiteral("slice 0 of %1 of %2").arg(desc.layers).arg(QString::fromStdString(name));

@@ -210,7 +210,7 @@ class FlatPreview : public PreviewRenderer {
   PreviewImage render(const Graph& graph, QSize size, const PreviewPort&, QString*) override {
     nodes = graph.nodes.size();
     renderer_thread = std::this_thread::get_id();
-    PreviewImage image{size.width(), size.height(), {}, true, {}};
+    PreviewImage image{size.width(), size.height(), {}, PreviewEncoding::display, 4, {}};
     image.rgba.assign(size_t(size.width()) * size.height() * 4, 0.5f);
     return image;
   }
@@ -296,9 +296,17 @@ TEST_F(PortPreviewTest, ListsEveryPortAndShowsTheChosenOne) {
   for (int y = 0; y < main.height(); ++y)
     for (int x = 0; x < main.width(); ++x) differ += main.pixel(x, y) != normal.pixel(x, y);
   EXPECT_GT(differ, main.width() * main.height() / 2) << "normals are not the tone-mapped image";
+  // Kept for people to look at.
+  QDir().mkpath(LUMAGRAPH_BINARY_DIR "/test-output");
+  normal.save(LUMAGRAPH_BINARY_DIR "/test-output/preview-normal.png");
+  for (const char* port : {"gbuf.gbuffer.depth", "gbuf.gbuffer.albedo", "gtao.ao", "dfg.lut"}) {
+    EXPECT_FALSE(show_port(port).empty()) << port << ": " << window->preview_image()->text().toStdString();
+    shown().save(QStringLiteral(LUMAGRAPH_BINARY_DIR "/test-output/preview-%1.png").arg(port));
+  }
   EXPECT_TRUE(show_port("sh.sh").empty());
   EXPECT_TRUE(window->preview_image()->text().contains("no image preview for buffers"));
   EXPECT_FALSE(show_port("sky.cube").empty()) << window->preview_image()->text().toStdString();
+  shown().save(LUMAGRAPH_BINARY_DIR "/test-output/preview-sky.cube.png");
 }
 
 TEST_F(PortPreviewTest, ExposureBrightensAnHdrPortAndAChannelShowsAsGrey) {
