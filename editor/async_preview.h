@@ -10,8 +10,8 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <tuple>
 #include <thread>
+#include <tuple>
 
 #include "editor/preview.h"
 

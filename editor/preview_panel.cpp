@@ -34,6 +34,7 @@ PreviewPanel::PreviewPanel(QWidget* parent)
   channel_->addItems({tr("RGB"), tr("R"), tr("G"), tr("B"), tr("A")});
   channel_->setToolTip(tr("All channels, or one as grey"));
   label_->setAlignment(Qt::AlignCenter);
+  label_->setWordWrap(true);  // for errors
   label_->setMinimumSize(320, 180);
   label_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);  // the dock sizes it, not its image
   label_->setMouseTracking(true);

@@ -10,7 +10,8 @@ std::vector<PreviewPort> preview_ports(const Graph& graph, const Registry& regis
     for (const PortSpec& out : schema->outputs) {
       const PortRef ref{node.id, out.name};
       const std::vector<PortComponent>& parts = out.type.components();
-      if (parts.size() == 1) ports.push_back({ref.text(), ref, 0});
+      if (parts.size() == 1)
+        ports.push_back({ref.text(), ref, 0});
       else
         for (size_t c = 0; c < parts.size(); ++c) ports.push_back({ref.text() + '.' + parts[c].name, ref, int(c)});
     }

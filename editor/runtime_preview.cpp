@@ -51,13 +51,14 @@ PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const Previe
     const FrameSize frame{uint32_t(std::max(size.width(), 16)), uint32_t(std::max(size.height(), 16))};
     renderer_->render(*world_, frame);
     Executor& executor = renderer_->executor();
-    const std::string& name = port.name.empty() ? executor.output_resource("main") : port_resource(executor.plan(), port);
+    const std::string& name =
+        port.name.empty() ? executor.output_resource("main") : port_resource(executor.plan(), port);
     const LoweredResource& desc = executor.plan().resources[executor.resource_index(name)].desc;
     if (desc.kind == ResourceKind::buffer) throw std::runtime_error("no image preview for buffers (" + name + ")");
     PreviewImage image;
     image.width = int(desc.width);
     image.height = int(desc.height);
-    image.rgba = executor.read_image(name);  // mip 0, layer 0
+    image.rgba = executor.read_image(name);                   // mip 0, layer 0
     image.rgba.resize(size_t(desc.width) * desc.height * 4);  // a 3D texture's first slice
     const FormatInfo& format = format_info(desc.format);
     image.channels = int(format.channels);

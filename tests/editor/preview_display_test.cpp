@@ -1,13 +1,14 @@
 // What the preview offers and shows, without a window: the ports of a graph (G-buffer
 // components each), how values become display pixels per encoding, exposure and channel, and
 // the read-out text.
+#include "editor/preview_display.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "editor/preview_display.h"
 #include "editor/preview_ports.h"
 #include "graph/graph_io.h"
 #include "nodes/builtin_schemas.h"
