@@ -1,9 +1,8 @@
-// Runs a PreviewRenderer off the UI thread: request() hands over the latest graph (replacing
-// one not yet started, so a slider drag renders only where it settles) and finished() arrives
-// on the UI thread with the image, or an error, and how long the render took.
+// Runs a PreviewRenderer off the UI thread: request() hands over the latest graph and port
+// (replacing a request not yet started, so a slider drag renders only where it settles) and
+// finished() arrives on the UI thread with the image, or an error, and how long it took.
 #pragma once
 
-#include <QImage>
 #include <QObject>
 #include <QSize>
 #include <QString>
@@ -12,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <tuple>
 
 #include "editor/preview.h"
 
@@ -24,10 +24,10 @@ class AsyncPreview : public QObject {
   explicit AsyncPreview(std::unique_ptr<PreviewRenderer> renderer, QObject* parent = nullptr);
   ~AsyncPreview() override;  // finishes the render in progress, drops the rest
 
-  void request(Graph graph, QSize size);
+  void request(Graph graph, QSize size, PreviewPort port);
 
  signals:
-  void finished(QImage image, QString error, double milliseconds);
+  void finished(lg::editor::PreviewImage image, QString error, double milliseconds);
 
  private:
   void run();
@@ -35,7 +35,7 @@ class AsyncPreview : public QObject {
   std::unique_ptr<PreviewRenderer> renderer_;  // used on the worker thread only
   std::mutex mutex_;
   std::condition_variable wake_;
-  std::optional<std::pair<Graph, QSize>> pending_;
+  std::optional<std::tuple<Graph, QSize, PreviewPort>> pending_;
   bool stopping_ = false;
   std::thread worker_;
 };

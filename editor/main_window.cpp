@@ -20,6 +20,8 @@
 #include "editor/inspector_widget.h"
 #include "editor/palette.h"
 #include "editor/param_panel.h"
+#include "editor/preview_panel.h"
+#include "editor/preview_ports.h"
 #include "graph/asset_paths.h"
 #include "graph/graph_io.h"
 #include "nodes/builtin_schemas.h"
@@ -270,16 +272,22 @@ void MainWindow::refresh() {
   compile_->show_plan(validation_.plan ? &*validation_.plan : nullptr);
   show_selection();
   update_title();
-  if (preview_runner_ && validation_.plan) preview_runner_->request(graph, preview_->size());
+  request_preview();
 }
 
-void MainWindow::show_preview(const QImage& image, const QString& error, double milliseconds) {
-  if (image.isNull()) {
-    preview_->setText(error);
-  } else {
-    preview_->setPixmap(QPixmap::fromImage(image));
-    statusBar()->showMessage(tr("Preview rendered in %1 ms").arg(milliseconds, 0, 'f', 0), 4000);
-  }
+QLabel* MainWindow::preview_image() const {
+  return preview_ ? preview_->image_label() : nullptr;
+}
+
+void MainWindow::request_preview() {
+  if (!preview_runner_) return;
+  preview_->set_ports(preview_ports(doc_->graph(), builtin_registry()));
+  if (validation_.plan) preview_runner_->request(doc_->graph(), preview_->render_size(), preview_->port());
+}
+
+void MainWindow::show_preview(const PreviewImage& image, const QString& error, double milliseconds) {
+  if (!image.empty()) statusBar()->showMessage(tr("Preview rendered in %1 ms").arg(milliseconds, 0, 'f', 0), 4000);
+  preview_->show_image(image, error);
   ++previews_shown_;
   emit preview_shown();
 }
@@ -410,9 +418,8 @@ void MainWindow::set_preview(std::unique_ptr<PreviewRenderer> renderer) {
   preview_runner_ = new AsyncPreview(std::move(renderer), this);
   connect(preview_runner_, &AsyncPreview::finished, this, &MainWindow::show_preview);
   if (!preview_) {
-    preview_ = new QLabel(this);
-    preview_->setAlignment(Qt::AlignCenter);
-    preview_->setMinimumSize(320, 180);
+    preview_ = new PreviewPanel(this);
+    connect(preview_, &PreviewPanel::port_changed, this, &MainWindow::request_preview);
     auto* dock = new QDockWidget(tr("Preview"), this);
     dock->setObjectName(QStringLiteral("Preview"));
     dock->setWidget(preview_);

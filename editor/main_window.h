@@ -26,6 +26,7 @@ class DiskSync;
 class Document;
 class Palette;
 class ParamPanel;
+class PreviewPanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -57,7 +58,8 @@ class MainWindow : public QMainWindow {
   DiskSync* disk_sync() const { return disk_; }
   QListWidget* problems() const { return problems_; }
   InspectorWidget* inspector() const { return inspector_; }
-  QLabel* preview_image() const { return preview_; }
+  PreviewPanel* preview() const { return preview_; }
+  QLabel* preview_image() const;
   int previews_shown() const { return previews_shown_; }
   const Validation& validation() const { return validation_; }
 
@@ -76,7 +78,8 @@ class MainWindow : public QMainWindow {
   void move_nodes(const std::map<std::string, Position>& positions);
   void set_param(const std::string& node, const std::string& param, const JsonValue& value);
   void show_menu(Position at, QPoint global);
-  void show_preview(const QImage& image, const QString& error, double milliseconds);
+  void request_preview();
+  void show_preview(const PreviewImage& image, const QString& error, double milliseconds);
   void update_title();
   bool maybe_save();
   bool save();
@@ -93,7 +96,7 @@ class MainWindow : public QMainWindow {
   CompileView* compile_;
   QListWidget* problems_;
   InspectorWidget* inspector_;
-  QLabel* preview_ = nullptr;
+  PreviewPanel* preview_ = nullptr;
   AsyncPreview* preview_runner_ = nullptr;
   int previews_shown_ = 0;
   Validation validation_;

@@ -1,21 +1,52 @@
-// The seam for the live preview: something that renders a graph to an image. The runtime's
-// executor and the node kernels are not part of the editor yet; when they are, an
-// implementation that compiles the graph and runs one frame on the runtime plugs in here
-// (MainWindow::set_preview) and the editor shows its image in the Preview dock after each edit.
+// The seam for the live preview: something that renders one port of a graph to float pixels.
+// RuntimePreview does it on the runtime; MainWindow::set_preview plugs one in, and the Preview
+// dock (preview_panel.h) shows its pixels after each edit with an exposure and a channel of
+// its own, and reads out the pixel under the cursor.
 #pragma once
 
-#include <QImage>
+#include <QMetaType>
+#include <QSize>
 #include <QString>
+#include <string>
+#include <vector>
 
 #include "graph/graph.h"
 
 namespace lg::editor {
 
+// A port the preview can show (preview_ports.h).
+struct PreviewPort {
+  std::string name;   // "light.color", "gbuf.gbuffer.normal"; empty: the graph's main output
+  PortRef port;       // the node's output port
+  int component = 0;  // within a bundle (the G-buffer's components)
+};
+
+// What an image's values are, which says how to show them.
+enum class PreviewEncoding {
+  display,  // sRGB values already (texture2d:ldr): shown as they are
+  colour,   // linear light (hdr, decoded sRGB albedo): exposed, then sRGB-encoded
+  data,     // normals, depth, occlusion, lookup tables: exposed, shown as values
+};
+
+// One image of a port: its own values, before exposure, at the resource's own size.
+struct PreviewImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;  // 4 floats a pixel, rows top down
+  PreviewEncoding encoding = PreviewEncoding::colour;
+  int channels = 4;  // of the resource's format: a one-channel image shows as grey
+  QString note;      // which part of the resource it is ("face +X"), or empty
+
+  bool empty() const { return rgba.empty(); }
+};
+
 class PreviewRenderer {
  public:
   virtual ~PreviewRenderer() = default;
-  // An image of the graph's output at about `size`, or a null image with `error` set.
-  virtual QImage render(const Graph& graph, QSize size, QString* error) = 0;
+  // `port` of the graph, rendered on a frame of about `size`; an empty image with `error` set
+  // when it cannot (the graph fails, the port is a buffer).
+  virtual PreviewImage render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) = 0;
 };
 
 }  // namespace lg::editor
+
+Q_DECLARE_METATYPE(lg::editor::PreviewImage)

@@ -1,36 +1,71 @@
 #include "editor/runtime_preview.h"
 
 #include <algorithm>
-#include <cmath>
 #include <exception>
 
 #include "api/renderer.h"
+#include "runtime/gpu/format.h"
 #include "runtime/scene/default_world.h"
 
 namespace lg::editor {
+namespace {
+
+// The resource the plan made for `port`: through the graph output graph_showing() added, which
+// also follows a bypassed node to the resource it forwards.
+const std::string& port_resource(const Plan& plan, const PreviewPort& port) {
+  const std::string text = port.port.text();
+  for (const PlanOutput& o : plan.outputs)
+    if (o.node < 0 && o.port == text && port.component < int(o.resources.size()))
+      return plan.resources[o.resources[port.component]].desc.name;
+  throw std::runtime_error("the plan has no resource for " + port.name);
+}
+
+// texture2d:ldr (rgba8) holds sRGB values; four float or sRGB channels are linear light; the
+// rest (normals, depth, masks, motion, lookup tables) are data.
+PreviewEncoding preview_encoding(const FormatInfo& format) {
+  if (format.channels < 4 || format.encoding == TexelEncoding::snorm8 ||
+      format.encoding == TexelEncoding::unorm10_10_10_2)
+    return PreviewEncoding::data;
+  return format.encoding == TexelEncoding::unorm8 ? PreviewEncoding::display : PreviewEncoding::colour;
+}
+
+}  // namespace
+
+Graph graph_showing(Graph graph, const PreviewPort& port) {
+  const auto same = [&](const GraphOutput& o) { return o.port.text() == port.port.text(); };
+  if (!port.name.empty() && std::none_of(graph.outputs.begin(), graph.outputs.end(), same))
+    graph.outputs.push_back({port.port, {}});
+  return graph;
+}
 
 RuntimePreview::RuntimePreview() = default;
 RuntimePreview::~RuntimePreview() = default;
 
-QImage RuntimePreview::render(const Graph& graph, QSize size, QString* error) {
+PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) {
   try {
     if (!renderer_) {
       renderer_ = std::make_unique<Renderer>();
       world_ = std::make_unique<World>(default_world());
     }
-    renderer_->set_graph(graph);
+    renderer_->set_graph(graph_showing(graph, port));
     const FrameSize frame{uint32_t(std::max(size.width(), 16)), uint32_t(std::max(size.height(), 16))};
     renderer_->render(*world_, frame);
-    const std::vector<float> rgba = renderer_->read_output();
-    // The main output is display-encoded (ldr) in the usual graphs; linear outputs show clamped.
-    QImage image(int(frame.width), int(frame.height), QImage::Format_RGB888);
-    for (uint32_t y = 0; y < frame.height; ++y) {
-      uchar* row = image.scanLine(int(y));
-      for (uint32_t x = 0; x < frame.width * 3; ++x) {
-        const float v = rgba[(y * frame.width + x / 3) * 4 + x % 3];
-        row[x] = uchar(std::lround(std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f) * 255.0f));
-      }
-    }
+    Executor& executor = renderer_->executor();
+    const std::string& name =
+        port.name.empty() ? executor.output_resource("main") : port_resource(executor.plan(), port);
+    const LoweredResource& desc = executor.plan().resources[executor.resource_index(name)].desc;
+    if (desc.kind == ResourceKind::buffer) throw std::runtime_error("no image preview for buffers (" + name + ")");
+    PreviewImage image;
+    image.width = int(desc.width);
+    image.height = int(desc.height);
+    image.rgba = executor.read_image(name);                   // mip 0, layer 0
+    image.rgba.resize(size_t(desc.width) * desc.height * 4);  // a 3D texture's first slice
+    const FormatInfo& format = format_info(desc.format);
+    image.channels = int(format.channels);
+    image.encoding = preview_encoding(format);
+    if (desc.kind == ResourceKind::cube) image.note = QStringLiteral("face +X of %1").arg(QString::fromStdString(name));
+    if (desc.kind == ResourceKind::texture3d)
+      image.note = QStringLiteral("slice 0 of %1 of %2").arg(desc.layers).arg(QString::fromStdString(name));
     return image;
   } catch (const std::exception& e) {
     *error = QString::fromStdString(e.what());

@@ -1,7 +1,9 @@
-// The live preview on the runtime: compiles the edited graph for the embedded default world and
-// renders one frame of its main output with the real kernels (lavapipe, or a GPU when there is
-// one). Keeps its device and the last executor between edits; not thread-safe (AsyncPreview
-// calls it from one worker thread).
+// The live preview on the runtime: compiles the edited graph for the embedded default world,
+// renders one frame with the real kernels (lavapipe, or a GPU when there is one) and reads back
+// the chosen port: the main output, or any node output, which it adds to the graph's outputs
+// so that the node is not culled and its resource lives to the end of the frame (memory
+// aliasing stays on). Keeps its device and the last executor between edits; not thread-safe
+// (AsyncPreview calls it from one worker thread).
 #pragma once
 
 #include <memory>
@@ -19,11 +21,14 @@ class RuntimePreview : public PreviewRenderer {
  public:
   RuntimePreview();
   ~RuntimePreview() override;
-  QImage render(const Graph& graph, QSize size, QString* error) override;
+  PreviewImage render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) override;
 
  private:
   std::unique_ptr<Renderer> renderer_;  // made on first use, on the thread that renders
   std::unique_ptr<World> world_;
 };
+
+// The graph as the preview renders it: `port` (when not the main output) among its outputs.
+Graph graph_showing(Graph graph, const PreviewPort& port);
 
 }  // namespace lg::editor

@@ -15,11 +15,6 @@ float saturate(float v, float lo, float hi) { return v >= lo ? (v <= hi ? v : hi
 
 uint32_t to_unorm(float v, uint32_t max) { return static_cast<uint32_t>(std::lround(saturate(v, 0, 1) * max)); }
 
-float linear_to_srgb(float v) {
-  v = saturate(v, 0, 1);
-  return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
-}
-
 float srgb_to_linear(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f); }
 
 void check_sizes(const FormatInfo& format, size_t floats, size_t bytes) {
@@ -29,6 +24,11 @@ void check_sizes(const FormatInfo& format, size_t floats, size_t bytes) {
 }
 
 }  // namespace
+
+float linear_to_srgb(float v) {
+  v = saturate(v, 0, 1);
+  return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
+}
 
 uint16_t float_to_half(float value) {
   const uint32_t x = std::bit_cast<uint32_t>(value);

@@ -15,6 +15,9 @@ namespace lg {
 void encode_texels(const FormatInfo& format, std::span<const float> rgba, std::span<std::byte> bytes);
 void decode_texels(const FormatInfo& format, std::span<const std::byte> bytes, std::span<float> rgba);
 
+// The sRGB transfer function of one channel, clamped to [0, 1] (NaN gives 0).
+float linear_to_srgb(float value);
+
 // IEEE half precision, round to nearest even; overflow gives infinity, NaN stays NaN.
 uint16_t float_to_half(float value);
 float half_to_float(uint16_t bits);

@@ -1,6 +1,6 @@
-// The editor and files: saving writes the runtime's format, examples round-trip untouched, a
-// file changed on disk reloads (a broken one keeps the last good graph), autosave recovers
-// unsaved work, and --screenshot writes the window.
+// The editor and files: saving writes the runtime's format, examples round-trip untouched (an
+// edit undone and saved renders the same image), a file changed on disk reloads (a broken one
+// keeps the last good graph), autosave recovers unsaved work, and --screenshot writes the window.
 #include <gtest/gtest.h>
 
 #include <QDir>
@@ -9,13 +9,16 @@
 #include <QListWidget>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QUndoStack>
 
+#include "api/renderer.h"
 #include "editor/disk_sync.h"
 #include "editor/document.h"
 #include "editor/graph_edits.h"
 #include "editor/main_window.h"
 #include "graph/graph_io.h"
 #include "qt_app.h"
+#include "runtime/scene/default_world.h"
 
 namespace lg::editor {
 namespace {
@@ -62,6 +65,30 @@ TEST_F(FilesTest, EveryExampleRoundTripsUnedited) {
     const QString out = dir.filePath(name);
     ASSERT_TRUE(window->save_to(out));
     EXPECT_EQ(json_of_file(out), json_of_file(example(name))) << name.toStdString();
+  }
+}
+
+// The main output of a graph file on the default world, float RGBA.
+std::vector<float> render_file(const QString& path) {
+  Renderer renderer;
+  renderer.load_graph(path.toStdString());
+  renderer.render(default_world(), {96, 54});
+  return renderer.read_output();
+}
+
+TEST_F(FilesTest, EveryExampleEditedUndoneAndSavedRendersTheSameImage) {
+  for (const QString& name : QDir(example("")).entryList({"*.json"}, QDir::Files)) {
+    SCOPED_TRACE(name.toStdString());
+    ASSERT_TRUE(window->open_file(example(name)));
+    window->add_node(QStringLiteral("env.sky"));
+    window->document()->undo_stack()->undo();
+    const QString out = dir.filePath(name);
+    ASSERT_TRUE(window->save_to(out));
+    const std::vector<float> original = render_file(example(name)), saved = render_file(out);
+    ASSERT_EQ(saved.size(), original.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < saved.size(); ++i) differ += saved[i] != original[i];  // NaN counts too
+    EXPECT_EQ(differ, 0u) << "identical pixels";
   }
 }
 

@@ -1,7 +1,9 @@
 // The editor driven as a user would: open, add from the palette, link, refuse a bad link, edit a
-// param, undo and redo, delete, copy and paste, move, and the preview seam.
+// param, undo and redo, delete, copy and paste, move, and the preview: the seam, the runtime's
+// image of the main output and of any port, exposure, channel and the pixel read-out.
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -34,6 +36,9 @@
 #include "editor/node_model.h"
 #include "editor/palette.h"
 #include "editor/param_panel.h"
+#include "editor/preview_panel.h"
+#include "api/renderer.h"
+#include "runtime/scene/default_world.h"
 #include "graph/graph_io.h"
 #include "qt_app.h"
 
@@ -202,11 +207,11 @@ TEST_F(EditorTest, DraggingNodesIsRecordedOnRelease) {
 // Renders on the preview's worker thread: what it saw is read back after the image arrives.
 class FlatPreview : public PreviewRenderer {
  public:
-  QImage render(const Graph& graph, QSize size, QString*) override {
+  PreviewImage render(const Graph& graph, QSize size, const PreviewPort&, QString*) override {
     nodes = graph.nodes.size();
     renderer_thread = std::this_thread::get_id();
-    QImage image(size.expandedTo({16, 16}), QImage::Format_RGB32);
-    image.fill(Qt::darkCyan);
+    PreviewImage image{size.width(), size.height(), {}, PreviewEncoding::display, 4, {}};
+    image.rgba.assign(size_t(size.width()) * size.height() * 4, 0.5f);
     return image;
   }
   std::atomic<size_t> nodes = 0;
@@ -247,6 +252,103 @@ TEST_F(EditorTest, TheRuntimePreviewRendersTheDefaultGraph) {
   QImage darker = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
   ASSERT_FALSE(darker.isNull());
   EXPECT_LT(qGray(darker.pixel(darker.width() / 2, darker.height() / 2)), qGray(image.pixel(image.width() / 2, image.height() / 2)));
+}
+
+// The real preview of ports other than the main output (tests below share it).
+class PortPreviewTest : public EditorTest {
+ protected:
+  void SetUp() override {
+    EditorTest::SetUp();
+    window->set_preview(std::make_unique<RuntimePreview>());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() >= 1; }, 60000));
+  }
+  // Chooses a port in the combo box and waits for its image.
+  const PreviewImage& show_port(const QString& name) {
+    const int shown = window->previews_shown();
+    window->preview()->choose_port(name);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() > shown; }, 60000));
+    EXPECT_EQ(window->preview()->port().name, name == "main output" ? "" : name.toStdString());
+    return window->preview()->image();
+  }
+  QImage shown() const { return window->preview_image()->pixmap(Qt::ReturnByValue).toImage(); }
+};
+
+double mean_grey(const QImage& image) {
+  double sum = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) sum += qGray(image.pixel(x, y));
+  return sum / (double(image.width()) * image.height());
+}
+
+TEST_F(PortPreviewTest, ListsEveryPortAndShowsTheChosenOne) {
+  auto* box = window->preview()->findChild<QComboBox*>();
+  ASSERT_TRUE(box);
+  QStringList items;
+  for (int i = 0; i < box->count(); ++i) items << box->itemText(i);
+  for (const char* port : {"main output", "gbuf.gbuffer.normal", "gbuf.gbuffer.depth", "light.color", "sh.sh", "sky.cube"})
+    EXPECT_TRUE(items.contains(port)) << port;
+  ASSERT_FALSE(show_port("gbuf.gbuffer.normal").empty()) << window->preview_image()->text().toStdString();
+  const QImage normal = shown();
+  ASSERT_FALSE(show_port("main output").empty()) << window->preview_image()->text().toStdString();
+  const QImage main = shown();
+  ASSERT_EQ(normal.size(), main.size());
+  int differ = 0;
+  for (int y = 0; y < main.height(); ++y)
+    for (int x = 0; x < main.width(); ++x) differ += main.pixel(x, y) != normal.pixel(x, y);
+  EXPECT_GT(differ, main.width() * main.height() / 2) << "normals are not the tone-mapped image";
+  // Kept for people to look at.
+  QDir().mkpath(LUMAGRAPH_BINARY_DIR "/test-output");
+  normal.save(LUMAGRAPH_BINARY_DIR "/test-output/preview-normal.png");
+  for (const char* port : {"gbuf.gbuffer.depth", "gbuf.gbuffer.albedo", "gtao.ao", "dfg.lut"}) {
+    EXPECT_FALSE(show_port(port).empty()) << port << ": " << window->preview_image()->text().toStdString();
+    shown().save(QStringLiteral(LUMAGRAPH_BINARY_DIR "/test-output/preview-%1.png").arg(port));
+  }
+  EXPECT_TRUE(show_port("sh.sh").empty());
+  EXPECT_TRUE(window->preview_image()->text().contains("no image preview for buffers"));
+  EXPECT_FALSE(show_port("sky.cube").empty()) << window->preview_image()->text().toStdString();
+  shown().save(LUMAGRAPH_BINARY_DIR "/test-output/preview-sky.cube.png");
+}
+
+TEST_F(PortPreviewTest, ExposureBrightensAnHdrPortAndAChannelShowsAsGrey) {
+  ASSERT_FALSE(show_port("light.color").empty()) << window->preview_image()->text().toStdString();
+  const QImage at_0 = shown();
+  window->preview()->set_exposure(2);
+  const QImage at_2 = shown();  // no render: the kept pixels are shown again
+  EXPECT_GT(mean_grey(at_2), mean_grey(at_0) + 10) << "+2 EV is four times the light";
+  window->preview()->set_channel(PreviewChannel::red);
+  const QImage red = shown();
+  ASSERT_EQ(red.size(), at_2.size());
+  int wrong = 0;
+  for (int y = 0; y < red.height(); ++y)
+    for (int x = 0; x < red.width(); ++x) {
+      const QRgb p = red.pixel(x, y);
+      wrong += qRed(p) != qRed(at_2.pixel(x, y)) || qGreen(p) != qRed(p) || qBlue(p) != qRed(p);
+    }
+  EXPECT_EQ(wrong, 0) << "grey levels equal the red channel exactly";
+}
+
+TEST_F(PortPreviewTest, TheReadOutShowsThePixelUnderTheCursor) {
+  const PreviewImage& image = show_port("light.color");
+  ASSERT_FALSE(image.empty()) << window->preview_image()->text().toStdString();
+  const QPoint pixel(image.width / 2, image.height * 2 / 3);
+  QLabel* label = window->preview_image();
+  const QPoint at = pixel - window->preview()->pixel_at({0, 0});
+  ASSERT_EQ(window->preview()->pixel_at(at), pixel);
+  QMouseEvent move(QEvent::MouseMove, at, Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+  QApplication::sendEvent(label, &move);
+  const QString text = window->preview()->readout()->text();
+  const QRegularExpressionMatch m =
+      QRegularExpression(R"(^x (\d+), y (\d+): (\S+) (\S+) (\S+) (\S+)$)").match(text);
+  ASSERT_TRUE(m.hasMatch()) << text.toStdString();
+  EXPECT_EQ(m.captured(1).toInt(), pixel.x());
+  EXPECT_EQ(m.captured(2).toInt(), pixel.y());
+  // The same frame rendered apart from the editor and read back from the executor.
+  Renderer renderer;
+  renderer.set_graph(graph_showing(graph(), window->preview()->port()));
+  renderer.render(default_world(), {uint32_t(image.width), uint32_t(image.height)});
+  const std::vector<float> rgba = renderer.executor().read_image("light.color");
+  const size_t i = (size_t(pixel.y()) * image.width + pixel.x()) * 4;
+  for (int c = 0; c < 4; ++c) EXPECT_NEAR(m.captured(3 + c).toDouble(), rgba[i + c], 1e-3) << "channel " << c;
 }
 
 TEST_F(EditorTest, TheMemoryTimelineDrawsThePlan) {
