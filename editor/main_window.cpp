@@ -266,9 +266,12 @@ void MainWindow::refresh() {
   const bool had_errors = validation_.has_errors();
   validation_ = validate_graph(graph);
   show_problems();
-  // The compile view is empty while the graph has errors: show what is wrong instead.
-  if (validation_.has_errors() && !had_errors)
-    if (auto* dock = qobject_cast<QDockWidget*>(problems_->parentWidget())) dock->raise();
+  // The compile view is empty while the graph has errors: show what is wrong instead, and the
+  // plan again once they are gone.
+  if (validation_.has_errors() != had_errors) {
+    QWidget* shown = validation_.has_errors() ? static_cast<QWidget*>(problems_) : compile_;
+    if (auto* dock = qobject_cast<QDockWidget*>(shown->parentWidget())) dock->raise();
+  }
   compile_->show_plan(validation_.plan ? &*validation_.plan : nullptr);
   show_selection();
   update_title();
