@@ -46,8 +46,10 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
     diagnostics.sort_by_position();
     throw GraphError(diagnostics.to_string());
   }
-  // The new executor is built before the old one goes, so a failure leaves the last good one.
+  // The new executor is built before the old one goes, so a failure leaves the last good one;
+  // static results the new plan would compute again with the same keys are carried over.
   auto executor = std::make_unique<Executor>(*context_, builtin_kernels(), std::move(*result.plan));
+  if (executor_) executor->adopt_cached_results(*executor_);
   if (!gpu_scene_) gpu_scene_ = std::make_unique<GpuScene>(*context_, executor->submitter());
   executor_ = std::move(executor);
   summary_ = summary;

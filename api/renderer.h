@@ -1,7 +1,8 @@
 // The library API a game uses: load a graph file, render frames of a world into images the
 // host samples or presents. The Renderer compiles the graph against the world's scene summary
-// and the frame size, and compiles again only when either changes; static results (an
-// environment convolution, a lookup table) are cached across frames by the executor.
+// and the frame size, and compiles again only when either (or the graph) changes; static results
+// (an environment convolution, a lookup table) are cached across frames, and across recompiles
+// where their cache keys are unchanged.
 //
 //   lg::Renderer renderer;                          // its own Vulkan device (or the host's)
 //   renderer.load_graph("graphs/deferred.json");    // throws GraphError with every error

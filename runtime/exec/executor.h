@@ -55,6 +55,12 @@ class Executor {
   uint64_t frames_run() const { return frames_; }
   // The next frame runs every static pass again.
   void invalidate_cache();
+  // Takes the results of static passes from `previous`, an executor of an earlier plan (the same
+  // graph recompiled after an edit or for another frame size), where this plan would compute
+  // them again with the same cache keys: the next frame skips them. All or nothing, as caching
+  // is: false, and nothing taken, unless every static pass of this plan ran in `previous` with
+  // its key and wrote resources of the same name and description there. Copies on the GPU.
+  bool adopt_cached_results(Executor& previous);
 
   // Resources by name ("bloom.color", "gtao.ao@previous", "bloom/chain"), between frames.
   // Unknown names throw ExecutorError listing the known ones. After frame N, X holds what

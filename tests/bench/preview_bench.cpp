@@ -1,6 +1,7 @@
 // How soon the editor's live preview shows a parameter edit: the default graph on the default
-// world at 640x360 through RuntimePreview (compile for the edited graph, a new executor, one
-// frame with every static pass, readback to float pixels), with the device already up
+// world at 640x360 through RuntimePreview (compile for the edited graph, a new executor that
+// takes the unchanged static results from the last one, one frame, readback to float pixels),
+// with the device already up
 // as it is in a running editor. Each iteration edits the tone mapper's exposure. The queue hop
 // to the UI thread is not included (microseconds). The target is under 1 s on lavapipe.
 #include <benchmark/benchmark.h>

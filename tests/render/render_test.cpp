@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "api/renderer.h"
+#include "graph/graph_io.h"
 #include "runtime/image/image_file.h"
 #include "runtime/scene/default_world.h"
 #include "tests/runtime/gpu_test.h"
@@ -95,6 +96,37 @@ TEST(Render, DeviceMemoryOfTheDefaultFrameMatchesThePlan) {
   std::cout << "device memory " << stats.device_memory_used / 1048576.0 << " MiB, plan " << planned / 1048576.0
             << " MiB\n";
   EXPECT_NEAR(double(stats.device_memory_used), planned, 0.10 * planned);
+}
+
+// An edit downstream of the environment (the exposure) recompiles the plan; the sky, SH,
+// prefilter and DFG results come across from the last executor (their keys are unchanged), and
+// the frame is the one a fresh renderer makes with the edited graph.
+TEST(Render, ARecompiledPlanKeepsStaticResultsWhoseKeysHold) {
+  World world = default_world();
+  auto edited = [] {
+    Diagnostics d;
+    std::optional<Graph> g = load_graph_file("examples/default.json", d);
+    for (GraphNode& node : g->nodes)
+      if (node.id == "tonemap") node.params.set("exposure", -0.5);
+    return std::move(*g);
+  };
+  Renderer renderer = make_renderer();
+  renderer.load_graph("examples/default.json");
+  renderer.render(world, kFrame);
+  renderer.set_graph(edited());
+  const FrameStats& stats = renderer.render(world, kFrame);
+  for (const PassStats& pass : stats.passes)
+    EXPECT_EQ(pass.cached, pass.name == "sky/render" || pass.name == "sh/project" ||
+                               pass.name == "specular/prefilter" || pass.name == "dfg/integrate")
+        << pass.name;
+  std::vector<float> carried = renderer.read_output();
+  expect_no_validation(renderer);
+
+  Renderer fresh = make_renderer();
+  fresh.set_graph(edited());
+  fresh.render(world, kFrame);
+  EXPECT_EQ(carried, fresh.read_output());
+  expect_no_validation(fresh);
 }
 
 }  // namespace

@@ -1,0 +1,86 @@
+// Executor::adopt_cached_results: static results carried from one executor to the next, so a
+// recompiled plan does not recompute environment convolutions and lookup tables.
+#include <algorithm>
+#include <optional>
+
+#include "runtime/exec/executor.h"
+#include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/plan_barriers.h"
+
+namespace lg {
+namespace {
+
+std::optional<int> find_resource(const Plan& plan, const std::string& name) {
+  for (size_t r = 0; r < plan.resources.size(); ++r)
+    if (plan.resources[r].desc.name == name) return static_cast<int>(r);
+  return std::nullopt;
+}
+
+bool same_shape(const LoweredResource& a, const LoweredResource& b) {
+  return a.kind == b.kind && a.format == b.format && a.width == b.width && a.height == b.height &&
+         a.layers == b.layers && a.mips == b.mips && a.bytes == b.bytes;
+}
+
+// Every mip and layer of `from` into `to` (alike), each left in the layout it is read in.
+void copy_image(VkCommandBuffer cmd, const Image& from, VkImageLayout from_layout, const Image& to,
+                VkImageLayout to_layout) {
+  image_barrier(cmd, from, from_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  image_barrier(cmd, to, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  const ImageDesc& d = from.desc();
+  std::vector<VkImageCopy> regions;
+  for (uint32_t mip = 0; mip < d.mips; ++mip) {
+    VkImageCopy region{};
+    region.srcSubresource = {from.primary_aspect(), mip, 0, d.layers};
+    region.dstSubresource = region.srcSubresource;
+    region.extent = {std::max(d.width >> mip, 1u), std::max(d.height >> mip, 1u), std::max(d.depth >> mip, 1u)};
+    regions.push_back(region);
+  }
+  vkCmdCopyImage(cmd, from.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(),
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(regions.size()), regions.data());
+  image_barrier(cmd, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, from_layout);
+  image_barrier(cmd, to, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, to_layout);
+}
+
+}  // namespace
+
+bool Executor::adopt_cached_results(Executor& previous) {
+  if (previous.frames_ == 0) return false;
+  bool any = false;
+  for (const PlanPass& pass : plan_.passes) {
+    if (!pass.is_static) continue;
+    const auto& theirs = previous.plan_.passes;
+    auto match = std::find_if(theirs.begin(), theirs.end(), [&](const PlanPass& q) {
+      return q.is_static && q.name == pass.name && previous.ran_keys_[&q - theirs.data()] == pass.cache_key;
+    });
+    if (match == theirs.end()) return false;
+    any = true;
+  }
+  if (!any) return false;
+  std::vector<std::pair<int, int>> copies;  // (ours, theirs)
+  for (size_t r = 0; r < plan_.resources.size(); ++r) {
+    const PlanResource& ours = plan_.resources[r];
+    if (ours.desc.lifetime != ResourceLifetime::cached || ours.placement.block < 0) continue;
+    std::optional<int> theirs = find_resource(previous.plan_, ours.desc.name);
+    if (!theirs || !same_shape(ours.desc, previous.plan_.resources[*theirs].desc)) return false;
+    copies.emplace_back(int(r), *theirs);
+  }
+  submitter_.run([&](VkCommandBuffer cmd) {
+    for (auto [r, t] : copies) {
+      PlacedResource& to = memory_.resources[r];
+      const PlacedResource& from = previous.memory_.resources[t];
+      if (auto* image = std::get_if<Image>(&to)) {
+        copy_image(cmd, std::get<Image>(from), vk_layout(previous.layouts_[t]), *image, vk_layout(layouts_[r]));
+      } else if (auto* buffer = std::get_if<Buffer>(&to)) {
+        const VkBufferCopy region{0, 0, buffer->size()};
+        memory_barrier(cmd);
+        vkCmdCopyBuffer(cmd, std::get<Buffer>(from).handle(), buffer->handle(), 1, &region);
+        memory_barrier(cmd);
+      }
+    }
+  });
+  for (size_t p = 0; p < plan_.passes.size(); ++p)
+    if (plan_.passes[p].is_static) ran_keys_[p] = plan_.passes[p].cache_key;
+  return true;
+}
+
+}  // namespace lg
