@@ -23,8 +23,9 @@ CompileView::CompileView(QWidget* parent)
       skipped_(new QTreeWidget(this)),
       timeline_(new TimelineWidget(this)),
       totals_(new QLabel(this)) {
-  passes_->setColumnCount(5);
-  passes_->setHorizontalHeaderLabels({tr("pass"), tr("node type"), tr("queue"), tr("cache"), tr("writes")});
+  passes_->setColumnCount(6);
+  passes_->setHorizontalHeaderLabels(
+      {tr("pass"), tr("node type"), tr("queue"), tr("cache"), tr("GPU ms (preview)"), tr("writes")});
   passes_->horizontalHeader()->setStretchLastSection(true);
   passes_->verticalHeader()->setDefaultSectionSize(22);
   passes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -49,6 +50,17 @@ CompileView::CompileView(QWidget* parent)
   show_plan(nullptr);
 }
 
+void CompileView::show_gpu_times(const std::vector<std::pair<std::string, double>>& pass_ms) {
+  for (int row = 0; row < passes_->rowCount(); ++row) {
+    const QTableWidgetItem* pass = passes_->item(row, 0);
+    QTableWidgetItem* cell = passes_->item(row, 4);
+    if (!pass || !cell) continue;
+    cell->setText(QString());
+    for (const auto& [name, ms] : pass_ms)
+      if (text_of(name) == pass->text()) cell->setText(ms < 0 ? tr("cached") : QString::number(ms, 'f', 2));
+  }
+}
+
 void CompileView::show_plan(const Plan* plan) {
   timeline_->show_plan(plan);
   passes_->setRowCount(0);
@@ -69,7 +81,8 @@ void CompileView::show_plan(const Plan* plan) {
     writes.removeDuplicates();
     const QStringList cells = {text_of(pass.name), text_of(plan->nodes[size_t(pass.node)].type),
                                pass.queue == Queue::graphics ? tr("graphics") : tr("compute"),
-                               pass.is_static ? tr("static") : QStringLiteral("–"), writes.join(QStringLiteral(", "))};
+                               pass.is_static ? tr("static") : QStringLiteral("–"), QString(),
+                               writes.join(QStringLiteral(", "))};
     for (int c = 0; c < cells.size(); ++c) passes_->setItem(int(i), c, new QTableWidgetItem(cells[c]));
   }
   passes_->resizeColumnsToContents();

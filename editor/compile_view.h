@@ -21,6 +21,8 @@ class CompileView : public QWidget {
   explicit CompileView(QWidget* parent = nullptr);
   // Null: the graph does not compile; the view says so and keeps nothing stale.
   void show_plan(const Plan* plan);
+  // Per-pass GPU times of the last preview frame (pass name, ms; negative: skipped as cached).
+  void show_gpu_times(const std::vector<std::pair<std::string, double>>& pass_ms);
 
   QTableWidget* passes() const { return passes_; }
   QTreeWidget* skipped() const { return skipped_; }

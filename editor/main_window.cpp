@@ -291,6 +291,7 @@ void MainWindow::request_preview() {
 void MainWindow::show_preview(const PreviewImage& image, const QString& error, double milliseconds) {
   if (!image.empty()) statusBar()->showMessage(tr("Preview rendered in %1 ms").arg(milliseconds, 0, 'f', 0), 4000);
   preview_->show_image(image, error);
+  if (!image.empty()) compile_->show_gpu_times(image.pass_ms);
   ++previews_shown_;
   emit preview_shown();
 }

@@ -8,6 +8,7 @@
 #include <QSize>
 #include <QString>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "graph/graph.h"
@@ -35,6 +36,9 @@ struct PreviewImage {
   PreviewEncoding encoding = PreviewEncoding::colour;
   int channels = 4;  // of the resource's format: a one-channel image shows as grey
   QString note;      // which part of the resource it is ("face +X"), or empty
+  // GPU time of each pass of the frame it came from (pass name, ms; negative when skipped as
+  // cached), for the compile view.
+  std::vector<std::pair<std::string, double>> pass_ms;
 
   bool empty() const { return rgba.empty(); }
 };

@@ -49,13 +49,14 @@ PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const Previe
     }
     renderer_->set_graph(graph_showing(graph, port));
     const FrameSize frame{uint32_t(std::max(size.width(), 16)), uint32_t(std::max(size.height(), 16))};
-    renderer_->render(*world_, frame);
+    const FrameStats& stats = renderer_->render(*world_, frame);
     Executor& executor = renderer_->executor();
     const std::string& name =
         port.name.empty() ? executor.output_resource("main") : port_resource(executor.plan(), port);
     const LoweredResource& desc = executor.plan().resources[executor.resource_index(name)].desc;
     if (desc.kind == ResourceKind::buffer) throw std::runtime_error("no image preview for buffers (" + name + ")");
     PreviewImage image;
+    for (const PassStats& pass : stats.passes) image.pass_ms.emplace_back(pass.name, pass.cached ? -1.0 : pass.gpu_ms);
     image.width = int(desc.width);
     image.height = int(desc.height);
     image.rgba = executor.read_image(name);                   // mip 0, layer 0

@@ -210,7 +210,7 @@ class FlatPreview : public PreviewRenderer {
   PreviewImage render(const Graph& graph, QSize size, const PreviewPort&, QString*) override {
     nodes = graph.nodes.size();
     renderer_thread = std::this_thread::get_id();
-    PreviewImage image{size.width(), size.height(), {}, PreviewEncoding::display, 4, {}};
+    PreviewImage image{size.width(), size.height(), {}, PreviewEncoding::display, 4, {}, {}};
     image.rgba.assign(size_t(size.width()) * size.height() * 4, 0.5f);
     return image;
   }
@@ -252,6 +252,17 @@ TEST_F(EditorTest, TheRuntimePreviewRendersTheDefaultGraph) {
   QImage darker = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
   ASSERT_FALSE(darker.isNull());
   EXPECT_LT(qGray(darker.pixel(darker.width() / 2, darker.height() / 2)), qGray(image.pixel(image.width() / 2, image.height() / 2)));
+  // The compile view shows the preview frame's GPU times; after an edit downstream of the
+  // environment its static passes came across from the last plan.
+  QTableWidget* passes = window->compile_view()->passes();
+  for (int row = 0; row < passes->rowCount(); ++row) {
+    const QString pass = passes->item(row, 0)->text(), time = passes->item(row, 4)->text();
+    if (passes->item(row, 3)->text() == QStringLiteral("static"))
+      EXPECT_EQ(time, QStringLiteral("cached")) << pass.toStdString();
+    else
+      EXPECT_GE(time.toDouble(), 0.0) << pass.toStdString() << ": '" << time.toStdString() << "'";
+    EXPECT_FALSE(time.isEmpty()) << pass.toStdString();
+  }
 }
 
 // The real preview of ports other than the main output (tests below share it).
