@@ -34,6 +34,10 @@ int main(int argc, char** argv) {
   args.addOption(select);
   const QCommandLineOption no_preview(QStringLiteral("no-preview"), QStringLiteral("Do not render a live preview."));
   args.addOption(no_preview);
+  const QCommandLineOption scene(QStringLiteral("scene"),
+                                 QStringLiteral("Preview on this scene file, glTF or OBJ (default: the built-in world)."),
+                                 QStringLiteral("FILE"));
+  args.addOption(scene);
   args.process(app);
   const QStringList files = args.positionalArguments();
   const bool shoot = args.isSet(screenshot);
@@ -44,7 +48,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   window.show();
-  if (!args.isSet(no_preview)) window.set_preview(std::make_unique<lg::editor::RuntimePreview>());
+  if (!args.isSet(no_preview)) window.set_preview(std::make_unique<lg::editor::RuntimePreview>(args.value(scene).toStdString()));
   if (!shoot) {
     if (files.isEmpty()) window.offer_recovery({});
     return app.exec();

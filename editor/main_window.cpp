@@ -20,6 +20,7 @@
 #include "editor/inspector_widget.h"
 #include "editor/palette.h"
 #include "editor/param_panel.h"
+#include "editor/runtime_preview.h"
 #include "editor/preview_panel.h"
 #include "editor/preview_ports.h"
 #include "graph/asset_paths.h"
@@ -162,6 +163,14 @@ void MainWindow::build_menus() {
     const QString file = QFileDialog::getOpenFileName(this, tr("Environment"), {}, tr("Environments (*.hdr *.exr)"));
     if (!file.isEmpty()) inspector_->open_environment(file);
   });
+  // A new renderer for another world: its device starts afresh, which a scene change can afford.
+  inspect->addAction(tr("Preview &Scene…"), this, [this] {
+    const QString file = QFileDialog::getOpenFileName(this, tr("Preview scene"), {},
+                                                      tr("Scenes (*.json *.gltf *.glb *.obj)"));
+    if (!file.isEmpty()) set_preview(std::make_unique<RuntimePreview>(file.toStdString()));
+  });
+  inspect->addAction(tr("Preview the &Default World"), this,
+                     [this] { set_preview(std::make_unique<RuntimePreview>()); });
 }
 
 void MainWindow::new_graph() {

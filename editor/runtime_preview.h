@@ -1,4 +1,5 @@
-// The live preview on the runtime: compiles the edited graph for the embedded default world,
+// The live preview on the runtime: compiles the edited graph for the embedded default world (or
+// a scene file, glTF or OBJ given at construction),
 // renders one frame with the real kernels (lavapipe, or a GPU when there is one) and reads back
 // the chosen port: the main output, or any node output, which it adds to the graph's outputs
 // so that the node is not culled and its resource lives to the end of the frame (memory
@@ -7,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "editor/preview.h"
 
@@ -19,12 +21,14 @@ namespace lg::editor {
 
 class RuntimePreview : public PreviewRenderer {
  public:
-  RuntimePreview();
+  // `scene`: a file for runtime/scene/load_world.h; empty: the embedded default world.
+  explicit RuntimePreview(std::string scene = {});
   ~RuntimePreview() override;
   PreviewImage render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) override;
 
  private:
   std::unique_ptr<Renderer> renderer_;  // made on first use, on the thread that renders
+  std::string scene_;
   std::unique_ptr<World> world_;
 };
 

@@ -265,6 +265,19 @@ TEST_F(EditorTest, TheRuntimePreviewRendersTheDefaultGraph) {
   }
 }
 
+// A chosen scene instead of the built-in world: the gallery renders, and differently.
+TEST_F(EditorTest, TheRuntimePreviewRendersAChosenScene) {
+  window->set_preview(std::make_unique<RuntimePreview>());
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() >= 1; }, 60000));
+  const QImage built_in = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
+  const int shown = window->previews_shown();
+  window->set_preview(std::make_unique<RuntimePreview>(LUMAGRAPH_SOURCE_DIR "/examples/worlds/gallery.json"));
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() > shown; }, 60000));
+  const QImage gallery = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
+  ASSERT_FALSE(gallery.isNull()) << window->preview_image()->text().toStdString();
+  EXPECT_NE(gallery, built_in);
+}
+
 // The real preview of ports other than the main output (tests below share it).
 class PortPreviewTest : public EditorTest {
  protected:
