@@ -243,9 +243,10 @@ void bench_sh(benchmark::State& state, Probe& probe, ShPoint& point) {
 
 // ---------------------------------------------------------------------------------------------
 // Equal error: the plain curve's time (and sample count) at each filtered point's error,
-// interpolated linearly in log-log between the plain points that bracket it. Where no two do
-// (filtered at 4096 samples is below anything plain reached), the nearest segment of the plain
-// curve is extended, and the row says it is an extrapolation.
+// interpolated linearly in log-log between the plain points where the plain curve last comes
+// down through that error (on the probes it is not monotonic: at few samples it misses the sun
+// and is low by luck). Beyond the plain curve's ends, its nearest point is extended at the Monte
+// Carlo rate (error ~ 1 / sqrt(samples), time ~ samples), and the row says it is extrapolated.
 
 struct EqualError {
   std::string env;
@@ -265,15 +266,27 @@ std::vector<EqualError> equal_error(const std::vector<PrefilterPoint>& points) {
     if (plain.size() < 2) continue;
     for (int k = 0; k < 3; ++k) {
       EqualError row{f.env, prefilter_roughness(kLevels[k], kPrefilterMips), f.samples, f.rms[k], median(f.times_ms)};
-      size_t p = 0;  // the segment: bracketing, else the first or the last
-      while (p + 2 < plain.size() && row.error < plain[p + 1]->rms[k]) ++p;
-      const double e0 = plain[p]->rms[k], e1 = plain[p + 1]->rms[k];
-      if (!(e1 < e0)) continue;  // no decrease to interpolate along
-      row.extrapolated = row.error > e0 || row.error < e1;
-      const double s = std::log(row.error / e0) / std::log(e1 / e0);
-      const auto along = [&](double a, double b) { return std::exp(std::log(a) + s * (std::log(b) - std::log(a))); };
-      row.plain_ms = along(median(plain[p]->times_ms), median(plain[p + 1]->times_ms));
-      row.plain_samples = along(plain[p]->samples, plain[p + 1]->samples);
+      const auto at_monte_carlo_rate = [&](const PrefilterPoint& from) {
+        const double scale = std::pow(from.rms[k] / row.error, 2.0);
+        row.plain_ms = median(from.times_ms) * scale;
+        row.plain_samples = from.samples * scale;
+        row.extrapolated = true;
+      };
+      size_t p = plain.size() - 1;  // the last segment [p - 1, p] that brackets the error
+      while (p > 0 && !(plain[p - 1]->rms[k] >= row.error && plain[p]->rms[k] <= row.error)) --p;
+      if (p > 0) {
+        const PrefilterPoint &a = *plain[p - 1], &b = *plain[p];
+        const double s = a.rms[k] == b.rms[k] ? 0.0 : std::log(row.error / a.rms[k]) / std::log(b.rms[k] / a.rms[k]);
+        const auto along = [&](double x, double y) { return std::exp(std::log(x) + s * (std::log(y) - std::log(x))); };
+        row.plain_ms = along(median(a.times_ms), median(b.times_ms));
+        row.plain_samples = along(a.samples, b.samples);
+      } else if (row.error < plain.back()->rms[k]) {
+        at_monte_carlo_rate(*plain.back());
+      } else if (row.error > plain.front()->rms[k]) {
+        at_monte_carlo_rate(*plain.front());
+      } else {
+        continue;  // only reached through non-monotonic points: no comparison
+      }
       rows.push_back(row);
     }
   }
