@@ -56,6 +56,8 @@ constexpr int kShOrders[] = {1, 2, 3, 4};
 constexpr int kErrorTexels = 150;      // per roughness, as the accuracy test
 constexpr int kErrorDirections = 200;  // for the SH irradiance
 
+// No validation layer: the timings are of the driver, not of the layer's checks (the accuracy
+// tests run the same passes with it on).
 struct Gpu {
   Context context{ContextOptions{}};
   Submitter submitter{context};
@@ -114,7 +116,8 @@ struct Probe {
 
 std::vector<std::unique_ptr<Probe>> load_probes() {
   std::vector<std::unique_ptr<Probe>> probes;
-  probes.push_back(std::make_unique<Probe>(Probe{"random", test::round_to_half(test::random_environment(kFace, 500)), {}, {}, {}}));
+  probes.push_back(
+      std::make_unique<Probe>(Probe{"random", test::round_to_half(test::random_environment(kFace, 500)), {}, {}, {}}));
   for (const char* name : {"grace.hdr", "pisa.hdr"}) {
     std::optional<CubeImage> env = test::load_probe(name, kFace);
     if (env)
@@ -145,7 +148,9 @@ void time_runs(benchmark::State& state, const std::function<void(VkCommandBuffer
   }
 }
 
-const char* sampling_name(PrefilterSampling s) { return s == PrefilterSampling::filtered ? "filtered" : "plain"; }
+const char* sampling_name(PrefilterSampling s) {
+  return s == PrefilterSampling::filtered ? "filtered" : "plain";
+}
 
 struct PrefilterPoint {
   std::string env;
@@ -214,7 +219,8 @@ void bench_sh(benchmark::State& state, Probe& probe, ShPoint& point) {
   std::memcpy(values.data(), bytes.data(), values.size() * sizeof(float));
   std::vector<glm::dvec3> sh;
   for (int k = 0; k < count; ++k) sh.emplace_back(values[4 * k], values[4 * k + 1], values[4 * k + 2]);
-  const std::vector<glm::dvec3> reference = project_sh_reference(probe.env, point.order, settings.band_factors).coefficients;
+  const std::vector<glm::dvec3> reference =
+      project_sh_reference(probe.env, point.order, settings.band_factors).coefficients;
 
   probe.irradiance_references();
   double truncation = 0, implementation = 0;
@@ -297,11 +303,12 @@ std::vector<EqualError> equal_error(const std::vector<PrefilterPoint>& points) {
 
 void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& prefilter,
                      const std::vector<EqualError>& equal, const std::vector<ShPoint>& sh) {
-  std::printf("\nSpecular prefilter, 128^2 output with 5 mips (all mips timed), RMS relative error over %d random\n"
-              "texels per roughness against the double-precision brute force:\n",
-              kErrorTexels);
-  std::printf("%-10s %-9s %7s %10s %8s %9s %9s %9s\n", "env", "sampling", "samples", "median ms", "min ms",
-              "r=0.25", "r=0.5", "r=1");
+  std::printf(
+      "\nSpecular prefilter, 128^2 output with 5 mips (all mips timed), RMS relative error over %d random\n"
+      "texels per roughness against the double-precision brute force:\n",
+      kErrorTexels);
+  std::printf("%-10s %-9s %7s %10s %8s %9s %9s %9s\n", "env", "sampling", "samples", "median ms", "min ms", "r=0.25",
+              "r=0.5", "r=1");
   std::ofstream csv(dir + "/env_prefilter.csv");
   csv << "env,sampling,samples,median_ms,min_ms,runs,rms_r0.25,rms_r0.5,rms_r1\n";
   for (const PrefilterPoint& p : prefilter) {
@@ -312,12 +319,14 @@ void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& 
         << p.times_ms.size() << ',' << p.rms[0] << ',' << p.rms[1] << ',' << p.rms[2] << '\n';
   }
 
-  std::printf("\nEqual error: plain importance sampling's time and samples at the filtered point's error\n"
-              "(log-log interpolation; '~' extrapolated beyond the plain curve's points):\n");
-  std::printf("%-10s %5s %7s %9s %11s %10s %13s %9s %9s\n", "env", "r", "samples", "error", "filtered ms",
-              "plain ms", "plain samples", "time x", "samples x");
+  std::printf(
+      "\nEqual error: plain importance sampling's time and samples at the filtered point's error\n"
+      "(log-log interpolation; '~' extrapolated beyond the plain curve's points):\n");
+  std::printf("%-10s %5s %7s %9s %11s %10s %13s %9s %9s\n", "env", "r", "samples", "error", "filtered ms", "plain ms",
+              "plain samples", "time x", "samples x");
   std::ofstream eq(dir + "/env_prefilter_equal_error.csv");
-  eq << "env,roughness,filtered_samples,error,filtered_ms,plain_ms,plain_samples,time_ratio,sample_ratio,extrapolated\n";
+  eq << "env,roughness,filtered_samples,error,filtered_ms,plain_ms,plain_samples,time_ratio,sample_ratio,"
+        "extrapolated\n";
   for (const EqualError& e : equal) {
     const char* gt = e.extrapolated ? "~" : " ";
     std::printf("%-10s %5.2f %7u %8.3f%% %11.2f %s%9.2f %s%12.0f %s%8.1f %s%8.1f\n", e.env.c_str(), e.roughness,
@@ -328,11 +337,12 @@ void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& 
        << e.plain_samples / e.filtered_samples << ',' << (e.extrapolated ? 1 : 0) << '\n';
   }
 
-  std::printf("\nSH projection of a 128^2 cube, cosine-convolved (irradiance), over %d random directions:\n"
-              "truncation = SH irradiance (double precision) vs brute-force irradiance, relative RMS;\n"
-              "implementation = GPU SH irradiance vs double-precision SH irradiance, RMS relative to E;\n"
-              "coefficients = max |GPU - reference| / coefficient norm.\n",
-              kErrorDirections);
+  std::printf(
+      "\nSH projection of a 128^2 cube, cosine-convolved (irradiance), over %d random directions:\n"
+      "truncation = SH irradiance (double precision) vs brute-force irradiance, relative RMS;\n"
+      "implementation = GPU SH irradiance vs double-precision SH irradiance, RMS relative to E;\n"
+      "coefficients = max |GPU - reference| / coefficient norm.\n",
+      kErrorDirections);
   std::printf("%-10s %5s %10s %8s %11s %15s %13s\n", "env", "order", "median ms", "min ms", "truncation",
               "implementation", "coefficients");
   std::ofstream shcsv(dir + "/env_sh.csv");
@@ -341,15 +351,16 @@ void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& 
     const double med = median(p.times_ms), min = *std::min_element(p.times_ms.begin(), p.times_ms.end());
     std::printf("%-10s %5d %10.3f %8.3f %10.3f%% %14.2e %13.2e\n", p.env.c_str(), p.order, med, min,
                 100 * p.truncation_rms, p.implementation_rms, p.coefficient_error);
-    shcsv << p.env << ',' << p.order << ',' << med << ',' << min << ',' << p.times_ms.size() << ','
-          << p.truncation_rms << ',' << p.implementation_rms << ',' << p.coefficient_error << '\n';
+    shcsv << p.env << ',' << p.order << ',' << med << ',' << min << ',' << p.times_ms.size() << ',' << p.truncation_rms
+          << ',' << p.implementation_rms << ',' << p.coefficient_error << '\n';
   }
 }
 
 const char* const usage =
     "usage: lumagraph-bench-env [--results-dir DIR] [--runs N] [--benchmark_filter=REGEX ...]\n"
     "  --results-dir DIR  where the CSV files go (default bench-results)\n"
-    "  --runs N           timed runs per point, after one discarded run (default 7); the median is reported\n";
+    "  --runs N           timed runs per point, after one discarded run (default 7); the median is reported\n"
+    "Run from the repository root: the probes are read from ../shared/data/env.\n";
 
 int run(int argc, char** argv) {
   std::string results_dir = "bench-results";
@@ -410,4 +421,6 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace lg::bench
 
-int main(int argc, char** argv) { return lg::bench::run(argc, argv); }
+int main(int argc, char** argv) {
+  return lg::bench::run(argc, argv);
+}
