@@ -40,7 +40,7 @@ class SpecularPrefilterGpuTest : public GpuTest {
     submitter().run([&](VkCommandBuffer cmd) {
       image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
       record_specular_prefilter(context(), pipelines(), cmd, "specular/prefilter", samples, source, trilinear.handle(),
-                                out);
+                                out, PrefilterSampling::filtered);
       memory_barrier(cmd);
     });
     std::vector<CubeImage> result;

@@ -16,6 +16,7 @@ constexpr uint32_t kGroup = 8;
 struct Push {  // nodes/env/specular_prefilter/shaders/prefilter.comp
   float roughness;
   uint32_t samples;
+  uint32_t filtered;
 };
 
 class SpecularPrefilterKernel final : public NodeKernel {
@@ -24,7 +25,7 @@ class SpecularPrefilterKernel final : public NodeKernel {
 
   void record(PassContext& ctx) override {
     record_specular_prefilter(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, samples_, ctx.image("in.env"),
-                              ctx.linear_sampler(), ctx.image("out.specular"));
+                              ctx.linear_sampler(), ctx.image("out.specular"), PrefilterSampling::filtered);
   }
 
  private:
@@ -34,7 +35,8 @@ class SpecularPrefilterKernel final : public NodeKernel {
 }  // namespace
 
 void record_specular_prefilter(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
-                               uint32_t samples, Image& env, VkSampler trilinear, Image& prefiltered) {
+                               uint32_t samples, Image& env, VkSampler trilinear, Image& prefiltered,
+                               PrefilterSampling sampling) {
   const Pipeline& pipeline =
       pipelines.compute({name,
                          node_shader("nodes/env/specular_prefilter/shaders/prefilter.comp"),
@@ -48,7 +50,8 @@ void record_specular_prefilter(Context& gpu, PipelineCache& pipelines, VkCommand
         storage_image(1, prefiltered.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1}))};
     bind_pipeline(gpu, cmd, pipeline, writes);
     push_constants(cmd, pipeline,
-                   Push{float(prefilter_roughness(mip, mips)), std::clamp(samples, 1u, kMaxPrefilterSamples)});
+                   Push{float(prefilter_roughness(mip, mips)), std::clamp(samples, 1u, kMaxPrefilterSamples),
+                        sampling == PrefilterSampling::filtered ? 1u : 0u});
     vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
   }
 }

@@ -21,10 +21,15 @@ inline double prefilter_roughness(uint32_t mip, uint32_t mips) {
   return mips > 1 ? double(mip) / (mips - 1) : 0.0;
 }
 
+// filtered: each sample reads the mip matching its solid angle (what the node does); plain_mip0:
+// every sample reads mip 0 (plain GGX importance sampling, the benchmark's baseline).
+enum class PrefilterSampling { filtered, plain_mip0 };
+
 // Records every mip of `prefiltered` (rgba16f cube, in GENERAL) from `env` (a cube map with its
 // mips, in READ_ONLY_OPTIMAL), read through `trilinear`.
 void record_specular_prefilter(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
-                               uint32_t samples, Image& env, VkSampler trilinear, Image& prefiltered);
+                               uint32_t samples, Image& env, VkSampler trilinear, Image& prefiltered,
+                               PrefilterSampling sampling);
 
 std::unique_ptr<NodeKernel> make_specular_prefilter_kernel(const PlanNode& node);
 

@@ -6,7 +6,8 @@
 // texels match the sample's solid angle 1 / (samples pdf) (filtered importance sampling,
 // Krivanek and Colbert, without their +1 bias: against the brute force it doubled the error,
 // 32% against 15% RMS on grace.hdr at 64 samples; -0.5 helps at 64 samples and hurts at 256). Roughness 0 reads the environment along n at the
-// mip whose texels match the output's. Non-finite radiance counts as 0.
+// mip whose texels match the output's. Non-finite radiance counts as 0. `filtered` = 0 reads
+// mip 0 only (plain GGX importance sampling), the baseline the benchmark compares against.
 #include "nodes/common/shaders/brdf.glsl"
 #include "nodes/env/common/shaders/cube_map.glsl"
 #include "nodes/env/common/shaders/ggx_sampling.glsl"
@@ -18,6 +19,7 @@ layout(binding = 1, rgba16f) uniform writeonly image2DArray prefiltered_mip;
 layout(push_constant) uniform Push {
   float roughness;  // perceptual; alpha = roughness^2
   uint samples;
+  uint filtered;  // 1: filtered importance sampling (the node); 0: mip 0 only
 };
 
 vec3 finite_or_zero(vec3 c) {
@@ -50,7 +52,7 @@ void main() {
       // pdf(l) = D (n.h) / (4 v.h) = D / 4 with v = n.
       float pdf = ggx_distribution(h_local.z, alpha) * 0.25;
       float sample_solid_angle = 1.0 / (float(samples) * pdf);
-      float lod = max(0.5 * log2(sample_solid_angle / texel_solid_angle), 0.0);
+      float lod = filtered != 0u ? max(0.5 * log2(sample_solid_angle / texel_solid_angle), 0.0) : 0.0;
       sum += finite_or_zero(textureLod(env, l, lod).rgb) * n_dot_l;
       weight += n_dot_l;
     }
