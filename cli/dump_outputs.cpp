@@ -49,7 +49,7 @@ void dump_buffer(Executor& executor, const PlanResource& r, const fs::path& dir)
   JsonValue items = JsonValue::array();
   const bool vec4 = r.desc.format == "buffer" && r.desc.bytes % 16 == 0 && r.desc.bytes > 4;
   if (vec4) {
-    doc.set("layout", "one [r, g, b, unused] per SH coefficient, index l * (l + 1) + m (docs/graph-format.md)");
+    doc.set("layout", "one [r, g, b, w] per real SH coefficient, index l (l + 1) + m, orthonormal, no Condon-Shortley phase, +Z polar; coefficient 0's w counts non-finite texels (docs/env-conventions.md)");
     for (size_t i = 0; i + 3 < values.size(); i += 4) {
       JsonValue v = JsonValue::array();
       for (int c = 0; c < 4; ++c) v.push(double(values[i + c]));

@@ -76,7 +76,12 @@ std::vector<float> render_file(const QString& path) {
   return renderer.read_output();
 }
 
+// Saved into a folder of its own, as a project is: the example's assets (paths in params are
+// relative to the graph) go with it.
 TEST_F(FilesTest, EveryExampleEditedUndoneAndSavedRendersTheSameImage) {
+  ASSERT_TRUE(QDir(dir.path()).mkpath(QStringLiteral("environments")));
+  for (const QString& asset : QDir(example("environments")).entryList(QDir::Files))
+    ASSERT_TRUE(QFile::copy(example("environments/") + asset, dir.filePath("environments/" + asset)));
   for (const QString& name : QDir(example("")).entryList({"*.json"}, QDir::Files)) {
     SCOPED_TRACE(name.toStdString());
     ASSERT_TRUE(window->open_file(example(name)));
