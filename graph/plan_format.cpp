@@ -13,11 +13,6 @@ std::string hex(uint64_t v) {
   return buf;
 }
 
-std::string_view state_name(NodeState::Kind k) {
-  constexpr std::string_view names[] = {"active", "bypassed", "culled"};
-  return names[static_cast<int>(k)];
-}
-
 std::string_view queue_name(Queue q) {
   return q == Queue::compute ? "compute" : "graphics";
 }
@@ -66,7 +61,7 @@ JsonValue plan_to_json(const Plan& plan) {
     JsonValue& node = nodes.push(JsonValue::object());
     node.set("id", n.id);
     node.set("type", n.type);
-    node.set("state", std::string(state_name(n.state)));
+    node.set("state", std::string(node_state_name(n.state)));
     if (!n.reason.empty()) node.set("reason", n.reason);
     if (!n.dropped.empty()) {
       JsonValue& dropped = node.set("dropped_passes", JsonValue::object());
@@ -183,7 +178,7 @@ std::string plan_to_dot(const Plan& plan) {
     const PlanNode& node = plan.nodes[n];
     if (node.state == NodeState::Kind::active) continue;
     out += "  skipped" + std::to_string(n) + " [shape=box, style=dashed, fontcolor=gray40, label=" +
-           json_quote(node.id + " (" + std::string(state_name(node.state)) + ")\n" + node.reason) + "];\n";
+           json_quote(node.id + " (" + std::string(node_state_name(node.state)) + ")\n" + node.reason) + "];\n";
   }
   return out + "}\n";
 }

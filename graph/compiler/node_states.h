@@ -20,4 +20,10 @@ struct NodeState {
 
 using NodeStates = std::vector<NodeState>;
 
+// "active", "bypassed", "culled": as plans, dumps and frame statistics write them.
+inline std::string_view node_state_name(NodeState::Kind k) {
+  constexpr std::string_view names[] = {"active", "bypassed", "culled"};
+  return names[static_cast<int>(k)];
+}
+
 }  // namespace lg

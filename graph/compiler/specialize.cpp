@@ -39,12 +39,11 @@ NodeStates specialize(const ResolvedGraph& resolved, const SceneSummary& scene) 
 }
 
 JsonValue dump_node_states(const ResolvedGraph& resolved, const NodeStates& states) {
-  static constexpr const char* kind_names[] = {"active", "bypassed", "culled"};
   JsonValue out = JsonValue::array();
   for (size_t n = 0; n < states.size(); ++n) {
     JsonValue& node = out.push(JsonValue::object());
     node.set("id", resolved.graph->nodes[n].id);
-    node.set("state", kind_names[static_cast<int>(states[n].kind)]);
+    node.set("state", std::string(node_state_name(states[n].kind)));
     if (!states[n].reason.empty()) node.set("reason", states[n].reason);
     for (size_t p = 0; p < states[n].dropped_passes.size(); ++p)
       if (!states[n].dropped_passes[p].empty())

@@ -18,10 +18,6 @@ std::string pad(std::string s, size_t width) {
   return s;
 }
 
-std::string_view state_name(NodeState::Kind k) {
-  return k == NodeState::Kind::culled ? "culled" : "bypassed";
-}
-
 }  // namespace
 
 FrameStats plan_stats(const Plan& plan) {
@@ -57,7 +53,7 @@ JsonValue frame_stats_json(const FrameStats& stats) {
     JsonValue& node = nodes.push(JsonValue::object());
     node.set("id", n.id);
     node.set("type", n.type);
-    node.set("state", std::string(state_name(n.state)));
+    node.set("state", std::string(node_state_name(n.state)));
     node.set("reason", n.reason);
   }
   JsonValue& dropped = root.set("dropped_passes", JsonValue::array());

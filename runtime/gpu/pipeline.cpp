@@ -114,6 +114,16 @@ void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
+VkRenderingAttachmentInfo cleared_attachment(VkImageView view, VkClearValue clear) {
+  auto a = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  a.imageView = view;
+  a.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.clearValue = clear;
+  return a;
+}
+
 PipelineCache::PipelineCache(Context& context) : context_(context) {}
 
 PipelineCache::~PipelineCache() {

@@ -61,6 +61,9 @@ struct Pipeline {
 // Graphics pipelines take viewport and scissor as dynamic state: the whole target's.
 void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height);
 
+// A render target of dynamic rendering, in ATTACHMENT_OPTIMAL, cleared to `clear` and stored.
+VkRenderingAttachmentInfo cleared_attachment(VkImageView view, VkClearValue clear = {});
+
 class PipelineCache {
  public:
   explicit PipelineCache(Context& context);

@@ -160,11 +160,7 @@ class RasterKernel final : public NodeKernel {
                               {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
     desc.color_formats = {target.desc().format};
     const Pipeline& p = pc.pipelines().graphics(desc);
-    auto color = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-    color.imageView = target.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingAttachmentInfo color = cleared_attachment(target.view());
     const uint32_t w = target.desc().width, h = target.desc().height;
     auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     rendering.renderArea = {{0, 0}, {w, h}};

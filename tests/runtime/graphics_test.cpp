@@ -21,16 +21,6 @@ struct Constants {
   float depth;
 };
 
-VkRenderingAttachmentInfo attachment(VkImageView view, VkClearValue clear) {
-  auto a = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  a.imageView = view;
-  a.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
-  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  a.clearValue = clear;
-  return a;
-}
-
 TEST_F(GraphicsTest, DrawsAFullScreenPassWithDepth) {
   const uint32_t w = 64, h = 32;
   Image color = Image::dedicated(context(), {.name = "color", .format = vk_format("rgba16f"), .width = w, .height = h});
@@ -57,8 +47,8 @@ TEST_F(GraphicsTest, DrawsAFullScreenPassWithDepth) {
                  depth);
     barriers.record(cmd);
 
-    VkRenderingAttachmentInfo color_attachment = attachment(color.view(), {});
-    VkRenderingAttachmentInfo depth_attachment = attachment(depth.view(), {.depthStencil = {0.0f, 0}});
+    VkRenderingAttachmentInfo color_attachment = cleared_attachment(color.view(), {});
+    VkRenderingAttachmentInfo depth_attachment = cleared_attachment(depth.view(), {.depthStencil = {0.0f, 0}});
     auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     rendering.renderArea = {{0, 0}, {w, h}};
     rendering.layerCount = 1;

@@ -141,12 +141,8 @@ class DeferredKernel final : public NodeKernel {
     constants_.shadow = glm::vec4(1.0f / float(size), 1.0f, 1.5f * world_per_texel, 2.0f / float(size));
     shadow_drawn_ = true;
 
-    auto depth = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-    depth.imageView = map.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {0.0f, 0};  // reversed: 0 is farthest from the light
+    // Reversed depth: 0 is farthest from the light.
+    VkRenderingAttachmentInfo depth = cleared_attachment(map.view(), {.depthStencil = {0.0f, 0}});
     auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     rendering.renderArea = {{0, 0}, {size, size}};
     rendering.layerCount = 1;

@@ -23,16 +23,6 @@ struct DrawConstants {  // nodes/scene/gbuffer/shaders/draw.glsl
   glm::vec4 base_color, material;
 };
 
-VkRenderingAttachmentInfo cleared(VkImageView view, VkClearValue clear) {
-  auto a = vk_struct<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  a.imageView = view;
-  a.imageLayout = VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL;
-  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  a.clearValue = clear;
-  return a;
-}
-
 std::vector<DrawConstants> draw_constants(const SceneView& scene) {
   std::vector<DrawConstants> out;
   out.reserve(scene.draws.size());
@@ -61,9 +51,9 @@ class GbufferKernel final : public NodeKernel {
     draws_->write(draw_constants(scene));
 
     VkRenderingAttachmentInfo colors[4];
-    for (int c = 0; c < 4; ++c) colors[c] = cleared(targets[c + 1]->view(), {});
+    for (int c = 0; c < 4; ++c) colors[c] = cleared_attachment(targets[c + 1]->view(), {});
     VkRenderingAttachmentInfo depth =
-        cleared(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
+        cleared_attachment(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
     auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
     rendering.renderArea = {{0, 0}, {w, h}};
     rendering.layerCount = 1;
