@@ -34,7 +34,8 @@ options:
   --stats FILE        write the last frame's per-pass GPU times and memory as JSON
   --device NAME       the GPU whose name contains NAME (default: the first suitable)
   --validate          run with the Vulkan validation layer; any message fails the run
-  --asset-root DIR    allow file paths in params under DIR (repeatable)
+  --asset-root DIR    allow file paths in params and in the scene file under DIR
+                      (repeatable; the scene file's own folder stays allowed)
   --no-alias          give every transient resource its own memory
 
 exit status: 0 rendered, 1 usage error, 2 invalid graph or scene, 3 the GPU or a node failed
@@ -46,6 +47,15 @@ ArgSpec render_arg_spec() {
   return {{"--help", "--validate", "--no-alias"},
           {"--scene", "--env", "--size", "--frames", "--out", "--dump", "--stats", "--device", "--asset-root"},
           {"--asset-root"}};
+}
+
+// A scene file's paths may point into its own folder and into every --asset-root.
+WorldLoadOptions scene_load_options(const Args& args) {
+  WorldLoadOptions options;
+  options.asset_roots.roots = args.values("--asset-root");
+  if (!options.asset_roots.roots.empty())
+    options.asset_roots.roots.push_back(std::filesystem::absolute(*args.value("--scene")).parent_path().string());
+  return options;
 }
 
 // Points every env.load node at `path`, and allows its folder as an asset root.
@@ -101,7 +111,7 @@ int render_command(const std::vector<std::string>& argv) {
 
   World world;
   try {
-    world = args->value("--scene") ? load_world(*args->value("--scene")) : default_world();
+    world = args->value("--scene") ? load_world(*args->value("--scene"), scene_load_options(*args)) : default_world();
   } catch (const SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid;

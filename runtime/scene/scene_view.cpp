@@ -2,6 +2,12 @@
 
 namespace lg {
 
+const PbrMaterial& SceneView::material_of(const DrawItem& draw) const {
+  static const PbrMaterial default_material;
+  const bool valid = draw.material >= 0 && static_cast<size_t>(draw.material) < materials.size();
+  return valid ? materials[static_cast<size_t>(draw.material)] : default_material;
+}
+
 SceneSummary SceneView::summary() const {
   SceneSummary s;
   s.name = name;
@@ -15,12 +21,10 @@ SceneSummary SceneView::summary() const {
   s.environment = has_environment;
   s.irradiance_volumes = irradiance_volumes;
   s.reflection_probes = reflection_probes;
-  // Only the materials something is drawn with; a draw without one uses the default material.
+  // Only the materials something is drawn with.
   s.glossy_materials = false;
-  const PbrMaterial default_material;
   for (const auto& d : draws) {
-    bool valid = d.material >= 0 && static_cast<size_t>(d.material) < materials.size();
-    const PbrMaterial& m = valid ? materials[static_cast<size_t>(d.material)] : default_material;
+    const PbrMaterial& m = material_of(d);
     s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f;
   }
   s.aperture = camera.aperture;

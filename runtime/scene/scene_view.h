@@ -44,7 +44,7 @@ struct PbrMaterial {
 
 struct DrawItem {
   int mesh = -1;      // index into SceneView::meshes
-  int material = -1;  // index into SceneView::materials
+  int material = -1;  // index into SceneView::materials; -1: the default PbrMaterial
   glm::mat4 world{1.0f};
   glm::mat4 previous_world{1.0f};  // last frame's, for motion vectors
   uint64_t entity = 0;             // Entity::id() of its world entity: matches draws across frames
@@ -119,6 +119,10 @@ struct SceneView {
   EnvironmentData environment;
   int irradiance_volumes = 0, reflection_probes = 0;
   float exposure = 0.0f;  // EV from the world's PostProcessSettings
+
+  // The draw's material, or the default PbrMaterial when it has none (material -1, which the ECS
+  // uses for "default") or an index out of range.
+  const PbrMaterial& material_of(const DrawItem& draw) const;
 
   // What the compiler specializes on: counts of each light kind, probes, glossy materials
   // (any drawn with roughness below 0.9 or any metal; a draw without a material counts as the

@@ -67,6 +67,31 @@ TEST(RenderCli, BrokenGraphGetsLocatedErrors) {
   EXPECT_TRUE(contains(r.err, "did you mean 'scene.gbuffer'")) << r.err;
 }
 
+// A scene whose mesh lies outside the scene's folder renders once --asset-root allows that folder,
+// as the refusal's message says; the scene's own folder stays allowed beside it.
+TEST(RenderCli, AssetRootAllowsSceneFilePaths) {
+  TempDir dir;
+  fs::create_directories(dir.path() / "meshes");
+  fs::create_directories(dir.path() / "scenes");
+  write_text(dir.file("meshes/tri.obj"), "v -1 0 -1\nv 1 0 -1\nv 0 0 1\nf 1 3 2\n");
+  write_text(dir.file("scenes/world.json"),
+             "{ \"format\": \"lumagraph-world/1\", \"entities\": [ { \"name\": \"tri\", \"model\": "
+             "\"../meshes/tri.obj\" } ] }");
+  const std::vector<std::string> render = {
+      "render", "examples/minimal.json", "--scene", dir.file("scenes/world.json"), "--size", "32x18",
+      "--out",  dir.file("x.png")};
+  Outcome refused = lumagraph(render);
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "world.json:1:")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "pass --asset-root")) << refused.err;
+
+  std::vector<std::string> allowed = render;
+  allowed.insert(allowed.end(), {"--asset-root", dir.file("meshes")});
+  Outcome r = lumagraph(allowed);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir.file("x.png")));
+}
+
 TEST(RenderCli, BadOptionsAreUsageErrors) {
   for (std::vector<std::string> args : {std::vector<std::string>{"render", "--frames", "0"},
                                         {"render", "--size", "12x"},

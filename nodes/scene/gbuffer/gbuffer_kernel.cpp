@@ -27,7 +27,7 @@ std::vector<DrawConstants> draw_constants(const SceneView& scene) {
   std::vector<DrawConstants> out;
   out.reserve(scene.draws.size());
   for (const DrawItem& d : scene.draws) {
-    const PbrMaterial& m = scene.materials.at(d.material);
+    const PbrMaterial& m = scene.material_of(d);
     out.push_back({d.world, d.previous_world, glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world)))), m.base_color,
                    glm::vec4(m.roughness, m.metalness, 0.0f, 0.0f)});
   }
@@ -68,7 +68,7 @@ class GbufferKernel final : public NodeKernel {
     GpuScene& gpu_scene = ctx.gpu_scene();
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       const DrawItem& d = scene.draws[i];
-      const int texture = scene.materials.at(d.material).base_color_texture;
+      const int texture = scene.material_of(d).base_color_texture;
       Image& base_color = texture >= 0 ? gpu_scene.texture(texture) : gpu_scene.white_texture();
       const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
                                         sampled_image(2, base_color.view(), ctx.linear_sampler())};
