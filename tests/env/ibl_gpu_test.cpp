@@ -1,11 +1,11 @@
 // lighting.ibl's pass on lavapipe against its formulas in double precision, on a random
-// G-buffer (fixed seeds) with random SH irradiance, a prefiltered map whose mips are distinct
+// G-buffer (fixed seeds) with random SH irradiance of order 4, a prefiltered map whose mips are distinct
 // constants (so the roughness-to-mip lookup is checked), the DFG reference table, direct light
 // and AO (Lagarde's specular occlusion); with random bent normals and visibility cones as well
 // (the cone folded into the SH lobe, cone-cone specular occlusion, multi-bounce); also with
 // every optional input unlinked and an irradiance map; a white furnace; and the sky behind
-// pixels with no surface. Tolerance 6e-3 of the pixel's largest channel (measured 1.9e-3 with
-// AO, 1.8e-3 with cones, 2.8e-3 with the irradiance map; 4.8e-3 on a rough metal in an
+// pixels with no surface. Tolerance 6e-3 of the pixel's largest channel (measured 1.7e-3 with
+// AO, 2.0e-3 with cones, 2.8e-3 with the irradiance map; 4.8e-3 on a rough metal in an
 // earlier draw): rgba16f output (4.9e-4), lavapipe's
 // mip fraction of 4 bits (mipmapPrecisionBits; mips 10% apart: up to 3.1e-3 of the specular),
 // 8-bit filter weights across the DFG table's texels; the cone formulas in float add little
@@ -63,7 +63,7 @@ struct Scene {
   CameraConstants camera;
   std::vector<float> depth, normal, albedo, material, direct, ao;
   std::vector<float> bent;     // rgba8_snorm as stored: bent normal, cone cosine
-  std::vector<glm::dvec3> sh;  // irradiance coefficients, order 2
+  std::vector<glm::dvec3> sh;  // irradiance coefficients, order 4
   glm::dvec3 specular_base{1.0, 0.8, 0.6};
   std::vector<float> lut;  // rg16f as stored
 };
@@ -104,9 +104,11 @@ Scene make_scene(uint64_t seed, bool furnace) {
   s.material = stored(VK_FORMAT_R8G8_UNORM, s.material);
   s.direct = stored(VK_FORMAT_R16G16B16A16_SFLOAT, s.direct);
   s.ao = stored(VK_FORMAT_R8_UNORM, s.ao);
-  s.sh.assign(9, glm::dvec3(0.0));
+  // Order 4, as irradiance: band 3 is 0 (the cosine lobe has none).
+  s.sh.assign(25, glm::dvec3(0.0));
   s.sh[0] = glm::dvec3(6.0, 5.0, 4.0);
-  for (int k = 1; k < 9; ++k) s.sh[k] = glm::dvec3(normal(rng), normal(rng), normal(rng)) * 0.5;
+  for (int k = 1; k < 25; ++k)
+    if (k < 9 || k >= 16) s.sh[k] = glm::dvec3(normal(rng), normal(rng), normal(rng)) * (k < 9 ? 0.5 : 0.1);
   if (furnace) s.specular_base = glm::dvec3(1.5, 1.5, 1.5);
   for (uint32_t j = 0; j < kLut; ++j)
     for (uint32_t i = 0; i < kLut; ++i) {
@@ -231,7 +233,7 @@ class IblGpuTest : public GpuTest {
     glm::dvec3 occlusion;
     for (int c = 0; c < 3; ++c) occlusion[c] = multi_bounce_occlusion(ao, diffuse_color[c]);
     const glm::dvec3 r = glm::reflect(-v, n);
-    return direct + diffuse_unoccluded * cone_lobe_irradiance(s.sh, bent, cone_cos, 1.0) * occlusion +
+    return direct + diffuse_unoccluded * cone_lobe_irradiance(s.sh, n, bent, cone_cos, 1.0) * occlusion +
            specular * specular_occlusion_from_cone(n, r, bent, cone_cos, surface.roughness);
   }
 

@@ -1,6 +1,7 @@
 #include "nodes/lighting/ibl/ibl_occlusion.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -11,31 +12,52 @@
 
 namespace lg {
 
-double cone_lobe_band_ratio(int l, double c) {
+double cone_band4_ratio(double c) {
   const double c2 = c * c;
-  switch (l) {
-    case 0:
-      return 1;
-    case 1:
-      return (1 + c + c2) / (1 + c);
-    case 2:
-      return 1 + 3 * c2;
-    case 4:
-      return 1 + c2 * (10 - 35 * c2);
-    default:
-      return 0;
-  }
+  return 1 + c2 * (10 - 35 * c2);
 }
 
-glm::dvec3 cone_lobe_irradiance(std::span<const glm::dvec3> sh, const glm::dvec3& bent, double cone_cos,
-                                double visibility) {
-  const int order = int(std::lround(std::sqrt(double(sh.size())))) - 1;
-  std::vector<double> y(sh.size());
-  sh_evaluate(order, bent, y);
+std::array<double, 9> cone_lobe_weights(const glm::dvec3& n, const glm::dvec3& b, double c) {
+  constexpr double pi = std::numbers::pi;
+  // The integrals over the cone about b of (n . w), w (n . w) and w w^T (n . w), over 1 - c^2:
+  // about the axis w = z b + sqrt(1 - z^2) u, the odd powers of u average out (README).
+  const double bn = glm::dot(b, n);
+  const glm::dvec3 pn = n - bn * b;  // n's part across the axis
+  const double cosine = pi * bn;
+  const double along2 = 2 * pi * (1 + c + c * c) / (3 * (1 + c)), across2 = pi * (1 - c) * (2 + c) / (3 * (1 + c));
+  const double along3 = pi * (1 + c * c) / 2, across3 = pi * (1 - c * c) / 4;
+  const glm::dvec3 linear = along2 * bn * b + across2 * pn;
+  double quadratic[3][3];  // symmetric
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double across = (i == j ? 1.0 : 0.0) - b[i] * b[j];
+      quadratic[i][j] = along3 * bn * b[i] * b[j] + across3 * (b[i] * pn[j] + pn[i] * b[j] + bn * across);
+    }
+  // Bands 0 to 2 of the basis as polynomials (nodes/env/common/sh_basis.h: Y_1,-1 ~ y, Y_1,0 ~ z,
+  // Y_1,1 ~ x), divided by the cosine lobe's band factors (the input is irradiance).
+  const double k0 = 0.5 / std::sqrt(pi), k1 = std::sqrt(3 / (4 * pi)), k2 = std::sqrt(15 / (4 * pi));
+  const double k20 = std::sqrt(5 / pi) / 4, k22 = std::sqrt(15 / pi) / 4;
+  const double a0 = pi, a1 = 2 * pi / 3, a2 = pi / 4;
+  return {k0 * cosine / a0,
+          k1 * linear.y / a1,
+          k1 * linear.z / a1,
+          k1 * linear.x / a1,
+          k2 * quadratic[0][1] / a2,
+          k2 * quadratic[1][2] / a2,
+          k20 * (3 * quadratic[2][2] - cosine) / a2,
+          k2 * quadratic[0][2] / a2,
+          k22 * (quadratic[0][0] - quadratic[1][1]) / a2};
+}
+
+glm::dvec3 cone_lobe_irradiance(std::span<const glm::dvec3> sh, const glm::dvec3& n, const glm::dvec3& bent,
+                                double cone_cos, double visibility) {
+  const std::array<double, 9> w = cone_lobe_weights(n, bent, cone_cos);
   glm::dvec3 e(0.0);
-  for (int l = 0; l <= order; ++l) {
-    const double ratio = cone_lobe_band_ratio(l, cone_cos);
-    for (int k = l * l; k < (l + 1) * (l + 1); ++k) e += sh[k] * (ratio * y[k]);
+  for (size_t k = 0; k < std::min<size_t>(9, sh.size()); ++k) e += sh[k] * w[k];
+  if (sh.size() > 16) {
+    std::vector<double> y(sh_count(kMaxShOrder));
+    sh_evaluate(kMaxShOrder, bent, y);
+    for (size_t k = 16; k < sh.size(); ++k) e += sh[k] * (cone_band4_ratio(cone_cos) * y[k]);
   }
   return glm::max(e * visibility, glm::dvec3(0.0));
 }

@@ -4,22 +4,29 @@
 // the cone-cone intersection, and Jimenez et al. 2016's multi-bounce fit.
 #pragma once
 
+#include <array>
 #include <glm/vec3.hpp>
 #include <span>
 
 namespace lg {
 
-// Band l's factor of the cosine lobe clipped to a cone about its own axis (half-angle cosine
-// `cone_cos` in [0, 1]) over the plain cosine lobe's, per unit cosine-weighted visibility
-// 1 - cone_cos^2. 0 for band 3, which irradiance coefficients do not carry.
-double cone_lobe_band_ratio(int l, double cone_cos);
+// Directional occlusion: irradiance through a visibility cone about `bent` (half-angle cosine
+// `cone_cos` in [0, 1]) at a surface of normal `n`, the integral of L(w) V(w) (n . w) with V the
+// cone's indicator, from irradiance SH coefficients (env.sh_project with convolve_cosine).
+// Bands 0 to 2 exactly, from the cone's moments; the cone's part below the horizon of n (where
+// it reaches past it) counts with its negative cosine, not clipped. Band 4 (orders 3 and 4)
+// takes the cone's zonal factor about the bent normal as if n = bent; band 3, which irradiance
+// coefficients do not carry, is lost. The result is per unit cosine-weighted visibility
+// 1 - cone_cos^2 (the cone's own, as occlusion.gtao and the ray tracer define it) times
+// `visibility`, at least 0: with visibility = 1 - cone_cos^2 it is the integral itself.
+glm::dvec3 cone_lobe_irradiance(std::span<const glm::dvec3> irradiance_sh, const glm::dvec3& n, const glm::dvec3& bent,
+                                double cone_cos, double visibility);
 
-// Irradiance through a visibility cone from irradiance SH coefficients (env.sh_project with
-// convolve_cosine, orders up to 4): `visibility` * sum_k ratio_l(cone_cos) E_k Y_k(bent), at
-// least 0. With visibility = 1 - cone_cos^2 it is the integral of L V max(0, bent . w) with V the
-// cone's indicator (exactly, for radiance without band 3); lighting.ibl passes its AO there.
-glm::dvec3 cone_lobe_irradiance(std::span<const glm::dvec3> irradiance_sh, const glm::dvec3& bent, double cone_cos,
-                                double visibility);
+// The weights of irradiance coefficients 0 to 8 in cone_lobe_irradiance (visibility 1).
+std::array<double, 9> cone_lobe_weights(const glm::dvec3& n, const glm::dvec3& bent, double cone_cos);
+// Band 4's zonal factor of the cone-clipped cosine lobe over the cosine lobe's, per unit
+// visibility: 1 + 10 c^2 - 35 c^4.
+double cone_band4_ratio(double cone_cos);
 
 // The half-angle cosine of the cone standing for the GGX lobe of perceptual `roughness` about
 // the reflection: 2 (1 - alpha^2) / (2 - alpha^2), alpha = roughness^2.

@@ -3,9 +3,9 @@
 // lighting.ibl: image-based light of every G-buffer pixel, added to the direct light. Diffuse:
 // the albedo's diffuse part / pi times irradiance, from SH irradiance coefficients
 // (env.sh_project with convolve_cosine) or from an irradiance map holding E / pi
-// (env.irradiance). Occlusion (ibl_occlusion.glsl): with bent normals and SH, the visibility
-// cone folded into the SH cosine lobe about the bent normal, scaled to the AO input where linked
-// (directional occlusion); with bent normals and the map, the map along the bent normal times
+// (env.irradiance). Occlusion (ibl_occlusion.glsl): with bent normals and SH, the integral of
+// radiance over the visibility cone with the cosine about the normal, per unit visibility, times
+// the AO input where linked, else the cone's own visibility (directional occlusion); with bent normals and the map, the map along the bent normal times
 // the visibility; with AO alone, AO times irradiance at the normal; the visibility through
 // Jimenez et al.'s multi-bounce fit with the diffuse albedo when asked. Specular: the
 // prefiltered map at mip roughness (mips - 1) along the reflection, through the split sum
@@ -40,15 +40,30 @@ layout(push_constant) uniform Push {
   float intensity;
 };
 
-// sum_k band_scale[l(k)] E_k Y_k(n) over the SH coefficients E_k, band by band.
-vec3 sh_irradiance(vec3 n, float band_scale[5]) {
+vec3 sh_irradiance(vec3 n) {
   float y[LG_SH_MAX_COUNT];
   sh_evaluate(n, y);
   int count = min(int(sh.length()), LG_SH_MAX_COUNT);
   vec3 e = vec3(0.0);
-  for (int l = 0; l <= 4; ++l)
-    for (int k = l * l; k < min((l + 1) * (l + 1), count); ++k) e += band_scale[l] * sh[k].rgb * y[k];
+  for (int k = 0; k < count; ++k) e += sh[k].rgb * y[k];
   return max(e, vec3(0.0));  // ringing must not light negatively
+}
+
+// Irradiance through the visibility cone about `bent` per unit visibility (ibl_occlusion.glsl):
+// bands 0 to 2 by the cone's moments, band 4 by its zonal factor about the bent normal.
+vec3 sh_cone_irradiance(vec3 n, vec3 bent, float cone_cos) {
+  float w[9];
+  cone_lobe_weights(n, bent, cone_cos, w);
+  int count = min(int(sh.length()), LG_SH_MAX_COUNT);
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < min(count, 9); ++k) e += sh[k].rgb * w[k];
+  if (count > 16) {
+    float y[LG_SH_MAX_COUNT];
+    sh_evaluate(bent, y);
+    float band4 = cone_band4_ratio(cone_cos);
+    for (int k = 16; k < count; ++k) e += band4 * sh[k].rgb * y[k];
+  }
+  return max(e, vec3(0.0));
 }
 
 void main() {
@@ -87,13 +102,10 @@ void main() {
   float visibility = (flags & 4u) != 0u ? texelFetch(ao_tex, texel, 0).r : (cones ? 1.0 - cone_cos * cone_cos : 1.0);
   vec3 occlusion = (flags & 32u) != 0u ? multi_bounce_occlusion(visibility, diffuse_color) : vec3(visibility);
   vec3 irradiance_over_pi;  // of the open hemisphere, in the cone's shape when there is one
-  if ((flags & 1u) != 0u) {
-    float band_scale[5];
-    cone_lobe_band_ratios(cone_cos, band_scale);
-    irradiance_over_pi = sh_irradiance(bent, band_scale) / LG_SH_PI;
-  } else {
+  if ((flags & 1u) != 0u)
+    irradiance_over_pi = (cones ? sh_cone_irradiance(n, bent, cone_cos) : sh_irradiance(n)) / LG_SH_PI;
+  else
     irradiance_over_pi = textureLod(irradiance_map, bent, 0.0).rgb;
-  }
   vec3 diffuse = diffuse_color * irradiance_over_pi * occlusion;
 
   float mips = float(textureQueryLevels(specular_map));

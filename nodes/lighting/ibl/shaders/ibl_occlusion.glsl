@@ -1,5 +1,5 @@
 // lighting.ibl's occlusion formulas (nodes/lighting/ibl/ibl_occlusion.h is the same in double
-// precision; nodes/lighting/ibl/README.md derives them): the visibility cone folded into the SH
+// precision; docs/env-conventions.md derives them): the visibility cone folded into the SH
 // cosine lobe, specular occlusion from the intersection of the visibility cone with a cone
 // standing for the specular lobe, and Jimenez et al.'s multi-bounce fit.
 #ifndef LG_IBL_OCCLUSION_GLSL
@@ -7,16 +7,38 @@
 
 const float LG_IBL_PI = 3.14159265358979;
 
-// Band l's factor of the cosine lobe clipped to a cone about its own axis (cosine c of the
-// half-angle), over the plain cosine lobe's band factor, per unit cosine-weighted visibility
-// 1 - c^2. Band 3: irradiance coefficients carry none (the cosine lobe has none), so 0.
-void cone_lobe_band_ratios(float c, out float ratio[5]) {
-  float c2 = c * c;
-  ratio[0] = 1.0;
-  ratio[1] = (1.0 + c + c2) / (1.0 + c);
-  ratio[2] = 1.0 + 3.0 * c2;
-  ratio[3] = 0.0;
-  ratio[4] = 1.0 + c2 * (10.0 - 35.0 * c2);
+// The weights of irradiance SH coefficients 0 to 8 (bands 0 to 2) in the integral of
+// L(w) V(w) (n . w) over the visibility cone about b with half-angle cosine c, per unit
+// cosine-weighted visibility 1 - c^2: the cone's moments of (n . w), w (n . w) and
+// w w^T (n . w) taken against the basis as polynomials, over the cosine lobe's band factors.
+// The cone's part below n's horizon counts with its negative cosine.
+void cone_lobe_weights(vec3 n, vec3 b, float c, out float w[9]) {
+  float bn = dot(b, n);
+  vec3 pn = n - bn * b;  // n's part across the axis
+  float cosine = LG_IBL_PI * bn;
+  float along2 = 2.0 * LG_IBL_PI * (1.0 + c + c * c) / (3.0 * (1.0 + c));
+  float across2 = LG_IBL_PI * (1.0 - c) * (2.0 + c) / (3.0 * (1.0 + c));
+  float along3 = LG_IBL_PI * (1.0 + c * c) / 2.0, across3 = LG_IBL_PI * (1.0 - c * c) / 4.0;
+  vec3 linear = along2 * bn * b + across2 * pn;
+  mat3 quadratic = along3 * bn * outerProduct(b, b) +
+                   across3 * (outerProduct(b, pn) + outerProduct(pn, b) + bn * (mat3(1.0) - outerProduct(b, b)));
+  const float k0 = 0.282094792, k1 = 0.488602512, k2 = 1.092548431, k20 = 0.315391565, k22 = 0.546274215;
+  const float a0 = LG_IBL_PI, a1 = 2.0 * LG_IBL_PI / 3.0, a2 = LG_IBL_PI / 4.0;
+  w[0] = k0 * cosine / a0;
+  w[1] = k1 * linear.y / a1;
+  w[2] = k1 * linear.z / a1;
+  w[3] = k1 * linear.x / a1;
+  w[4] = k2 * quadratic[0][1] / a2;
+  w[5] = k2 * quadratic[1][2] / a2;
+  w[6] = k20 * (3.0 * quadratic[2][2] - cosine) / a2;
+  w[7] = k2 * quadratic[0][2] / a2;
+  w[8] = k22 * (quadratic[0][0] - quadratic[1][1]) / a2;
+}
+
+// Band 4's zonal factor of the cone-clipped cosine lobe about its axis over the cosine lobe's,
+// per unit visibility (used as if n = b).
+float cone_band4_ratio(float c) {
+  return 1.0 + c * c * (10.0 - 35.0 * c * c);
 }
 
 // The cosine of the half-angle of the cone standing for the GGX lobe about the reflection:
