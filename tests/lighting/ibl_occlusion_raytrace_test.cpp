@@ -184,10 +184,10 @@ TEST(IblOcclusionRaytrace, ConeFoldedIrradianceBeatsAmbientOcclusionOnTheBunny) 
     double PointIrradiance::*value;
     std::vector<double> relative, of_open;
   };
-  Method methods[] = {{"AO x SH(n)", &PointIrradiance::ao_normal},
-                      {"AO x SH(bent)", &PointIrradiance::ao_bent},
-                      {"cone SH (lighting.ibl)", &PointIrradiance::cone},
-                      {"cone, exact radiance", &PointIrradiance::exact_cone}};
+  Method methods[] = {{"AO x SH(n)", &PointIrradiance::ao_normal, {}, {}},
+                      {"AO x SH(bent)", &PointIrradiance::ao_bent, {}, {}},
+                      {"cone SH (lighting.ibl)", &PointIrradiance::cone, {}, {}},
+                      {"cone, exact radiance", &PointIrradiance::exact_cone, {}, {}}};
   std::vector<double> sh_truncation, gain;
   int sealed = 0;
   for (const PointIrradiance& r : results) {
