@@ -84,8 +84,8 @@ double specular_occlusion_from_cone(const glm::dvec3& n, const glm::dvec3& r, co
                                     double roughness) {
   const double lobe_cos = specular_cone_cosine(roughness);
   if (1 - lobe_cos < 1e-5) return glm::dot(bent, r) >= cone_cos ? 1 : 0;
-  const double above = cap_intersection(0, lobe_cos, glm::dot(n, r));
-  if (above <= 0) return 1;
+  const double above =
+      std::max(cap_intersection(0, lobe_cos, glm::dot(n, r)), 0.05 * 2 * std::numbers::pi * (1 - lobe_cos));
   return std::clamp(cap_intersection(cone_cos, lobe_cos, glm::dot(bent, r)) / above, 0.0, 1.0);
 }
 

@@ -37,7 +37,8 @@ double specular_cone_cosine(double roughness);
 double cap_intersection(double cos1, double cos2, double cos_d);
 
 // The visible fraction of the specular lobe's cone: inside the visibility cone (axis `bent`,
-// `cone_cos`) over inside the hemisphere of `n`, clamped to [0, 1]; unit vectors.
+// `cone_cos`) over inside the hemisphere of `n` (at least 5% of the lobe), clamped to [0, 1];
+// unit vectors.
 double specular_occlusion_from_cone(const glm::dvec3& n, const glm::dvec3& r, const glm::dvec3& bent, double cone_cos,
                                     double roughness);
 

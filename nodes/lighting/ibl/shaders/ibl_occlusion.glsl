@@ -66,12 +66,13 @@ float cap_intersection(float cos1, float cos2, float cos_d) {
 
 // The visible part of the specular lobe's cone (axis r, from roughness) inside the visibility
 // cone (axis bent, cosine cone_cos), over its part above the horizon of n: the split sum's DFG
-// already leaves out the part below the horizon, so an open plane is unoccluded.
+// already leaves out the part below the horizon, so an open plane is unoccluded. The part above
+// counts as at least 5% of the lobe, so that a lobe all but below the horizon (r behind the
+// surface) does not divide two vanishing areas.
 float specular_occlusion_from_cone(vec3 n, vec3 r, vec3 bent, float cone_cos, float roughness) {
   float lobe_cos = specular_cone_cosine(roughness);
   if (1.0 - lobe_cos < 1e-5) return dot(bent, r) >= cone_cos ? 1.0 : 0.0;  // a mirror: one direction
-  float above = cap_intersection(0.0, lobe_cos, dot(n, r));
-  if (above <= 0.0) return 1.0;
+  float above = max(cap_intersection(0.0, lobe_cos, dot(n, r)), 0.05 * 2.0 * LG_IBL_PI * (1.0 - lobe_cos));
   return clamp(cap_intersection(cone_cos, lobe_cos, dot(bent, r)) / above, 0.0, 1.0);
 }
 
