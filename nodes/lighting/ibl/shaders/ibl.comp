@@ -3,15 +3,15 @@
 // lighting.ibl: image-based light of every G-buffer pixel, added to the direct light. Diffuse:
 // the albedo's diffuse part / pi times irradiance, from SH irradiance coefficients
 // (env.sh_project with convolve_cosine) or from an irradiance map holding E / pi
-// (env.irradiance). Occlusion (ibl_occlusion.glsl): with bent normals and SH, the integral of
-// radiance over the visibility cone with the cosine about the normal, per unit visibility, times
-// the AO input where linked, else the cone's own visibility (directional occlusion); with bent normals and the map, the map along the bent normal times
-// the visibility; with AO alone, AO times irradiance at the normal; the visibility through
-// Jimenez et al.'s multi-bounce fit with the diffuse albedo when asked. Specular: the
-// prefiltered map at mip roughness (mips - 1) along the reflection, through the split sum
-// (ibl_shading.glsl), occluded when asked by the cone-cone intersection with bent normals, else
-// by Lagarde's form from AO. Pixels with no surface (depth 0) show the prefiltered mip 0 along
-// the view ray.
+// (env.irradiance). Occlusion (ibl_occlusion.glsl, docs/env-conventions.md): with bent normals
+// and SH, the SH radiance integrated over the visibility cone with the cosine about the normal,
+// per unit visibility (directional occlusion); with bent normals and the map, the map along the
+// bent normal; with AO alone, the irradiance at the normal. Either is scaled by the visibility:
+// the AO input where linked, else the cone's own, through Jimenez et al.'s multi-bounce fit
+// with the diffuse albedo when asked. Specular: the prefiltered map at mip roughness (mips - 1)
+// along the reflection, through the split sum (ibl_shading.glsl), occluded when asked by the
+// cone-cone intersection with bent normals, else by Lagarde's form from AO. Pixels with no
+// surface (depth 0) show the prefiltered mip 0 along the view ray.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
