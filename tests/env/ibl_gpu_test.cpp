@@ -5,12 +5,11 @@
 // cones as well (the cone folded into the SH lobe, cone-cone specular occlusion, multi-bounce),
 // with SH and with an irradiance map; also with every optional input unlinked; a white furnace;
 // and the sky behind pixels with no surface. Tolerance 6e-3 of the pixel's largest channel
-// (measured 1.7e-3 with AO, 2.0e-3 with cones, 2.8e-3 with the irradiance map; 4.8e-3 on a
-// rough metal in an earlier draw): rgba16f output (4.9e-4), lavapipe's mip fraction of 4 bits
-// (mipmapPrecisionBits; mips 10% apart: up to 3.1e-3 of the specular), 8-bit filter weights
-// across the DFG table's texels. With cones, 1e-2: the cap intersection in float loses up to
-// about 1e-4 sr where the caps nearly touch (acos of a cosine within 1e-7 of 1 is off by 4.5e-4),
-// which over a narrow lobe's area is up to 1% of the specular (measured 6.4e-3, one such pixel).
+// (measured 1.7e-3 with AO, 1.7e-3 with cones and SH, 3.2e-3 with cones and the map, 2.8e-3
+// with the map alone; 4.8e-3 on a rough metal in an earlier draw): rgba16f output (4.9e-4),
+// lavapipe's mip fraction of 4 bits (mipmapPrecisionBits; mips 10% apart: up to 3.1e-3 of the
+// specular), 8-bit filter weights across the DFG table's texels. The cone formulas in float add
+// little: the cap intersection's atan2 form keeps nearly touching caps to about 1e-6 sr.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -264,13 +263,13 @@ TEST_F(IblGpuTest, MatchesTheFormulasWithAmbientOcclusion) {
 TEST_F(IblGpuTest, MatchesTheFormulasWithVisibilityCones) {
   const double err = max_relative_error(make_scene(73, false), Inputs::cones);
   std::cout << "SH, direct, AO, cones, cone-cone specular occlusion, multi-bounce: max relative error " << err << "\n";
-  EXPECT_LE(err, 1e-2);
+  EXPECT_LE(err, 6e-3);
 }
 
 TEST_F(IblGpuTest, MatchesTheFormulasWithAnIrradianceMapAndCones) {
   const double err = max_relative_error(make_scene(74, false), Inputs::map_cones);
   std::cout << "irradiance map, cones without AO: max relative error " << err << "\n";
-  EXPECT_LE(err, 1e-2);
+  EXPECT_LE(err, 6e-3);
 }
 
 TEST_F(IblGpuTest, MatchesTheFormulasWithAnIrradianceMapAndNoOptionalInputs) {

@@ -72,11 +72,11 @@ double cap_intersection(double cos1, double cos2, double cos_d) {
   const double d = std::acos(std::clamp(cos_d, -1.0, 1.0));
   if (d >= r1 + r2) return 0;
   if (d <= std::abs(r1 - r2)) return 2 * std::numbers::pi * (1 - std::max(cos1, cos2));
-  const double s1 = std::sin(r1), s2 = std::sin(r2), sd = std::sin(d);
-  auto angle = [](double x) { return std::acos(std::clamp(x, -1.0, 1.0)); };
-  const double lens = angle((cos_d - cos1 * cos2) / (s1 * s2));
-  const double edge1 = angle((cos2 - cos_d * cos1) / (sd * s1));
-  const double edge2 = angle((cos1 - cos_d * cos2) / (sd * s2));
+  // One sine numerator for the three angles (see ibl_occlusion.glsl).
+  const double g = std::sqrt(std::max(1 - cos1 * cos1 - cos2 * cos2 - cos_d * cos_d + 2 * cos1 * cos2 * cos_d, 0.0));
+  const double lens = std::atan2(g, cos_d - cos1 * cos2);
+  const double edge1 = std::atan2(g, cos2 - cos_d * cos1);
+  const double edge2 = std::atan2(g, cos1 - cos_d * cos2);
   return std::max(2 * (std::numbers::pi - lens - cos1 * edge1 - cos2 * edge2), 0.0);
 }
 

@@ -33,7 +33,7 @@ double cone_band4_ratio(double cone_cos);
 double specular_cone_cosine(double roughness);
 
 // The solid angle shared by two caps (half-angle cosines cos1, cos2 >= 0) with axes at cosine
-// cos_d; the closed form (Gauss-Bonnet on the lens).
+// cos_d; the closed form (Gauss-Bonnet on the lens), its angles by atan2 over one shared sine.
 double cap_intersection(double cos1, double cos2, double cos_d);
 
 // The visible fraction of the specular lobe's cone: inside the visibility cone (axis `bent`,
