@@ -45,7 +45,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr uint32_t kFace = 48;        // grace is 256 x 128: 64 texels per quarter turn
+constexpr uint32_t kFace = 48;        // grace has 64 texels a quarter turn (256 x 128), resampled 4x4
 constexpr int kOcclusionRays = 4096;  // k_A's standard error at most 0.5 / 64 = 0.008
 constexpr int kBunnyPoints = 768, kFloorPoints = 384;
 constexpr int kShOrder = 2;
@@ -98,7 +98,7 @@ std::vector<SurfacePoint> sample_surface(const RayScene& scene, Triangles range,
 
 struct PointIrradiance {
   double reference = 0, open = 0;  // luminance: occluded (the reference) and unoccluded
-  double exact_cone = 0;           // the cube's radiance through the cone (cosine about n)
+  double exact_cone = 0;           // the cube's radiance through the cone, cosine about n unclipped as the formula
   double ao_normal = 0, ao_bent = 0, cone = 0, sh_open = 0;
 };
 
