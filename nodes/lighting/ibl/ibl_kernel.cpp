@@ -34,7 +34,7 @@ class IblKernel final : public NodeKernel {
  public:
   explicit IblKernel(const PlanNode& node)
       : settings_{param_string(node, "diffuse_source") == "sh", float(param_number(node, "intensity")),
-                  param_bool(node, "specular_occlusion")} {}
+                  param_bool(node, "specular_occlusion"), param_bool(node, "multi_bounce")} {}
 
   void record(PassContext& ctx) override {
     if (!camera_) camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -112,6 +112,7 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
   if (in.ao) flags |= 4u;
   if (in.bent_normals) flags |= 8u;
   if (settings.specular_occlusion) flags |= 16u;
+  if (settings.multi_bounce) flags |= 32u;
   const Buffer& sh = in.sh ? *in.sh : fallbacks.sh;
   const DescriptorWrite writes[] = {
       uniform_buffer(0, in.camera),

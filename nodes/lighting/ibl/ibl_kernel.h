@@ -17,6 +17,7 @@ struct IblSettings {
   bool diffuse_from_sh = true;  // else from the irradiance map
   float intensity = 1.0f;
   bool specular_occlusion = true;
+  bool multi_bounce = true;
 };
 
 // What the pass reads and writes; optional inputs may be null. Sampled images are in

@@ -3,13 +3,19 @@
 // lighting.ibl: image-based light of every G-buffer pixel, added to the direct light. Diffuse:
 // the albedo's diffuse part / pi times irradiance, from SH irradiance coefficients
 // (env.sh_project with convolve_cosine) or from an irradiance map holding E / pi
-// (env.irradiance); an ambient occlusion input multiplies it and a bent normal input replaces
-// the normal it is looked up along. Specular: the prefiltered map at mip roughness (mips - 1)
-// along the reflection, through the split sum (ibl_shading.glsl), occluded from the AO when
-// asked. Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
+// (env.irradiance). Occlusion (ibl_occlusion.glsl, docs/env-conventions.md): with bent normals
+// and SH, the SH radiance integrated over the visibility cone with the cosine about the normal,
+// per unit visibility (directional occlusion); with bent normals and the map, the map along the
+// bent normal; with AO alone, the irradiance at the normal. Either is scaled by the visibility:
+// the AO input where linked, else the cone's own, through Jimenez et al.'s multi-bounce fit
+// with the diffuse albedo when asked. Specular: the prefiltered map at mip roughness (mips - 1)
+// along the reflection, through the split sum (ibl_shading.glsl), occluded when asked by the
+// cone-cone intersection with bent normals, else by Lagarde's form from AO. Pixels with no
+// surface (depth 0) show the prefiltered mip 0 along the view ray.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
+#include "nodes/lighting/ibl/shaders/ibl_occlusion.glsl"
 #include "nodes/lighting/ibl/shaders/ibl_shading.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -28,7 +34,9 @@ layout(binding = 10) uniform sampler2D ao_tex;
 layout(binding = 11) uniform sampler2D bent_normal_tex;
 layout(binding = 12, rgba16f) uniform writeonly image2D color;
 layout(push_constant) uniform Push {
-  uint flags;  // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion
+  // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion,
+  // 32 multi-bounce occlusion
+  uint flags;
   float intensity;
 };
 
@@ -39,6 +47,23 @@ vec3 sh_irradiance(vec3 n) {
   vec3 e = vec3(0.0);
   for (int k = 0; k < count; ++k) e += sh[k].rgb * y[k];
   return max(e, vec3(0.0));  // ringing must not light negatively
+}
+
+// Irradiance through the visibility cone about `bent` per unit visibility (ibl_occlusion.glsl):
+// bands 0 to 2 by the cone's moments, band 4 by its zonal factor about the bent normal.
+vec3 sh_cone_irradiance(vec3 n, vec3 bent, float cone_cos) {
+  float w[9];
+  cone_lobe_weights(n, bent, cone_cos, w);
+  int count = min(int(sh.length()), LG_SH_MAX_COUNT);
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < min(count, 9); ++k) e += sh[k].rgb * w[k];
+  if (count > 16) {
+    float y[LG_SH_MAX_COUNT];
+    sh_evaluate(bent, y);
+    float band4 = cone_band4_ratio(cone_cos);
+    for (int k = 16; k < count; ++k) e += band4 * sh[k].rgb * y[k];
+  }
+  return max(e, vec3(0.0));
 }
 
 void main() {
@@ -62,22 +87,36 @@ void main() {
   vec3 f0 = mix(vec3(0.04), albedo, metalness);
   float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
 
-  vec3 diffuse_normal = n;
-  if ((flags & 8u) != 0u) {
-    vec3 bent = texelFetch(bent_normal_tex, texel, 0).xyz;
-    if (dot(bent, bent) > 1e-6) diffuse_normal = normalize(bent);
+  // The visibility cone: axis and half-angle cosine (none written: the open hemisphere).
+  bool cones = (flags & 8u) != 0u;
+  vec3 bent = n;
+  float cone_cos = 0.0;
+  if (cones) {
+    vec4 texel_cone = texelFetch(bent_normal_tex, texel, 0);
+    if (dot(texel_cone.xyz, texel_cone.xyz) > 1e-6) {
+      bent = normalize(texel_cone.xyz);
+      cone_cos = clamp(texel_cone.w, 0.0, 1.0);
+    }
   }
-  vec3 diffuse = (flags & 1u) != 0u ? diffuse_color / LG_SH_PI * sh_irradiance(diffuse_normal)
-                                    : diffuse_color * textureLod(irradiance_map, diffuse_normal, 0.0).rgb;
-  float ao = (flags & 4u) != 0u ? texelFetch(ao_tex, texel, 0).r : 1.0;
-  diffuse *= ao;
+  // How much of the hemisphere's cosine weight is visible: the AO input, else the cone's own.
+  float visibility = (flags & 4u) != 0u ? texelFetch(ao_tex, texel, 0).r : (cones ? 1.0 - cone_cos * cone_cos : 1.0);
+  vec3 occlusion = (flags & 32u) != 0u ? multi_bounce_occlusion(visibility, diffuse_color) : vec3(visibility);
+  vec3 irradiance_over_pi;  // of the open hemisphere, in the cone's shape when there is one
+  if ((flags & 1u) != 0u)
+    irradiance_over_pi = (cones ? sh_cone_irradiance(n, bent, cone_cos) : sh_irradiance(n)) / LG_SH_PI;
+  else
+    irradiance_over_pi = textureLod(irradiance_map, bent, 0.0).rgb;
+  vec3 diffuse = diffuse_color * irradiance_over_pi * occlusion;
 
   float mips = float(textureQueryLevels(specular_map));
   vec3 r = reflect(-v, n);
   vec3 prefiltered = textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
   vec2 scale_bias = textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
   vec3 specular = split_sum_specular(prefiltered, f0, scale_bias);
-  if ((flags & 16u) != 0u && (flags & 4u) != 0u) specular *= specular_occlusion_from_ao(n_dot_v, ao, roughness);
+  if ((flags & 16u) != 0u && cones)
+    specular *= specular_occlusion_from_cone(n, r, bent, cone_cos, roughness);
+  else if ((flags & 16u) != 0u && (flags & 4u) != 0u)
+    specular *= specular_occlusion_from_ao(n_dot_v, visibility, roughness);
 
   imageStore(color, texel, vec4(direct + intensity * (diffuse + specular), 1.0));
 }

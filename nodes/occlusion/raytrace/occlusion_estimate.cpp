@@ -1,0 +1,83 @@
+// estimate_occlusion(): N stratified cosine rays per point, summed in sample order in double
+// precision so the result does not depend on how points are spread over threads.
+#include "nodes/occlusion/raytrace/occlusion_estimate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "nodes/occlusion/raytrace/cosine_sampling.h"
+#include "nodes/occlusion/raytrace/parallel_for.h"
+#include "nodes/occlusion/raytrace/ray_offset.h"
+
+namespace lg {
+
+void check_occlusion_settings(const OcclusionSettings& settings) {
+  if (settings.rays < 1 || settings.rays > max_rays_per_point)
+    throw std::invalid_argument("rays must be from 1 to " + std::to_string(max_rays_per_point) + " per point; got " +
+                                std::to_string(settings.rays));
+  if (!(settings.max_distance > 0.0f))
+    throw std::invalid_argument("max distance must be positive (or infinite); got " +
+                                std::to_string(settings.max_distance));
+  if (settings.falloff == OcclusionFalloff::obscurance && std::isinf(settings.max_distance))
+    throw std::invalid_argument("the obscurance falloff needs a finite max distance");
+}
+
+OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::vec3 normal,
+                                   const OcclusionSettings& settings, uint64_t seed) {
+  const Frame frame = make_frame(glm::dvec3(normal));
+  const glm::vec3 origin = offset_ray_origin(point, normal);
+  const uint32_t count = uint32_t(settings.rays);
+  double visible = 0.0;
+  glm::dvec3 bent{0.0};
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::dvec3 direction = frame.to_world(cosine_hemisphere(stratified_point(i, count, seed)));
+    const glm::vec3 ray = glm::normalize(glm::vec3(direction));
+    double weight;
+    if (settings.falloff == OcclusionFalloff::obscurance) {
+      const std::optional<RayHit> hit = scene.intersect(origin, ray, settings.max_distance);
+      const double x = hit ? std::min(1.0, double(hit->distance) / settings.max_distance) : 1.0;
+      weight = x * (2.0 - x);
+    } else {
+      weight = scene.occluded(origin, ray, settings.max_distance) ? 0.0 : 1.0;
+    }
+    visible += weight;
+    bent += weight * direction;
+  }
+  OcclusionResult result;
+  const double k = std::clamp(visible / count, 0.0, 1.0);
+  result.visibility = float(k);
+  const double bent_length = glm::length(bent);
+  result.bent_normal = bent_length > 0.0 ? glm::vec3(bent / bent_length) : normal;
+  result.cone_cos = float(std::sqrt(1.0 - k));
+  result.cone_angle = float(std::asin(std::sqrt(k)));
+  return result;
+}
+
+uint64_t point_seed(uint64_t seed, uint64_t index) {
+  return mix_bits(seed ^ mix_bits(index + 0x9e3779b97f4a7c15ull));
+}
+
+std::vector<OcclusionResult> estimate_occlusion_many(const RayScene& scene, std::span<const SurfacePoint> points,
+                                                     const OcclusionSettings& settings, uint64_t seed,
+                                                     uint64_t first_index,
+                                                     const std::function<void(size_t)>& progress) {
+  check_occlusion_settings(settings);
+  std::vector<OcclusionResult> results(points.size());
+  // Batches of about 1% (at least 256 points) between progress reports, each spread over all cores.
+  const size_t batch = progress ? std::max<size_t>(256, points.size() / 100) : std::max<size_t>(1, points.size());
+  for (size_t begin = 0; begin < points.size(); begin += batch) {
+    const size_t end = std::min(points.size(), begin + batch);
+    parallel_for(end - begin, [&](size_t j) {
+      const size_t i = begin + j;
+      results[i] =
+          estimate_occlusion(scene, points[i].position, points[i].normal, settings, point_seed(seed, first_index + i));
+    });
+    if (progress) progress(end);
+  }
+  return results;
+}
+
+}  // namespace lg

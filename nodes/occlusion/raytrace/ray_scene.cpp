@@ -1,0 +1,151 @@
+// RayScene: one Embree triangle geometry holding every triangle, in robust (watertight) mode so
+// rays through shared edges of closed meshes cannot slip between triangles.
+#include "nodes/occlusion/raytrace/ray_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <limits>
+#include <stdexcept>
+
+#include "runtime/scene/mesh_tools.h"
+
+namespace lg {
+
+struct RayScene::Embree {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::string error;  // the first error Embree reported, if any
+  ~Embree() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+namespace {
+
+void record_embree_error(void* user, RTCError code, const char* message) {
+  auto* first_error = static_cast<std::string*>(user);
+  if (first_error->empty())
+    first_error->assign("Embree error " + std::to_string(int(code)) + ": " + (message ? message : ""));
+}
+
+void check_finite(std::span<const glm::vec3> positions, const std::string& name) {
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const glm::vec3 p = positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument(name + ": vertex " + std::to_string(i) + " has a non-finite position (" +
+                                  std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) +
+                                  "); positions must be finite numbers");
+  }
+}
+
+RTCRay make_ray(glm::vec3 origin, glm::vec3 direction, float t_max) {
+  RTCRay ray{};
+  ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
+  ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
+  ray.tnear = 0.0f;
+  ray.tfar = t_max;
+  ray.mask = std::numeric_limits<unsigned>::max();
+  return ray;
+}
+
+}  // namespace
+
+RayScene::RayScene(const SceneView& view) {
+  for (size_t d = 0; d < view.draws.size(); ++d) {
+    const DrawItem& draw = view.draws[d];
+    if (draw.mesh < 0 || size_t(draw.mesh) >= view.meshes.size())
+      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(draw.mesh) +
+                                  ", but the scene has " + std::to_string(view.meshes.size()));
+    const MeshData& mesh = view.meshes[size_t(draw.mesh)];
+    const std::string name = "mesh '" + mesh.name + "' (draw " + std::to_string(d) + ")";
+    if (std::string problem = mesh_problem(mesh); !problem.empty()) throw std::invalid_argument(name + ": " + problem);
+    const uint32_t base = uint32_t(positions_.size());
+    for (const glm::vec3& p : mesh.positions) positions_.push_back(glm::vec3(draw.world * glm::vec4(p, 1.0f)));
+    check_finite(std::span(positions_).subspan(base), name + " after its world transform");
+    for (uint32_t i : mesh.indices) indices_.push_back(base + i);
+  }
+  build();
+}
+
+RayScene::RayScene(std::span<const glm::vec3> positions, std::span<const uint32_t> indices, const std::string& name)
+    : positions_(positions.begin(), positions.end()), indices_(indices.begin(), indices.end()) {
+  if (indices_.size() % 3 != 0)
+    throw std::invalid_argument(name + ": " + std::to_string(indices_.size()) +
+                                " indices is not a multiple of 3 (three per triangle)");
+  for (size_t i = 0; i < indices_.size(); ++i)
+    if (indices_[i] >= positions_.size())
+      throw std::invalid_argument(name + ": index " + std::to_string(i) + " is " + std::to_string(indices_[i]) +
+                                  ", past the " + std::to_string(positions_.size()) + " positions");
+  check_finite(positions_, name);
+  build();
+}
+
+RayScene::~RayScene() = default;
+RayScene::RayScene(RayScene&&) noexcept = default;
+RayScene& RayScene::operator=(RayScene&&) noexcept = default;
+
+void RayScene::build() {
+  for (const glm::vec3& p : positions_) bounds_min_ = glm::min(bounds_min_, p), bounds_max_ = glm::max(bounds_max_, p);
+  embree_ = std::make_unique<Embree>();
+  embree_->device = rtcNewDevice(nullptr);
+  if (!embree_->device) throw std::runtime_error("cannot create an Embree device");
+  rtcSetDeviceErrorFunction(embree_->device, record_embree_error, &embree_->error);
+  embree_->scene = rtcNewScene(embree_->device);
+  rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
+  if (!indices_.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), positions_.size()));
+    auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), indices_.size() / 3));
+    if (!vertices || !triangles) {
+      rtcReleaseGeometry(geometry);
+      throw std::runtime_error("cannot allocate Embree buffers for " + std::to_string(indices_.size() / 3) +
+                               " triangles: " + embree_->error);
+    }
+    for (size_t i = 0; i < positions_.size(); ++i)
+      vertices[3 * i] = positions_[i].x, vertices[3 * i + 1] = positions_[i].y, vertices[3 * i + 2] = positions_[i].z;
+    std::copy(indices_.begin(), indices_.end(), triangles);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(embree_->scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(embree_->scene);
+  if (!embree_->error.empty()) throw std::runtime_error("building the ray-tracing scene: " + embree_->error);
+}
+
+std::array<glm::vec3, 3> RayScene::triangle(uint32_t primitive) const {
+  return {positions_[indices_[3 * size_t(primitive)]], positions_[indices_[3 * size_t(primitive) + 1]],
+          positions_[indices_[3 * size_t(primitive) + 2]]};
+}
+
+std::optional<RayHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direction, float t_max) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit query{};
+  query.ray = make_ray(origin, direction, t_max);
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(embree_->scene, &context, &query);
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  const std::array<glm::vec3, 3> corners = triangle(query.hit.primID);
+  // Our own normal rather than Embree's Ng, so that its orientation is the documented one.
+  const glm::vec3 n = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
+  const float length = glm::length(n);
+  return RayHit{query.ray.tfar, length > 0.0f ? n / length : -direction, query.hit.primID};
+}
+
+bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float t_max) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = make_ray(origin, direction, t_max);
+  rtcOccluded1(embree_->scene, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace lg

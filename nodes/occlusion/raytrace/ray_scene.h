@@ -1,0 +1,61 @@
+// An Embree scene of world-space triangles for CPU ray queries: closest hit and any hit
+// (occlusion), thread-safe once built. Built from a SceneView (every draw's mesh moved into world
+// space by its transform, draws in order) or from raw world-space triangles. Zero-area triangles
+// are kept (they are never hit); a non-finite position is an error that names the mesh and vertex.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+
+struct RayHit {
+  float distance = 0.0f;   // along the (unit) ray direction
+  glm::vec3 normal{0.0f};  // unit geometric normal, the side counter-clockwise triangles face
+  uint32_t primitive = 0;  // index into the scene's triangles (draws in order, then each mesh's)
+};
+
+class RayScene {
+ public:
+  // Throws std::invalid_argument for a non-finite position or a bad mesh (mesh_problem()), naming
+  // the draw and mesh.
+  explicit RayScene(const SceneView& view);
+  // `indices` holds three per triangle into `positions`; `name` appears in error messages.
+  RayScene(std::span<const glm::vec3> positions, std::span<const uint32_t> indices,
+           const std::string& name = "triangles");
+  ~RayScene();
+  RayScene(RayScene&&) noexcept;
+  RayScene& operator=(RayScene&&) noexcept;
+
+  // The closest hit with distance in (0, t_max], if any. `direction` must be unit length.
+  std::optional<RayHit> intersect(glm::vec3 origin, glm::vec3 direction, float t_max) const;
+  // Whether anything lies along the ray within (0, t_max].
+  bool occluded(glm::vec3 origin, glm::vec3 direction, float t_max) const;
+
+  size_t triangle_count() const { return indices_.size() / 3; }
+  // World-space corners of triangle `primitive`.
+  std::array<glm::vec3, 3> triangle(uint32_t primitive) const;
+  // The box around every position (empty() when there are none).
+  glm::vec3 bounds_min() const { return bounds_min_; }
+  glm::vec3 bounds_max() const { return bounds_max_; }
+  bool empty() const { return indices_.empty(); }
+
+ private:
+  void build();
+
+  std::vector<glm::vec3> positions_;
+  std::vector<uint32_t> indices_;
+  glm::vec3 bounds_min_{1e30f}, bounds_max_{-1e30f};
+  struct Embree;
+  std::unique_ptr<Embree> embree_;
+};
+
+}  // namespace lg
