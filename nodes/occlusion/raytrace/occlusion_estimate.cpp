@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,16 @@
 #include "nodes/occlusion/raytrace/ray_offset.h"
 
 namespace lg {
+namespace {
+
+// rho for a ray that hit at `distance` (within max_distance).
+double hit_weight(const OcclusionSettings& settings, float distance) {
+  if (settings.falloff == OcclusionFalloff::none) return 0.0;
+  const double x = std::min(1.0, double(distance) / settings.max_distance);
+  return x * (2.0 - x);
+}
+
+}  // namespace
 
 void check_occlusion_settings(const OcclusionSettings& settings) {
   if (settings.rays < 1 || settings.rays > max_rays_per_point)
@@ -38,8 +49,7 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
     double weight;
     if (settings.falloff == OcclusionFalloff::obscurance) {
       const std::optional<RayHit> hit = scene.intersect(origin, ray, settings.max_distance);
-      const double x = hit ? std::min(1.0, double(hit->distance) / settings.max_distance) : 1.0;
-      weight = x * (2.0 - x);
+      weight = hit ? hit_weight(settings, hit->distance) : 1.0;
     } else {
       weight = scene.occluded(origin, ray, settings.max_distance) ? 0.0 : 1.0;
     }
@@ -53,6 +63,35 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
   result.bent_normal = bent_length > 0.0 ? glm::vec3(bent / bent_length) : normal;
   result.cone_cos = float(std::sqrt(1.0 - k));
   result.cone_angle = float(std::asin(std::sqrt(k)));
+  return result;
+}
+
+SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 point, const OcclusionSettings& settings,
+                                            uint64_t seed) {
+  const uint32_t count = uint32_t(settings.rays);
+  double visible = 0.0;
+  glm::dvec3 bent{0.0};
+  uint32_t backfaces = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::dvec2 u = stratified_point(i, count, seed);
+    const double z = 1.0 - 2.0 * u.y, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = 2.0 * std::numbers::pi * u.x;
+    const glm::dvec3 direction{r * std::cos(phi), r * std::sin(phi), z};
+    const glm::vec3 ray = glm::normalize(glm::vec3(direction));
+    const std::optional<RayHit> hit = scene.intersect(point, ray, settings.max_distance);
+    double weight = 1.0;
+    if (hit) {
+      if (glm::dot(hit->normal, ray) > 0.0f) ++backfaces;
+      weight = hit_weight(settings, hit->distance);
+    }
+    visible += weight;
+    bent += weight * direction;
+  }
+  SphereVisibility result;
+  result.visibility = float(std::clamp(visible / count, 0.0, 1.0));
+  const double bent_length = glm::length(bent);
+  if (bent_length > 0.0) result.bent_normal = glm::vec3(bent / bent_length);
+  result.backface_fraction = float(double(backfaces) / count);
   return result;
 }
 

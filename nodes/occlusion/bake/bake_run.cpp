@@ -1,0 +1,49 @@
+// run_bake(): each point of the range traced by estimate_occlusion (surfaces) or
+// estimate_sphere_visibility (volume points), batches of points spread over all cores.
+#include "nodes/occlusion/bake/bake_run.h"
+
+#include <algorithm>
+
+#include "nodes/occlusion/raytrace/parallel_for.h"
+
+namespace lg {
+
+PointRange chunk_range(uint64_t points, uint32_t index, uint32_t count) {
+  // points * index fits in 64 bits: points is at most 2^26 volume points or 2^26 texels.
+  return {points * index / count, points * (uint64_t(index) + 1) / count};
+}
+
+BakeData run_bake(const RayScene& scene, const BakeDomain& domain, const OcclusionSettings& settings, uint64_t seed,
+                  PointRange range, const std::function<void(uint64_t)>& progress) {
+  check_occlusion_settings(settings);
+  BakeData data;
+  data.resize(range.size());
+  auto bake_point = [&](size_t j) {
+    const uint64_t index = range.begin + j;
+    const BakeSample sample = domain.sample(index);
+    if (sample.coverage == 0.0f) return;  // zeros
+    float visibility;
+    glm::vec3 bent;
+    if (sample.sphere) {
+      const SphereVisibility v = estimate_sphere_visibility(scene, sample.point.position, settings, point_seed(seed, index));
+      if (v.backface_fraction > inside_backface_fraction) return;  // inside geometry: zeros
+      visibility = v.visibility, bent = v.bent_normal;
+    } else {
+      const OcclusionResult r =
+          estimate_occlusion(scene, sample.point.position, sample.point.normal, settings, point_seed(seed, index));
+      visibility = r.visibility, bent = r.bent_normal;
+    }
+    data.visibility[j] = visibility;
+    data.bent_normal[3 * j] = bent.x, data.bent_normal[3 * j + 1] = bent.y, data.bent_normal[3 * j + 2] = bent.z;
+    data.valid[j] = sample.coverage;
+  };
+  const size_t batch = std::max<size_t>(1024, range.size() / 200);
+  for (size_t begin = 0; begin < range.size(); begin += batch) {
+    const size_t end = std::min<size_t>(range.size(), begin + batch);
+    parallel_for(end - begin, [&](size_t j) { bake_point(begin + j); });
+    if (progress) progress(end);
+  }
+  return data;
+}
+
+}  // namespace lg
