@@ -1,7 +1,8 @@
 // `lumagraph bake` run as a process: chunked bakes merged byte for byte equal to a single run
 // (vertex on the bunny, volume and texel on a small OBJ, side files included), and bad input —
 // a missing or NaN mesh, an empty mesh, bad options, parts that do not fit — ending in the
-// documented exit status with a message that names the file.
+// documented exit status with a message that names the file. And the occlusion.bake graph node:
+// it compiles as a static pass, and running it fails clearly (it has no GPU kernel).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -162,6 +163,21 @@ TEST(BakeCli, BadInputEndsInItsExitStatusAndNamesTheFile) {
   r = lumagraph({"bake", "--help"});
   EXPECT_EQ(r.status, 0);
   EXPECT_TRUE(contains(r.out, "lumagraph bake merge PART... --out PATH"));
+}
+
+TEST(BakeCli, TheGraphNodeCompilesAsStaticAndRunningItIsAClearError) {
+  TempDir dir;
+  write_text(dir.file("bake.json"), R"({ "format": "lumagraph/1", "name": "bake-only",
+    "nodes": [ { "id": "bake", "type": "occlusion.bake", "params": { "resolution": 16, "rays": 64 } } ],
+    "links": [], "outputs": [ "bake.visibility" ] })");
+  Outcome r = lumagraph({"compile", dir.file("bake.json"), "--format", "text"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "bake/trace")) << r.out;
+  EXPECT_TRUE(contains(r.out, "static")) << r.out;
+  r = lumagraph({"render", dir.file("bake.json"), "--size", "8x8", "--out", dir.file("x.png")});
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_TRUE(contains(r.err, "node 'bake' (occlusion.bake) has no kernel in this build")) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }
 
 }  // namespace
