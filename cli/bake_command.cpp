@@ -99,13 +99,16 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
     o.occlusion.max_distance = d;
   }
   if (auto falloff = args.value("--falloff")) {
-    if (*falloff == "obscurance") o.occlusion.falloff = OcclusionFalloff::obscurance;
-    else if (*falloff != "none") return "--falloff expects none or obscurance; got '" + *falloff + "'";
+    if (*falloff == "obscurance")
+      o.occlusion.falloff = OcclusionFalloff::obscurance;
+    else if (*falloff != "none")
+      return "--falloff expects none or obscurance; got '" + *falloff + "'";
   }
   if (o.occlusion.falloff == OcclusionFalloff::obscurance && std::isinf(o.occlusion.max_distance))
     return "--falloff obscurance needs --max-distance";
   if (auto seed = args.value("--seed")) {
-    if (!parse_unsigned(*seed, uint64_t(1) << 53, o.seed)) return "--seed expects an integer from 0 to 2^53; got '" + *seed + "'";
+    if (!parse_unsigned(*seed, uint64_t(1) << 53, o.seed))
+      return "--seed expects an integer from 0 to 2^53; got '" + *seed + "'";
   }
   if (auto resolution = args.value("--resolution")) {
     if (o.mode == BakeMode::vertex) return "--resolution applies to texel and volume bakes, not vertex";
@@ -124,8 +127,7 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   if (auto chunk = args.value("--chunk")) {
     unsigned i = 0, count = 0;
     char tail = 0;
-    if (std::sscanf(chunk->c_str(), "%u/%u%c", &i, &count, &tail) != 2 || count == 0 || i >= count ||
-        count > 1000000)
+    if (std::sscanf(chunk->c_str(), "%u/%u%c", &i, &count, &tail) != 2 || count == 0 || i >= count || count > 1000000)
       return "--chunk expects I/N with 0 <= I < N <= 1000000; got '" + *chunk + "'";
     o.chunk_index = i, o.chunk_count = count, o.chunked = true;
   }
@@ -210,13 +212,13 @@ int bake_command(const std::vector<std::string>& argv) {
   }
 
   BakeFile file;
-  file.header = make_bake_header(*domain, mesh, input, options.occlusion, options.seed, options.chunk_index,
-                                 options.chunk_count);
+  file.header =
+      make_bake_header(*domain, mesh, input, options.occlusion, options.seed, options.chunk_index, options.chunk_count);
   if (options.mode == BakeMode::texel) file.lightmap_uvs = domain->lightmap_uvs();
   const PointRange range = file.header.range;
   ProgressLine progress(range.size());
-  file.data = run_bake(*scene, *domain, options.occlusion, options.seed, range,
-                       [&](uint64_t done) { progress.update(done); });
+  file.data =
+      run_bake(*scene, *domain, options.occlusion, options.seed, range, [&](uint64_t done) { progress.update(done); });
   progress.finish();
   const double seconds = progress.seconds();
 
@@ -224,11 +226,13 @@ int bake_command(const std::vector<std::string>& argv) {
   size_t valid = 0;
   for (size_t i = 0; i < file.data.size(); ++i)
     if (file.data.valid[i] > 0.0f) visibility_sum += file.data.visibility[i], ++valid;
-  std::printf("baked %llu %s points of %s (chunk %u/%u: %llu to %llu of %llu), %d rays each, in %.2f s; mean k_A %.4f over %zu valid points\n",
-              static_cast<unsigned long long>(range.size()), bake_mode_name(options.mode), input.c_str(),
-              options.chunk_index, options.chunk_count, static_cast<unsigned long long>(range.begin),
-              static_cast<unsigned long long>(range.end), static_cast<unsigned long long>(file.header.points),
-              options.occlusion.rays, seconds, valid ? visibility_sum / valid : 0.0, valid);
+  std::printf(
+      "baked %llu %s points of %s (chunk %u/%u: %llu to %llu of %llu), %d rays each, in %.2f s; mean k_A %.4f over %zu "
+      "valid points\n",
+      static_cast<unsigned long long>(range.size()), bake_mode_name(options.mode), input.c_str(), options.chunk_index,
+      options.chunk_count, static_cast<unsigned long long>(range.begin), static_cast<unsigned long long>(range.end),
+      static_cast<unsigned long long>(file.header.points), options.occlusion.rays, seconds,
+      valid ? visibility_sum / valid : 0.0, valid);
   try {
     if (options.chunked) {
       write_bake_file(*out, file);

@@ -20,7 +20,9 @@ using parse_test::read_text;
 using parse_test::TempDir;
 using parse_test::write_text;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 // A unit cube on a floor, as OBJ (counter-clockwise seen from outside).
 const char* cube_on_floor_obj = R"(v -2 0 -2
@@ -64,8 +66,8 @@ void expect_merge_matches_single_run(const std::string& input, std::vector<std::
   std::vector<std::string> merge{"bake", "merge"};
   for (int i = chunks - 1; i >= 0; --i) {  // parts in reverse order: merge sorts them
     const std::string part = dir.file("part" + std::to_string(i) + ".lgbake");
-    std::vector<std::string> bake{"bake", input, "--chunk", std::to_string(i) + "/" + std::to_string(chunks), "--out",
-                                  part};
+    std::vector<std::string> bake{"bake",  input, "--chunk", std::to_string(i) + "/" + std::to_string(chunks),
+                                  "--out", part};
     bake.insert(bake.end(), options.begin(), options.end());
     r = lumagraph(bake);
     ASSERT_EQ(r.status, 0) << r.err;
@@ -96,17 +98,17 @@ TEST(BakeCli, VolumeAndTexelChunksMergeToTheSingleRunByteForByte) {
   write_text(dir.file("cube.obj"), cube_on_floor_obj);
   expect_merge_matches_single_run(dir.file("cube.obj"), {"--mode", "volume", "--resolution", "8", "--rays", "16"}, 3,
                                   {".vti"});
-  expect_merge_matches_single_run(dir.file("cube.obj"),
-                                  {"--mode", "texel", "--resolution", "32", "--rays", "16", "--max-distance", "0.5",
-                                   "--falloff", "obscurance"},
-                                  3, {".png", ".exr"});
+  expect_merge_matches_single_run(
+      dir.file("cube.obj"),
+      {"--mode", "texel", "--resolution", "32", "--rays", "16", "--max-distance", "0.5", "--falloff", "obscurance"}, 3,
+      {".png", ".exr"});
 }
 
 TEST(BakeCli, TexelBakeWritesItsImages) {
   TempDir dir;
   write_text(dir.file("cube.obj"), cube_on_floor_obj);
-  Outcome r = lumagraph({"bake", dir.file("cube.obj"), "--mode", "texel", "--resolution", "48", "--rays", "16",
-                         "--out", dir.file("cube.lgbake")});
+  Outcome r = lumagraph({"bake", dir.file("cube.obj"), "--mode", "texel", "--resolution", "48", "--rays", "16", "--out",
+                         dir.file("cube.lgbake")});
   ASSERT_EQ(r.status, 0) << r.err;
   const ImageData ao = load_image(dir.file("cube.png"));
   EXPECT_EQ(ao.width, 48u);
@@ -137,13 +139,19 @@ TEST(BakeCli, BadInputEndsInItsExitStatusAndNamesTheFile) {
   };
   const std::vector<Case> cases{
       {{"bake", dir.file("missing.obj"), "--out", out}, 2, "missing.obj"},
-      {{"bake", dir.file("nan.gltf"), "--out", out}, 2, "nan.gltf: error: mesh 0 primitive 0: a vertex position is not finite"},
+      {{"bake", dir.file("nan.gltf"), "--out", out},
+       2,
+       "nan.gltf: error: mesh 0 primitive 0: a vertex position is not finite"},
       {{"bake", dir.file("empty.obj"), "--out", out}, 2, "empty.obj"},
-      {{"bake", dir.file("point.obj"), "--mode", "volume", "--out", out}, 2,
+      {{"bake", dir.file("point.obj"), "--mode", "volume", "--out", out},
+       2,
        "point.obj: error: a volume bake needs geometry with extent"},
-      {{"bake", dir.file("degenerate.obj"), "--mode", "texel", "--resolution", "4", "--out", out}, 2,
+      {{"bake", dir.file("degenerate.obj"), "--mode", "texel", "--resolution", "4", "--out", out},
+       2,
        "the size must be at least 8"},
-      {{"bake", dir.file("degenerate.obj"), "--rays", "2000000", "--out", out}, 1, "--rays expects a count from 1 to 1048576"},
+      {{"bake", dir.file("degenerate.obj"), "--rays", "2000000", "--out", out},
+       1,
+       "--rays expects a count from 1 to 1048576"},
       {{"bake", dir.file("degenerate.obj"), "--chunk", "3/3", "--out", out}, 1, "--chunk expects I/N"},
       {{"bake", dir.file("degenerate.obj"), "--resolution", "8", "--out", out}, 1, "not vertex"},
       {{"bake", dir.file("degenerate.obj"), "--falloff", "obscurance", "--out", out}, 1, "needs --max-distance"},

@@ -77,7 +77,8 @@ TEST(Bake, ChunksMergeByteIdenticallyInEveryMode) {
     }
     // The bake saw real occlusion (the comparison is not of constant data).
     size_t partial = 0;
-    for (size_t i = 0; i < whole.data.size(); ++i) partial += whole.data.visibility[i] > 0.0f && whole.data.visibility[i] < 1.0f;
+    for (size_t i = 0; i < whole.data.size(); ++i)
+      partial += whole.data.visibility[i] > 0.0f && whole.data.visibility[i] < 1.0f;
     EXPECT_GT(partial, 0u) << bake_mode_name(mode);
   }
 }
@@ -85,7 +86,8 @@ TEST(Bake, ChunksMergeByteIdenticallyInEveryMode) {
 TEST(Bake, FilesRoundTripAndBadOnesAreNamed) {
   const WorldMesh mesh = small_scene();
   const BakeDomain domain = BakeDomain::lightmap(mesh, 64);
-  const BakeFile file = bake(mesh, domain, {.rays = 8, .max_distance = 0.5f, .falloff = OcclusionFalloff::obscurance}, 1, 2);
+  const BakeFile file =
+      bake(mesh, domain, {.rays = 8, .max_distance = 0.5f, .falloff = OcclusionFalloff::obscurance}, 1, 2);
   TempFolder folder;
   const std::string path = folder.file("part.lgbake");
   write_bake_file(path, file);
@@ -127,7 +129,8 @@ TEST(Bake, MergeRejectsPartsThatDoNotBelongTogether) {
   };
   EXPECT_EQ(message({a, b}, {"a", "b"}), "merge: chunks missing of 3: 2");
   EXPECT_EQ(message({a, b, b, c}, {"a", "b", "b2", "c"}), "b2: chunk 1 is also in b");
-  EXPECT_NE(message({a, other, c}, {"a", "other", "c"}).find("other: belongs to another bake than a"), std::string::npos);
+  EXPECT_NE(message({a, other, c}, {"a", "other", "c"}).find("other: belongs to another bake than a"),
+            std::string::npos);
   EXPECT_NE(message({a, halves, c}, {"a", "halves", "c"}).find("halves: is a chunk of 2"), std::string::npos);
   EXPECT_EQ(message({c, a, b}, {"c", "a", "b"}), "merged");
 }

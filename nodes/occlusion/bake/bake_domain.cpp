@@ -10,7 +10,7 @@
 namespace lg {
 namespace {
 
-constexpr double chart_padding = 1.0;  // texels between a chart's legs and its cell's edges
+constexpr double chart_padding = 1.0;    // texels between a chart's legs and its cell's edges
 constexpr uint32_t min_cell_texels = 4;  // a chart leg of at least one texel
 
 glm::vec3 normalized_or_zero(glm::vec3 v) {
@@ -22,9 +22,12 @@ glm::vec3 normalized_or_zero(glm::vec3 v) {
 
 const char* bake_mode_name(BakeMode mode) {
   switch (mode) {
-    case BakeMode::vertex: return "vertex";
-    case BakeMode::texel: return "texel";
-    case BakeMode::volume: return "volume";
+    case BakeMode::vertex:
+      return "vertex";
+    case BakeMode::texel:
+      return "texel";
+    case BakeMode::volume:
+      return "volume";
   }
   return "?";
 }
@@ -35,7 +38,9 @@ std::optional<BakeMode> parse_bake_mode(std::string_view name) {
   return std::nullopt;
 }
 
-BakeDomain BakeDomain::vertices(const WorldMesh& mesh) { return BakeDomain(BakeMode::vertex, mesh); }
+BakeDomain BakeDomain::vertices(const WorldMesh& mesh) {
+  return BakeDomain(BakeMode::vertex, mesh);
+}
 
 BakeDomain BakeDomain::lightmap(const WorldMesh& mesh, uint32_t size) {
   if (size < min_cell_texels || size > max_lightmap_size)
@@ -96,9 +101,12 @@ BakeDomain BakeDomain::volume(const WorldMesh& mesh, std::array<uint32_t, 3> dim
 
 uint64_t BakeDomain::size() const {
   switch (mode_) {
-    case BakeMode::vertex: return mesh_->positions.size();
-    case BakeMode::texel: return uint64_t(lightmap_size_) * lightmap_size_;
-    case BakeMode::volume: return uint64_t(dims_[0]) * dims_[1] * dims_[2];
+    case BakeMode::vertex:
+      return mesh_->positions.size();
+    case BakeMode::texel:
+      return uint64_t(lightmap_size_) * lightmap_size_;
+    case BakeMode::volume:
+      return uint64_t(dims_[0]) * dims_[1] * dims_[2];
   }
   return 0;
 }
@@ -110,9 +118,11 @@ BakeSample BakeDomain::sample(uint64_t index) const {
       s.point = {mesh_->positions[index], mesh_->normals[index]};
       s.coverage = glm::length(s.point.normal) > 0.0f ? 1.0f : 0.0f;
       return s;
-    case BakeMode::texel: return texel_sample(index);
+    case BakeMode::texel:
+      return texel_sample(index);
     case BakeMode::volume: {
-      const uint64_t x = index % dims_[0], y = (index / dims_[0]) % dims_[1], z = index / (uint64_t(dims_[0]) * dims_[1]);
+      const uint64_t x = index % dims_[0], y = (index / dims_[0]) % dims_[1],
+                     z = index / (uint64_t(dims_[0]) * dims_[1]);
       s.point.position = glm::vec3(origin_ + spacing_ * glm::dvec3(double(x), double(y), double(z)));
       s.coverage = 1.0f;
       s.sphere = true;
@@ -155,9 +165,8 @@ std::vector<float> BakeDomain::lightmap_uvs() const {
   std::vector<float> uvs;
   if (mode_ != BakeMode::texel) return uvs;
   const double leg = cell_texels_ - 3.0;
-  const double chart[3][2] = {{chart_padding, chart_padding},
-                              {chart_padding + leg, chart_padding},
-                              {chart_padding, chart_padding + leg}};
+  const double chart[3][2] = {
+      {chart_padding, chart_padding}, {chart_padding + leg, chart_padding}, {chart_padding, chart_padding + leg}};
   uvs.reserve(mesh_->triangle_count() * 6);
   for (size_t t = 0; t < mesh_->triangle_count(); ++t) {
     const double cell_x = double(t % cells_per_row_) * cell_texels_, cell_y = double(t / cells_per_row_) * cell_texels_;

@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <bit>
-#include <type_traits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 #include "graph/diagnostics.h"
 #include "graph/json_reader.h"
@@ -23,7 +23,9 @@ constexpr const char* format_name = "lumagraph-bake/1";
 constexpr uint64_t max_header_bytes = 64u << 20;
 constexpr size_t alignment = 16;
 
-const char* falloff_name(OcclusionFalloff f) { return f == OcclusionFalloff::none ? "none" : "obscurance"; }
+const char* falloff_name(OcclusionFalloff f) {
+  return f == OcclusionFalloff::none ? "none" : "obscurance";
+}
 
 std::string hex64(uint64_t v) {
   char text[17];
@@ -49,8 +51,8 @@ template <class File>
 auto arrays_of(File& file) {
   using Values = std::conditional_t<std::is_const_v<File>, const std::vector<float>, std::vector<float>>;
   std::vector<ArrayRef<Values>> arrays{{"visibility", 1, &file.data.visibility},
-                               {"bent_normal", 3, &file.data.bent_normal},
-                               {"valid", 1, &file.data.valid}};
+                                       {"bent_normal", 3, &file.data.bent_normal},
+                                       {"valid", 1, &file.data.valid}};
   if (file.header.mode == BakeMode::texel) arrays.push_back({"lightmap_uv", 2, &file.lightmap_uvs});
   return arrays;
 }
@@ -63,7 +65,8 @@ JsonValue bake_identity_json(const BakeHeader& h) {
   j.set("input", h.input);
   j.set("input_hash", hex64(h.input_hash));
   j.set("rays", h.occlusion.rays);
-  j.set("max_distance", std::isinf(h.occlusion.max_distance) ? JsonValue("infinite") : JsonValue(double(h.occlusion.max_distance)));
+  j.set("max_distance",
+        std::isinf(h.occlusion.max_distance) ? JsonValue("infinite") : JsonValue(double(h.occlusion.max_distance)));
   j.set("falloff", falloff_name(h.occlusion.falloff));
   j.set("seed", h.seed);
   j.set("points", h.points);
@@ -94,9 +97,7 @@ JsonValue bake_identity_json(const BakeHeader& h) {
 class HeaderReader {
  public:
   explicit HeaderReader(const std::string& path) : path_(path) {}
-  [[noreturn]] void fail(const std::string& message) const {
-    throw BakeFileError(path_ + ": " + message);
-  }
+  [[noreturn]] void fail(const std::string& message) const { throw BakeFileError(path_ + ": " + message); }
   const JsonValue& member(const JsonValue& object, const char* key) const {
     const JsonValue* v = object.find(key);
     if (!v) fail(std::string("the header lacks \"") + key + "\"");
@@ -130,8 +131,7 @@ class HeaderReader {
 BakeHeader parse_header(const JsonValue& j, const HeaderReader& in) {
   BakeHeader h;
   if (!j.is_object()) in.fail("the header is not a JSON object");
-  if (in.string(j, "format") != format_name)
-    in.fail("format \"" + in.string(j, "format") + "\" is not " + format_name);
+  if (in.string(j, "format") != format_name) in.fail("format \"" + in.string(j, "format") + "\" is not " + format_name);
   const std::optional<BakeMode> mode = parse_bake_mode(in.string(j, "mode"));
   if (!mode) in.fail("mode \"" + in.string(j, "mode") + "\" is not vertex, texel or volume");
   h.mode = *mode;
@@ -281,8 +281,8 @@ BakeFile merge_bake_parts(const std::vector<BakeFile>& parts, const std::vector<
       throw BakeFileError(paths[p] + ": belongs to another bake than " + paths[0] +
                           " (the input, its geometry, the mode, the settings or the seed differ)");
     if (h.chunk_count != first.chunk_count)
-      throw BakeFileError(paths[p] + ": is a chunk of " + std::to_string(h.chunk_count) + ", " + paths[0] +
-                          " of " + std::to_string(first.chunk_count));
+      throw BakeFileError(paths[p] + ": is a chunk of " + std::to_string(h.chunk_count) + ", " + paths[0] + " of " +
+                          std::to_string(first.chunk_count));
     if (parts[p].lightmap_uvs != parts[0].lightmap_uvs)
       throw BakeFileError(paths[p] + ": its lightmap UVs differ from " + paths[0] + "'s");
     if (auto [at, fresh] = by_index.emplace(h.chunk_index, p); !fresh)

@@ -47,7 +47,7 @@ struct BakeHeader {
 
 struct BakeFile {
   BakeHeader header;
-  BakeData data;                  // header.range.size() points
+  BakeData data;                    // header.range.size() points
   std::vector<float> lightmap_uvs;  // texel: 6 per triangle (BakeDomain::lightmap_uvs)
 };
 

@@ -47,12 +47,17 @@ std::string encode_vti(const BakeFile& volume) {
          format_vector(h.spacing) + "\" Direction=\"1 0 0 0 1 0 0 0 1\">\n";
   out += "    <Piece Extent=\"" + extent + "\">\n";
   out += "      <PointData Scalars=\"visibility\" Vectors=\"bent_normal\">\n";
-  out += "        <DataArray type=\"Float32\" Name=\"visibility\" NumberOfComponents=\"1\" format=\"appended\" "
-         "offset=\"0\"/>\n";
-  out += "        <DataArray type=\"Float32\" Name=\"bent_normal\" NumberOfComponents=\"3\" format=\"appended\" "
-         "offset=\"" + std::to_string(scalar_block) + "\"/>\n";
-  out += "        <DataArray type=\"Float32\" Name=\"valid\" NumberOfComponents=\"1\" format=\"appended\" "
-         "offset=\"" + std::to_string(scalar_block + vector_block) + "\"/>\n";
+  out +=
+      "        <DataArray type=\"Float32\" Name=\"visibility\" NumberOfComponents=\"1\" format=\"appended\" "
+      "offset=\"0\"/>\n";
+  out +=
+      "        <DataArray type=\"Float32\" Name=\"bent_normal\" NumberOfComponents=\"3\" format=\"appended\" "
+      "offset=\"" +
+      std::to_string(scalar_block) + "\"/>\n";
+  out +=
+      "        <DataArray type=\"Float32\" Name=\"valid\" NumberOfComponents=\"1\" format=\"appended\" "
+      "offset=\"" +
+      std::to_string(scalar_block + vector_block) + "\"/>\n";
   out += "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n";
   out += "  <AppendedData encoding=\"raw\">\n   _";
   append_block(out, volume.data.visibility);

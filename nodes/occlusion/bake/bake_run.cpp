@@ -25,7 +25,8 @@ BakeData run_bake(const RayScene& scene, const BakeDomain& domain, const Occlusi
     float visibility;
     glm::vec3 bent;
     if (sample.sphere) {
-      const SphereVisibility v = estimate_sphere_visibility(scene, sample.point.position, settings, point_seed(seed, index));
+      const SphereVisibility v =
+          estimate_sphere_visibility(scene, sample.point.position, settings, point_seed(seed, index));
       if (v.backface_fraction > inside_backface_fraction) return;  // inside geometry: zeros
       visibility = v.visibility, bent = v.bent_normal;
     } else {
