@@ -43,18 +43,30 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
   const uint32_t count = uint32_t(settings.rays);
   double visible = 0.0;
   glm::dvec3 bent{0.0};
-  for (uint32_t i = 0; i < count; ++i) {
-    const glm::dvec3 direction = frame.to_world(cosine_hemisphere(stratified_point(i, count, seed)));
-    const glm::vec3 ray = glm::normalize(glm::vec3(direction));
-    double weight;
-    if (settings.falloff == OcclusionFalloff::obscurance) {
-      const std::optional<RayHit> hit = scene.intersect(origin, ray, settings.max_distance);
-      weight = hit ? hit_weight(settings, hit->distance) : 1.0;
-    } else {
-      weight = scene.occluded(origin, ray, settings.max_distance) ? 0.0 : 1.0;
+  // Rays go in packets of consecutive sample indices: the same packets on every run.
+  constexpr size_t packet = RayScene::packet_size;
+  glm::dvec3 directions[packet];
+  glm::vec3 rays[packet];
+  bool blocked[packet];
+  for (uint32_t first = 0; first < count; first += packet) {
+    const size_t n = std::min<size_t>(packet, count - first);
+    for (size_t j = 0; j < n; ++j) {
+      directions[j] = frame.to_world(cosine_hemisphere(stratified_point(first + uint32_t(j), count, seed)));
+      rays[j] = glm::normalize(glm::vec3(directions[j]));
     }
-    visible += weight;
-    bent += weight * direction;
+    if (settings.falloff == OcclusionFalloff::none)
+      scene.occluded_packet(origin, std::span(rays, n), settings.max_distance, std::span(blocked, n));
+    for (size_t j = 0; j < n; ++j) {
+      double weight;
+      if (settings.falloff == OcclusionFalloff::obscurance) {
+        const std::optional<RayHit> hit = scene.intersect(origin, rays[j], settings.max_distance);
+        weight = hit ? hit_weight(settings, hit->distance) : 1.0;
+      } else {
+        weight = blocked[j] ? 0.0 : 1.0;
+      }
+      visible += weight;
+      bent += weight * directions[j];
+    }
   }
   OcclusionResult result;
   const double k = std::clamp(visible / count, 0.0, 1.0);

@@ -148,4 +148,25 @@ bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float t_max) cons
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 
+void RayScene::occluded_packet(glm::vec3 origin, std::span<const glm::vec3> directions, float t_max,
+                               std::span<bool> occluded) const {
+  static_assert(packet_size == 8, "the packet is Embree's RTCRay8");
+  alignas(32) int valid[8];
+  alignas(32) RTCRay8 rays{};
+  for (size_t i = 0; i < 8; ++i) {
+    const bool used = i < directions.size();
+    valid[i] = used ? -1 : 0;
+    const glm::vec3 d = used ? directions[i] : glm::vec3(0.0f, 0.0f, 1.0f);
+    rays.org_x[i] = origin.x, rays.org_y[i] = origin.y, rays.org_z[i] = origin.z;
+    rays.dir_x[i] = d.x, rays.dir_y[i] = d.y, rays.dir_z[i] = d.z;
+    rays.tnear[i] = 0.0f, rays.tfar[i] = t_max;
+    rays.mask[i] = std::numeric_limits<unsigned>::max();
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcOccluded8(valid, embree_->scene, &context, &rays);
+  for (size_t i = 0; i < directions.size(); ++i) occluded[i] = rays.tfar[i] < 0.0f;
+}
+
 }  // namespace lg

@@ -39,6 +39,11 @@ class RayScene {
   std::optional<RayHit> intersect(glm::vec3 origin, glm::vec3 direction, float t_max) const;
   // Whether anything lies along the ray within (0, t_max].
   bool occluded(glm::vec3 origin, glm::vec3 direction, float t_max) const;
+  // occluded() for up to packet_size rays from one origin at once, through Embree's packet
+  // traversal (faster for such coherent rays); sets occluded[i] for each direction.
+  static constexpr size_t packet_size = 8;
+  void occluded_packet(glm::vec3 origin, std::span<const glm::vec3> directions, float t_max,
+                       std::span<bool> occluded) const;
 
   size_t triangle_count() const { return indices_.size() / 3; }
   // World-space corners of triangle `primitive`.
