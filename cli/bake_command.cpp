@@ -134,14 +134,19 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   return std::nullopt;
 }
 
-// "\rbake: 45% (1,134 of 2,503 points)  0.4 s" on a terminal, nothing otherwise.
+// "\rbake [###########             ]  45%  1134 of 2503 points  0.4 s, 0.5 s left" on a terminal,
+// nothing otherwise.
 class ProgressLine {
  public:
   explicit ProgressLine(uint64_t total) : total_(total), shown_(isatty(STDERR_FILENO)) {}
   void update(uint64_t done) const {
     if (!shown_ || total_ == 0) return;
-    std::fprintf(stderr, "\rbake: %3d%% (%llu of %llu points)  %.1f s", int(100 * done / total_),
-                 static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), seconds());
+    constexpr int width = 24;
+    const int filled = int(width * done / total_);
+    const double elapsed = seconds(), left = done > 0 ? elapsed * double(total_ - done) / double(done) : 0.0;
+    std::fprintf(stderr, "\rbake [%.*s%*s] %3d%%  %llu of %llu points  %.1f s, %.1f s left ", filled,
+                 "########################", width - filled, "", int(100 * done / total_),
+                 static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), elapsed, left);
   }
   void finish() const {
     if (shown_ && total_ > 0) std::fputc('\n', stderr);

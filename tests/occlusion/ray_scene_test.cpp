@@ -58,9 +58,18 @@ TEST(RayScene, PacketsAgreeWithSingleRays) {
     for (size_t first = 0; first < directions.size(); first += RayScene::packet_size) {
       const size_t n = std::min(RayScene::packet_size, directions.size() - first);
       bool blocked[RayScene::packet_size];
+      std::optional<RayHit> hits[RayScene::packet_size];
       scene.occluded_packet(origin, std::span(directions).subspan(first, n), t_max, std::span(blocked, n));
+      scene.intersect_packet(origin, std::span(directions).subspan(first, n), t_max, std::span(hits, n));
       for (size_t j = 0; j < n; ++j) {
         EXPECT_EQ(blocked[j], scene.occluded(origin, directions[first + j], t_max)) << "ray " << first + j;
+        const std::optional<RayHit> single = scene.intersect(origin, directions[first + j], t_max);
+        ASSERT_EQ(hits[j].has_value(), single.has_value()) << "ray " << first + j;
+        if (single) {
+          EXPECT_EQ(hits[j]->primitive, single->primitive);
+          EXPECT_NEAR(hits[j]->distance, single->distance, 1e-6f * single->distance);
+          EXPECT_EQ(hits[j]->normal, single->normal);
+        }
         blocked_count += blocked[j];
       }
     }

@@ -23,6 +23,34 @@ double hit_weight(const OcclusionSettings& settings, float distance) {
   return x * (2.0 - x);
 }
 
+// Traces `count` rays from `origin` in packets of consecutive sample indices (the same packets on
+// every run, so results do not depend on threads): `direction(i)` is ray i's unit direction;
+// `visit(direction, hit)` sees every ray in order with its closest hit, when `need_hits`, or
+// with any hit (distance and normal then unset) otherwise.
+template <class Direction, class Visit>
+void trace_rays(const RayScene& scene, glm::vec3 origin, uint32_t count, float t_max, bool need_hits,
+                Direction direction, Visit visit) {
+  constexpr size_t packet = RayScene::packet_size;
+  glm::dvec3 directions[packet];
+  glm::vec3 rays[packet];
+  bool blocked[packet];
+  std::optional<RayHit> hits[packet];
+  for (uint32_t first = 0; first < count; first += packet) {
+    const size_t n = std::min<size_t>(packet, count - first);
+    for (size_t j = 0; j < n; ++j) {
+      directions[j] = direction(first + uint32_t(j));
+      rays[j] = glm::normalize(glm::vec3(directions[j]));
+    }
+    if (need_hits) {
+      scene.intersect_packet(origin, std::span(rays, n), t_max, std::span(hits, n));
+    } else {
+      scene.occluded_packet(origin, std::span(rays, n), t_max, std::span(blocked, n));
+      for (size_t j = 0; j < n; ++j) hits[j] = blocked[j] ? std::optional(RayHit{}) : std::nullopt;
+    }
+    for (size_t j = 0; j < n; ++j) visit(directions[j], rays[j], hits[j]);
+  }
+}
+
 }  // namespace
 
 void check_occlusion_settings(const OcclusionSettings& settings) {
@@ -43,31 +71,14 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
   const uint32_t count = uint32_t(settings.rays);
   double visible = 0.0;
   glm::dvec3 bent{0.0};
-  // Rays go in packets of consecutive sample indices: the same packets on every run.
-  constexpr size_t packet = RayScene::packet_size;
-  glm::dvec3 directions[packet];
-  glm::vec3 rays[packet];
-  bool blocked[packet];
-  for (uint32_t first = 0; first < count; first += packet) {
-    const size_t n = std::min<size_t>(packet, count - first);
-    for (size_t j = 0; j < n; ++j) {
-      directions[j] = frame.to_world(cosine_hemisphere(stratified_point(first + uint32_t(j), count, seed)));
-      rays[j] = glm::normalize(glm::vec3(directions[j]));
-    }
-    if (settings.falloff == OcclusionFalloff::none)
-      scene.occluded_packet(origin, std::span(rays, n), settings.max_distance, std::span(blocked, n));
-    for (size_t j = 0; j < n; ++j) {
-      double weight;
-      if (settings.falloff == OcclusionFalloff::obscurance) {
-        const std::optional<RayHit> hit = scene.intersect(origin, rays[j], settings.max_distance);
-        weight = hit ? hit_weight(settings, hit->distance) : 1.0;
-      } else {
-        weight = blocked[j] ? 0.0 : 1.0;
-      }
-      visible += weight;
-      bent += weight * directions[j];
-    }
-  }
+  trace_rays(
+      scene, origin, count, settings.max_distance, settings.falloff == OcclusionFalloff::obscurance,
+      [&](uint32_t i) { return frame.to_world(cosine_hemisphere(stratified_point(i, count, seed))); },
+      [&](glm::dvec3 direction, glm::vec3, const std::optional<RayHit>& hit) {
+        const double weight = hit ? hit_weight(settings, hit->distance) : 1.0;
+        visible += weight;
+        bent += weight * direction;
+      });
   OcclusionResult result;
   const double k = std::clamp(visible / count, 0.0, 1.0);
   result.visibility = float(k);
@@ -84,21 +95,19 @@ SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 poi
   double visible = 0.0;
   glm::dvec3 bent{0.0};
   uint32_t backfaces = 0;
-  for (uint32_t i = 0; i < count; ++i) {
+  auto direction = [&](uint32_t i) {
     const glm::dvec2 u = stratified_point(i, count, seed);
     const double z = 1.0 - 2.0 * u.y, r = std::sqrt(std::max(0.0, 1.0 - z * z));
     const double phi = 2.0 * std::numbers::pi * u.x;
-    const glm::dvec3 direction{r * std::cos(phi), r * std::sin(phi), z};
-    const glm::vec3 ray = glm::normalize(glm::vec3(direction));
-    const std::optional<RayHit> hit = scene.intersect(point, ray, settings.max_distance);
-    double weight = 1.0;
-    if (hit) {
-      if (glm::dot(hit->normal, ray) > 0.0f) ++backfaces;
-      weight = hit_weight(settings, hit->distance);
-    }
-    visible += weight;
-    bent += weight * direction;
-  }
+    return glm::dvec3{r * std::cos(phi), r * std::sin(phi), z};
+  };
+  trace_rays(scene, point, count, settings.max_distance, true, direction,
+             [&](glm::dvec3 d, glm::vec3 ray, const std::optional<RayHit>& hit) {
+               if (hit && glm::dot(hit->normal, ray) > 0.0f) ++backfaces;
+               const double weight = hit ? hit_weight(settings, hit->distance) : 1.0;
+               visible += weight;
+               bent += weight * d;
+             });
   SphereVisibility result;
   result.visibility = float(std::clamp(visible / count, 0.0, 1.0));
   const double bent_length = glm::length(bent);

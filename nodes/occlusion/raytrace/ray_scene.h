@@ -44,6 +44,9 @@ class RayScene {
   static constexpr size_t packet_size = 8;
   void occluded_packet(glm::vec3 origin, std::span<const glm::vec3> directions, float t_max,
                        std::span<bool> occluded) const;
+  // intersect() for up to packet_size rays from one origin at once.
+  void intersect_packet(glm::vec3 origin, std::span<const glm::vec3> directions, float t_max,
+                        std::span<std::optional<RayHit>> hits) const;
 
   size_t triangle_count() const { return indices_.size() / 3; }
   // World-space corners of triangle `primitive`.
@@ -55,6 +58,7 @@ class RayScene {
 
  private:
   void build();
+  RayHit make_hit(float distance, uint32_t primitive, glm::vec3 direction) const;
 
   std::vector<glm::vec3> positions_;
   std::vector<uint32_t> indices_;
