@@ -218,6 +218,17 @@ TEST(Bake, VolumeGridsAndPointsInsideGeometry) {
   EXPECT_GT(inside, 0u);
 }
 
+TEST(Bake, AnEmptyMeshBakesNothingWithoutFailing) {
+  const WorldMesh empty;
+  const RayScene scene(empty.positions, empty.indices);
+  EXPECT_EQ(run_bake(scene, BakeDomain::vertices(empty), {}, 1, {0, 0}).size(), 0u);
+  const BakeDomain lightmap = BakeDomain::lightmap(empty, 8);
+  const BakeData texels = run_bake(scene, lightmap, {.rays = 4}, 1, {0, lightmap.size()});
+  ASSERT_EQ(texels.size(), 64u);
+  for (float v : texels.valid) EXPECT_EQ(v, 0.0f);
+  EXPECT_TRUE(lightmap.lightmap_uvs().empty());
+}
+
 TEST(Bake, BunnyAt256RaysMatchesA4096RayReferenceWithinMonteCarloNoise) {
   // Per vertex, the 256-ray estimate and an independent 4,096-ray one (another seed) differ by
   // noise of standard deviation at most sqrt(k (1 - k) (1/256 + 1/4096)) (the binomial bound;
