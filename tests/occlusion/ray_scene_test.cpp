@@ -122,7 +122,7 @@ TEST(RayScene, BadInputNamesTheProblem) {
     RayScene scene(view);
     FAIL() << "an infinite transform was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("after its world transform"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has a non-finite world position"), std::string::npos) << e.what();
   }
 }
 

@@ -2,8 +2,6 @@
 // estimate_sphere_visibility (volume points), batches of points spread over all cores.
 #include "nodes/occlusion/bake/bake_run.h"
 
-#include <algorithm>
-
 #include "nodes/occlusion/raytrace/parallel_for.h"
 
 namespace lg {
@@ -38,12 +36,7 @@ BakeData run_bake(const RayScene& scene, const BakeDomain& domain, const Occlusi
     data.bent_normal[3 * j] = bent.x, data.bent_normal[3 * j + 1] = bent.y, data.bent_normal[3 * j + 2] = bent.z;
     data.valid[j] = sample.coverage;
   };
-  const size_t batch = std::max<size_t>(1024, range.size() / 200);
-  for (size_t begin = 0; begin < range.size(); begin += batch) {
-    const size_t end = std::min<size_t>(range.size(), begin + batch);
-    parallel_for(end - begin, [&](size_t j) { bake_point(begin + j); });
-    if (progress) progress(end);
-  }
+  parallel_for_with_progress(range.size(), bake_point, progress);
   return data;
 }
 

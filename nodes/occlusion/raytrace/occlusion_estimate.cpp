@@ -126,17 +126,13 @@ std::vector<OcclusionResult> estimate_occlusion_many(const RayScene& scene, std:
                                                      const std::function<void(size_t)>& progress) {
   check_occlusion_settings(settings);
   std::vector<OcclusionResult> results(points.size());
-  // Batches of about 1% (at least 256 points) between progress reports, each spread over all cores.
-  const size_t batch = progress ? std::max<size_t>(256, points.size() / 100) : std::max<size_t>(1, points.size());
-  for (size_t begin = 0; begin < points.size(); begin += batch) {
-    const size_t end = std::min(points.size(), begin + batch);
-    parallel_for(end - begin, [&](size_t j) {
-      const size_t i = begin + j;
-      results[i] =
-          estimate_occlusion(scene, points[i].position, points[i].normal, settings, point_seed(seed, first_index + i));
-    });
-    if (progress) progress(end);
-  }
+  parallel_for_with_progress(
+      points.size(),
+      [&](size_t i) {
+        results[i] = estimate_occlusion(scene, points[i].position, points[i].normal, settings,
+                                        point_seed(seed, first_index + i));
+      },
+      progress);
   return results;
 }
 

@@ -10,7 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "runtime/scene/mesh_tools.h"
+#include "nodes/occlusion/raytrace/world_mesh.h"
 
 namespace lg {
 
@@ -55,19 +55,9 @@ RTCRay make_ray(glm::vec3 origin, glm::vec3 direction, float t_max) {
 }  // namespace
 
 RayScene::RayScene(const SceneView& view) {
-  for (size_t d = 0; d < view.draws.size(); ++d) {
-    const DrawItem& draw = view.draws[d];
-    if (draw.mesh < 0 || size_t(draw.mesh) >= view.meshes.size())
-      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(draw.mesh) +
-                                  ", but the scene has " + std::to_string(view.meshes.size()));
-    const MeshData& mesh = view.meshes[size_t(draw.mesh)];
-    const std::string name = "mesh '" + mesh.name + "' (draw " + std::to_string(d) + ")";
-    if (std::string problem = mesh_problem(mesh); !problem.empty()) throw std::invalid_argument(name + ": " + problem);
-    const uint32_t base = uint32_t(positions_.size());
-    for (const glm::vec3& p : mesh.positions) positions_.push_back(glm::vec3(draw.world * glm::vec4(p, 1.0f)));
-    check_finite(std::span(positions_).subspan(base), name + " after its world transform");
-    for (uint32_t i : mesh.indices) indices_.push_back(base + i);
-  }
+  WorldMesh mesh = make_world_mesh(view);
+  positions_ = std::move(mesh.positions);
+  indices_ = std::move(mesh.indices);
   build();
 }
 

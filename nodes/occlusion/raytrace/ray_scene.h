@@ -25,8 +25,8 @@ struct RayHit {
 
 class RayScene {
  public:
-  // Throws std::invalid_argument for a non-finite position or a bad mesh (mesh_problem()), naming
-  // the draw and mesh.
+  // The draws as make_world_mesh() flattens them. Throws std::invalid_argument for a non-finite
+  // position or a bad mesh (mesh_problem()), naming the mesh.
   explicit RayScene(const SceneView& view);
   // `indices` holds three per triangle into `positions`; `name` appears in error messages.
   RayScene(std::span<const glm::vec3> positions, std::span<const uint32_t> indices,

@@ -1,4 +1,4 @@
-// The geometry a bake works on: every draw of a SceneView moved into world space (positions,
+// The geometry bakes and ray-traced references work on: every draw of a SceneView moved into world space (positions,
 // unit normals by the inverse transpose, indices into one shared vertex list, draws in order),
 // with each draw's range of vertices, and a hash that identifies it across machines.
 #pragma once
