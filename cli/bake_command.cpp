@@ -127,8 +127,9 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   if (auto chunk = args.value("--chunk")) {
     unsigned i = 0, count = 0;
     char tail = 0;
-    if (std::sscanf(chunk->c_str(), "%u/%u%c", &i, &count, &tail) != 2 || count == 0 || i >= count || count > 1000000)
-      return "--chunk expects I/N with 0 <= I < N <= 1000000; got '" + *chunk + "'";
+    if (std::sscanf(chunk->c_str(), "%u/%u%c", &i, &count, &tail) != 2 || count == 0 || i >= count ||
+        count > max_bake_chunks)
+      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_bake_chunks) + "; got '" + *chunk + "'";
     o.chunk_index = i, o.chunk_count = count, o.chunked = true;
   }
   return std::nullopt;

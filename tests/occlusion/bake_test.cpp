@@ -110,6 +110,11 @@ TEST(Bake, FilesRoundTripAndBadOnesAreNamed) {
   bad_json[16] = '[';
   expect_error("bad-json", bad_json, "the header is not");
   EXPECT_THROW(read_bake_file(folder.file("missing")), BakeFileError);
+  // A header whose points disagree with its layout (a lightmap of size^2 texels).
+  BakeFile inconsistent = bake(mesh, domain, {.rays = 2}, 0, 1);
+  inconsistent.header.points += 1, inconsistent.header.range.end += 1;
+  inconsistent.data.resize(inconsistent.data.size() + 1);
+  expect_error("inconsistent", encode_bake_file(inconsistent), "the texel layout describes 4096 points");
 }
 
 TEST(Bake, MergeRejectsPartsThatDoNotBelongTogether) {

@@ -149,10 +149,10 @@ BakeHeader parse_header(const JsonValue& j, const HeaderReader& in) {
   if (falloff != "none" && falloff != "obscurance") in.fail("falloff \"" + falloff + "\" is not none or obscurance");
   h.occlusion.falloff = falloff == "none" ? OcclusionFalloff::none : OcclusionFalloff::obscurance;
   h.seed = in.integer(j, "seed");
-  h.points = in.integer(j, "points");
+  h.points = in.integer(j, "points", std::numeric_limits<uint32_t>::max());
   const JsonValue& chunk = in.member(j, "chunk");
-  h.chunk_count = uint32_t(in.integer(chunk, "count", std::numeric_limits<uint32_t>::max()));
-  h.chunk_index = uint32_t(in.integer(chunk, "index", std::numeric_limits<uint32_t>::max()));
+  h.chunk_count = uint32_t(in.integer(chunk, "count", max_bake_chunks));
+  h.chunk_index = uint32_t(in.integer(chunk, "index", max_bake_chunks));
   h.range = {in.integer(chunk, "begin"), in.integer(chunk, "end")};
   if (h.chunk_count == 0 || h.chunk_index >= h.chunk_count) in.fail("chunk index must be below the chunk count");
   const PointRange expected = chunk_range(h.points, h.chunk_index, h.chunk_count);
@@ -176,6 +176,19 @@ BakeHeader parse_header(const JsonValue& j, const HeaderReader& in) {
     h.origin = in.vec3(v, "origin");
     h.spacing = in.vec3(v, "spacing");
   }
+  // The layout must describe exactly the bake's points, as the side files rely on it.
+  uint64_t described = 0;
+  if (h.mode == BakeMode::vertex)
+    for (const WorldMesh::Part& p : h.parts) described += p.vertex_count;
+  if (h.mode == BakeMode::texel) described = uint64_t(h.lightmap_size) * h.lightmap_size;
+  if (h.mode == BakeMode::volume) {
+    for (uint32_t d : h.dims)
+      if (d < 2 || d > max_volume_axis) in.fail("volume dims must be from 2 to " + std::to_string(max_volume_axis));
+    described = uint64_t(h.dims[0]) * h.dims[1] * h.dims[2];
+  }
+  if (described != h.points)
+    in.fail("the " + std::string(bake_mode_name(h.mode)) + " layout describes " + std::to_string(described) +
+            " points, the header says " + std::to_string(h.points));
   return h;
 }
 

@@ -7,7 +7,7 @@
 namespace lg {
 
 PointRange chunk_range(uint64_t points, uint32_t index, uint32_t count) {
-  // points * index fits in 64 bits: points is at most 2^26 volume points or 2^26 texels.
+  // points * index fits in 64 bits: points is below 2^32 and index below 2^20.
   return {points * index / count, points * (uint64_t(index) + 1) / count};
 }
 

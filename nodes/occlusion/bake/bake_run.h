@@ -18,7 +18,11 @@ struct PointRange {
   uint64_t size() const { return end - begin; }
 };
 
-// Chunk `index` of `count` (index < count): [points * index / count, points * (index + 1) / count).
+// A bake splits into at most this many chunks.
+inline constexpr uint32_t max_bake_chunks = 1000000;
+
+// Chunk `index` of `count` (index < count <= max_bake_chunks, points < 2^32):
+// [points * index / count, points * (index + 1) / count).
 PointRange chunk_range(uint64_t points, uint32_t index, uint32_t count);
 
 // A volume point whose rays mostly (over half) first hit back faces is inside geometry.

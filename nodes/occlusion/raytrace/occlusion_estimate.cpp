@@ -25,8 +25,8 @@ double hit_weight(const OcclusionSettings& settings, float distance) {
 
 // Traces `count` rays from `origin` in packets of consecutive sample indices (the same packets on
 // every run, so results do not depend on threads): `direction(i)` is ray i's unit direction;
-// `visit(direction, hit)` sees every ray in order with its closest hit, when `need_hits`, or
-// with any hit (distance and normal then unset) otherwise.
+// `visit(direction, ray, hit)` sees every ray in order (its double and float directions) with
+// its closest hit, when `need_hits`, or with any hit (distance and normal then unset) otherwise.
 template <class Direction, class Visit>
 void trace_rays(const RayScene& scene, glm::vec3 origin, uint32_t count, float t_max, bool need_hits,
                 Direction direction, Visit visit) {
