@@ -14,7 +14,6 @@
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
 #include "nodes/occlusion/bake/bake_run.h"
-#include "runtime/image/image_file.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/scene_error.h"

@@ -1,7 +1,6 @@
 // Encoding, decoding and merging .lgbake files (bake_file.h, docs/bake-format.md).
 #include "nodes/occlusion/bake/bake_file.h"
 
-#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
