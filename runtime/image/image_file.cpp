@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 
 namespace lg {
 namespace {
@@ -23,12 +24,16 @@ std::string lower_extension(const std::string& path) {
 
 }  // namespace
 
-ImageData load_image(const std::string& path) {
+struct ImageReader::Input {
+  std::unique_ptr<OIIO::ImageInput> image;
+};
+
+ImageReader::ImageReader(const std::string& path) : path_(path), input_(std::make_unique<Input>()) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw ImageFileError(path + ": error: no such image file");
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw ImageFileError(path + ": error: cannot read the image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
+  input_->image = OIIO::ImageInput::open(path);
+  if (!input_->image) throw ImageFileError(path + ": error: cannot read the image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = input_->image->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
     throw ImageFileError(path + ": error: not a 2D image (" + std::to_string(spec.width) + "x" +
                          std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
@@ -36,20 +41,49 @@ ImageData load_image(const std::string& path) {
   if (pixels > kMaxPixels)
     throw ImageFileError(path + ": error: " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                          " is larger than the limit of " + std::to_string(kMaxPixels) + " pixels");
+  width_ = uint32_t(spec.width), height_ = uint32_t(spec.height);
+}
+
+ImageReader::~ImageReader() = default;
+
+void ImageReader::read_rgba(std::span<float> rgba) {
+  const uint64_t pixels = uint64_t(width_) * height_;
+  if (rgba.size() != pixels * 4)
+    throw ImageFileError(path_ + ": error: " + std::to_string(rgba.size()) + " floats cannot hold its " +
+                         std::to_string(width_) + "x" + std::to_string(height_) + " RGBA pixels");
+  OIIO::ImageInput& in = *input_->image;
+  const OIIO::ImageSpec& spec = in.spec();
   const int channels = std::min(spec.nchannels, 4);
-  std::vector<float> read(pixels * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, read.data()))
-    throw ImageFileError(path + ": error: the pixels cannot be read (truncated or corrupt?): " + in->geterror());
-  ImageData out{uint32_t(spec.width), uint32_t(spec.height), std::vector<float>(pixels * 4, 0.0f)};
-  for (uint64_t p = 0; p < pixels; ++p) {
-    for (int c = 0; c < channels; ++c) out.rgba[p * 4 + c] = read[p * channels + c];
-    if (channels < 4) out.rgba[p * 4 + 3] = 1.0f;
-    if (channels == 1) out.rgba[p * 4 + 1] = out.rgba[p * 4 + 2] = out.rgba[p * 4];  // grey
+  // Up to four channels land at their place in each RGBA pixel; the others are filled below.
+  const OIIO::stride_t pixel_stride = 4 * sizeof(float), row_stride = pixel_stride * width_;
+  bool ok = true;
+  if (spec.tile_width == 0 && spec.nchannels <= 4) {
+    // A row at a time: OpenImageIO converts a row through a buffer of one native row, where
+    // read_scanlines and read_image convert through one of 64 MiB whatever the rows asked for.
+    for (uint32_t y = 0; ok && y < height_; ++y)
+      ok = in.read_scanline(spec.y + int(y), 0, OIIO::TypeDesc::FLOAT, rgba.data() + uint64_t(y) * width_ * 4,
+                            pixel_stride);
+  } else {
+    ok = in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, rgba.data(), pixel_stride, row_stride);
   }
+  if (!ok) throw ImageFileError(path_ + ": error: the pixels cannot be read (truncated or corrupt?): " + in.geterror());
+  if (channels == 4) return;
+  for (uint64_t p = 0; p < pixels; ++p) {
+    float* texel = &rgba[p * 4];
+    if (channels == 1) texel[1] = texel[2] = texel[0];  // grey
+    if (channels == 2) texel[2] = 0.0f;
+    texel[3] = 1.0f;
+  }
+}
+
+ImageData load_image(const std::string& path) {
+  ImageReader reader(path);
+  ImageData out{reader.width(), reader.height(), std::vector<float>(uint64_t(reader.width()) * reader.height() * 4)};
+  reader.read_rgba(out.rgba);
   return out;
 }
 
-void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
+void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba, bool compress) {
   if (rgba.size() != uint64_t(width) * height * 4)
     throw ImageFileError(path + ": error: " + std::to_string(rgba.size()) + " floats do not make a " +
                          std::to_string(width) + "x" + std::to_string(height) + " RGBA image");
@@ -75,6 +109,7 @@ void save_image(const std::string& path, uint32_t width, uint32_t height, std::s
   auto out = OIIO::ImageOutput::create(temporary.string());
   if (!out) throw ImageFileError(path + ": error: cannot write this format: " + OIIO::geterror());
   OIIO::ImageSpec spec(int(width), int(height), channels, type);
+  if (ext == ".exr") spec.attribute("compression", compress ? "zip" : "none");
   bool ok =
       out->open(temporary.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
   std::error_code ec;

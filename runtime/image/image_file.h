@@ -1,11 +1,14 @@
 // Reading and writing image files with OpenImageIO: EXR and HDR (linear, float) and PNG (8-bit,
-// values taken as already display-encoded). Pixels are float RGBA, rows top to bottom. Every
+// values taken as already display-encoded). Pixels are float RGBA, rows top to bottom;
+// ImageReader reads them straight into memory the caller owns (a staging buffer), so a large
+// image is never held twice. Every
 // failure — a missing, truncated or corrupt file, an unsupported format, a failed write —
 // throws ImageFileError naming the file and what went wrong; saving is atomic (a temporary
 // file renamed over the target), so a failed save never leaves half an image behind.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -23,9 +26,34 @@ struct ImageData {
   std::vector<float> rgba;  // 4 floats a pixel; missing channels read as 0, alpha as 1
 };
 
+// An image file opened and its header checked (a 2D image within the size limit); the pixels
+// are read on demand.
+class ImageReader {
+ public:
+  explicit ImageReader(const std::string& path);  // throws ImageFileError
+  ~ImageReader();
+  ImageReader(const ImageReader&) = delete;
+  ImageReader& operator=(const ImageReader&) = delete;
+
+  uint32_t width() const { return width_; }
+  uint32_t height() const { return height_; }
+  // Reads every pixel into `rgba` (width * height * 4 floats, laid out as ImageData::rgba), a
+  // band of rows at a time, so OpenImageIO's own conversion buffer stays a few MiB.
+  void read_rgba(std::span<float> rgba);
+
+ private:
+  struct Input;
+  std::string path_;
+  std::unique_ptr<Input> input_;
+  uint32_t width_ = 0, height_ = 0;
+};
+
 ImageData load_image(const std::string& path);
 
 // The format follows the extension: .png (8-bit, clamped to [0, 1]), .exr (half float), .hdr.
-void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba);
+// EXR files are zip-compressed unless `compress` is false (much faster to write and read for
+// large scratch files).
+void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba,
+                bool compress = true);
 
 }  // namespace lg

@@ -1,6 +1,6 @@
 // lumagraph-bench-env: the quality knobs of env.specular_prefilter and env.sh_project swept on
-// lavapipe, each point's run time (wall time around submit + wait, the median of --runs runs
-// after one discarded run that JIT-compiles the pipeline) next to its error against the
+// lavapipe, each point's run time (GPU time between timestamps before and after its commands,
+// the median of --runs runs after one discarded run that JIT-compiles the pipeline) next to its error against the
 // double-precision references, on a 128^2 random environment and the probes of
 // ../shared/data/env when present.
 //   Prefilter: samples 16 to 4096, filtered importance sampling (the node) and plain GGX
@@ -14,7 +14,6 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -42,6 +41,7 @@
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/submit.h"
+#include "runtime/gpu/timestamps.h"
 #include "runtime/gpu/transfer.h"
 #include "tests/env/env_test_support.h"
 
@@ -134,17 +134,23 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// Runs `record` once untimed (pipeline JIT), then once per benchmark iteration, timing submit +
-// wait; the times go to the benchmark and to `times_ms`.
+// Runs `record` once untimed (pipeline JIT), then once per benchmark iteration, timing it on the
+// GPU (timestamps before and after its commands); the times go to the benchmark and to
+// `times_ms`.
 void time_runs(benchmark::State& state, const std::function<void(VkCommandBuffer)>& record,
                std::vector<double>& times_ms) {
   gpu().submitter.run(record);
+  TimestampQueries timestamps(gpu().context, 1);
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    gpu().submitter.run(record);
-    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-    state.SetIterationTime(seconds.count());
-    times_ms.push_back(1e3 * seconds.count());
+    gpu().submitter.run([&](VkCommandBuffer cmd) {
+      timestamps.reset(cmd);
+      const uint32_t scope = timestamps.begin(cmd, "bench");
+      record(cmd);
+      timestamps.end(cmd, scope);
+    });
+    const double ms = timestamps.results().front().milliseconds;
+    state.SetIterationTime(1e-3 * ms);
+    times_ms.push_back(ms);
   }
 }
 

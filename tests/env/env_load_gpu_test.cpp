@@ -9,6 +9,7 @@
 // NaN and Inf texels replaced and counted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -41,8 +42,13 @@ Equirect smooth_equirect(uint32_t width, uint32_t height) {
 
 class EnvLoadGpuTest : public GpuTest {
  protected:
-  std::vector<CubeImage> load(const EquirectPixels& pixels, uint32_t face, uint32_t mips) {
-    EquirectSource source(context(), pixels);
+  // env.load's pass on `image` scaled by `intensity`; `non_finite` gets the sanitiser's count.
+  std::vector<CubeImage> load(const Equirect& image, double intensity, uint32_t face, uint32_t mips,
+                              uint64_t* non_finite = nullptr) {
+    EquirectSource source(context(), image.width, image.height);
+    std::copy(image.rgba.begin(), image.rgba.end(), source.texels().begin());
+    const uint64_t replaced = sanitize_equirect(source.texels(), intensity);
+    if (non_finite) *non_finite = replaced;
     Image cube = make_cube(context(), "env", face, mips);
     Sampler nearest(context(), {.filter = Filter::nearest});
     submitter().run([&](VkCommandBuffer cmd) {
@@ -58,10 +64,9 @@ class EnvLoadGpuTest : public GpuTest {
   // RMS over every texel of every mip of the error relative to the reference texel (texels
   // under 1e-3 of the brightest against that floor); the max is printed.
   double compare(const Equirect& image, uint32_t face, const char* what) {
-    const EquirectPixels pixels = sanitize_equirect(image.width, image.height, image.rgba, 1.0);
     uint32_t mips = 1;
     while ((face >> mips) > 0) ++mips;
-    const std::vector<CubeImage> gpu = load(pixels, face, mips);
+    const std::vector<CubeImage> gpu = load(image, 1.0, face, mips);
     const std::vector<CubeImage> ref =
         mip_chain(equirect_to_cube(image, face, int(equirect_supersample(image.width, face))));
     double brightest = 0, worst = 0, sum = 0;
@@ -103,7 +108,7 @@ TEST_F(EnvLoadGpuTest, MatchesTheCpuOnTheProbes) {
 // texel (bound 5e-3 on 32^2 faces; measured 8.3e-4).
 TEST_F(EnvLoadGpuTest, DirectionConventionRoundTrips) {
   const Equirect image = smooth_equirect(512, 256);
-  const std::vector<CubeImage> gpu = load(sanitize_equirect(image.width, image.height, image.rgba, 1.0), 32, 1);
+  const std::vector<CubeImage> gpu = load(image, 1.0, 32, 1);
   double worst = 0;
   for (int f = 0; f < 6; ++f)
     for (uint32_t j = 0; j < 32; ++j)
@@ -131,12 +136,14 @@ TEST_F(EnvLoadGpuTest, NonFiniteTexelsAreReplacedAndCounted) {
   image.rgba[4 * 10] = std::numeric_limits<float>::quiet_NaN();
   image.rgba[4 * 500 + 1] = std::numeric_limits<float>::infinity();
   image.rgba[4 * 501 + 2] = -std::numeric_limits<float>::infinity();
-  const EquirectPixels pixels = sanitize_equirect(image.width, image.height, image.rgba, 2.0);
-  EXPECT_EQ(pixels.non_finite, 3u);
-  EXPECT_EQ(pixels.rgba[4 * 10], 0.0f);
-  EXPECT_FLOAT_EQ(pixels.rgba[4 * 11], 2.0f * image.rgba[4 * 11]);  // intensity applied
-  for (const CubeImage& mip : load(pixels, 16, 5))
+  std::vector<float> sanitized = image.rgba;
+  EXPECT_EQ(sanitize_equirect(sanitized, 2.0), 3u);
+  EXPECT_EQ(sanitized[4 * 10], 0.0f);
+  EXPECT_FLOAT_EQ(sanitized[4 * 11], 2.0f * image.rgba[4 * 11]);  // intensity applied
+  uint64_t non_finite = 0;
+  for (const CubeImage& mip : load(image, 2.0, 16, 5, &non_finite))
     for (const glm::dvec4& t : mip.texels) ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+  EXPECT_EQ(non_finite, 3u);
 }
 
 }  // namespace

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <iostream>
 #include <optional>
+#include <utility>
 
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/vk_struct.h"
-#include "runtime/image/image_file.h"
 
 namespace lg {
 namespace {
@@ -35,37 +34,45 @@ void barrier(VkCommandBuffer cmd, const Image* image, VkImageLayout from, VkImag
 
 class EnvLoadKernel final : public NodeKernel {
  public:
-  explicit EnvLoadKernel(const PlanNode& node) : path_(param_string(node, "path")) {
-    ImageData data = load_image(path_);
-    pixels_ = sanitize_equirect(data.width, data.height, std::move(data.rgba), param_number(node, "intensity"));
-    if (pixels_.non_finite)
-      std::cerr << "env.load '" << node.id << "': " << pixels_.non_finite << " non-finite texels of " << path_
-                << " replaced by 0\n";
-  }
+  // The file is opened here, so that a missing or broken file fails before any frame.
+  explicit EnvLoadKernel(const PlanNode& node)
+      : id_(node.id),
+        path_(param_string(node, "path")),
+        intensity_(param_number(node, "intensity")),
+        file_(std::in_place, path_) {}
 
   void record(PassContext& ctx) override {
-    if (!source_) source_.emplace(ctx.gpu(), pixels_);
+    if (!source_) {
+      uint64_t non_finite = 0;
+      EquirectSource source = read_equirect(ctx.gpu(), *file_, intensity_, non_finite);
+      if (non_finite)
+        std::cerr << "env.load '" << id_ << "': " << non_finite << " non-finite texels of " << path_
+                  << " replaced by 0\n";
+      source_.emplace(std::move(source));
+      file_.reset();
+    }
     record_env_load(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, *source_, ctx.nearest_sampler(),
                     ctx.image("out.cube"));
   }
 
  private:
-  std::string path_;
-  EquirectPixels pixels_;
+  std::string id_, path_;
+  double intensity_;
+  std::optional<ImageReader> file_;  // until its pixels are in the staging buffer
   std::optional<EquirectSource> source_;
 };
 
 }  // namespace
 
-EquirectPixels sanitize_equirect(uint32_t width, uint32_t height, std::vector<float> rgba, double intensity) {
-  EquirectPixels p{width, height, std::move(rgba), 0};
-  for (size_t t = 0; t + 3 < p.rgba.size(); t += 4) {
-    float* texel = &p.rgba[t];
+uint64_t sanitize_equirect(std::span<float> rgba, double intensity) {
+  uint64_t non_finite = 0;
+  for (size_t t = 0; t + 3 < rgba.size(); t += 4) {
+    float* texel = &rgba[t];
     const bool finite = std::isfinite(texel[0]) && std::isfinite(texel[1]) && std::isfinite(texel[2]);
     for (int c = 0; c < 3; ++c) texel[c] = finite ? float(texel[c] * intensity) : 0.0f;
-    p.non_finite += finite ? 0 : 1;
+    non_finite += finite ? 0 : 1;
   }
-  return p;
+  return non_finite;
 }
 
 uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size) {
@@ -73,14 +80,23 @@ uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size) {
   return std::clamp((equirect_width + 4 * face_size - 1) / (4 * face_size), 1u, 8u);
 }
 
-EquirectSource::EquirectSource(Context& gpu, const EquirectPixels& pixels)
-    : image(Image::dedicated(gpu, {.name = "env.load equirect",
-                                   .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                   .width = pixels.width,
-                                   .height = pixels.height})),
-      staging_(Buffer::dedicated(gpu, {.name = "env.load staging", .size = pixels.rgba.size() * sizeof(float)},
-                                 MemoryUse::upload)) {
-  std::memcpy(staging_.mapped(), pixels.rgba.data(), pixels.rgba.size() * sizeof(float));
+EquirectSource::EquirectSource(Context& gpu, uint32_t width, uint32_t height)
+    : image(Image::dedicated(
+          gpu,
+          {.name = "env.load equirect", .format = VK_FORMAT_R32G32B32A32_SFLOAT, .width = width, .height = height})),
+      staging_(Buffer::dedicated(
+          gpu, {.name = "env.load staging", .size = uint64_t(width) * height * 4 * sizeof(float)}, MemoryUse::upload)) {
+}
+
+std::span<float> EquirectSource::texels() {
+  return {reinterpret_cast<float*>(staging_.mapped()), size_t(staging_.size() / sizeof(float))};
+}
+
+EquirectSource read_equirect(Context& gpu, ImageReader& file, double intensity, uint64_t& non_finite) {
+  EquirectSource source(gpu, file.width(), file.height());
+  file.read_rgba(source.texels());
+  non_finite = sanitize_equirect(source.texels(), intensity);
+  return source;
 }
 
 void EquirectSource::upload(VkCommandBuffer cmd) {

@@ -1,39 +1,40 @@
 // The kernel of env.load, and the pass it records (which tests run directly): an
 // equirectangular HDR or EXR file (nodes/env/common/equirect.h states the mapping) resampled
 // to a cube map, then every mip by solid-angle-weighted box filtering. Non-finite texels of
-// the file are replaced by 0, counted, and reported on stderr.
+// the file are replaced by 0, counted, and reported on stderr. The file is read straight into
+// the upload's staging buffer at the first record.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
-#include <vector>
 
 #include "runtime/exec/node_kernel.h"
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/image.h"
+#include "runtime/image/image_file.h"
 
 namespace lg {
 
-// The image as the GPU gets it: RGBA floats, rows top to bottom, scaled and sanitised.
-struct EquirectPixels {
-  uint32_t width = 0, height = 0;
-  std::vector<float> rgba;
-  uint64_t non_finite = 0;  // texels that held NaN or Inf, now 0
-};
-
-// Scales by `intensity` and replaces non-finite texels by 0, counting them.
-EquirectPixels sanitize_equirect(uint32_t width, uint32_t height, std::vector<float> rgba, double intensity);
+// Scales the RGB of `rgba` by `intensity` and replaces non-finite texels by 0, in place;
+// returns how many texels held NaN or Inf.
+uint64_t sanitize_equirect(std::span<float> rgba, double intensity);
 
 // Samples per cube texel along each axis: enough to cover the equirect texels it spans.
 uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size);
 
-// The equirect image on the device (rgba32f), uploaded by the first pass that records with it.
+// The equirect image on the device (rgba32f) and the host-visible staging buffer it is uploaded
+// from. The texels are written straight into the staging buffer (file reads, sanitising), so
+// the host holds one float copy of the image; on lavapipe, whose device memory is host memory,
+// the image is the second.
 class EquirectSource {
  public:
-  EquirectSource(Context& gpu, const EquirectPixels& pixels);
+  EquirectSource(Context& gpu, uint32_t width, uint32_t height);
+  // The staging buffer as RGBA floats, rows top to bottom: fill it before upload().
+  std::span<float> texels();
   void upload(VkCommandBuffer cmd);  // once; leaves the image in READ_ONLY_OPTIMAL
 
   Image image;
@@ -42,6 +43,11 @@ class EquirectSource {
   Buffer staging_;
   bool uploaded_ = false;
 };
+
+// What env.load does at its first record: a source of `file`'s size, the file read straight into
+// its staging buffer and sanitised there (scaled by `intensity`); `non_finite` gets the count
+// of replaced texels.
+EquirectSource read_equirect(Context& gpu, ImageReader& file, double intensity, uint64_t& non_finite);
 
 // Records every mip of `cube` (rgba16f cube map in GENERAL) from `source`.
 void record_env_load(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
