@@ -111,16 +111,19 @@ class Lowerer {
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
   // instead copies them and touches twice the memory.
   void reserve(const std::vector<int>& order) {
-    size_t passes = 0, resources = 0;
+    size_t passes = 0, resources = 0, uses = 0;
     for (int n : order) {
       if (s_[n].kind != NodeState::Kind::active) continue;
       const NodeSchema& s = *r_.nodes[n].schema;
       passes += s.passes.size();
+      for (const auto& pass : s.passes) uses += pass.uses.size();
       for (const auto& port : s.outputs) resources += port.type.components().size();
       for (const auto& port : s.resources) resources += port.type.components().size();
     }
     out_.passes.reserve(passes);
     out_.resources.reserve(resources);
+    out_.arena =
+        std::make_shared<std::pmr::monotonic_buffer_resource>(std::max<size_t>(uses, 1) * sizeof(LoweredAccess));
   }
 
   const std::string& id(int n) const { return r_.graph->nodes[n].id; }
@@ -300,7 +303,7 @@ class Lowerer {
         continue;
       }
       const PassSpec& spec = s.passes[p];
-      LoweredPass pass;
+      LoweredPass pass{.accesses = std::pmr::vector<LoweredAccess>(out_.arena.get())};
       pass.node = n;
       pass.pass = static_cast<int>(p);
       pass.name = joined({id(n), "/", spec.name});

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <memory_resource>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,7 +48,7 @@ struct LoweredPass {
   int pass = -1;     // index into the schema's passes
   std::string name;  // "bloom/downsample"
   Queue queue = Queue::compute;
-  std::vector<LoweredAccess> accesses;
+  std::pmr::vector<LoweredAccess> accesses;  // in LoweredGraph::arena when lowered
   bool is_static = false;
   uint64_t cache_key = 0;  // static passes only
 };
@@ -65,6 +67,10 @@ struct LoweredOutput {
 };
 
 struct LoweredGraph {
+  // Holds the accesses of the passes lower() makes, back to back: one allocation for them all
+  // instead of one per pass, read in order by the phases after it. Shared, so that moves and
+  // copies of the graph (whose vectors allocate on their own) keep it alive.
+  std::shared_ptr<std::pmr::monotonic_buffer_resource> arena;
   std::vector<LoweredNode> nodes;   // one per graph node (culled ones stay empty)
   std::vector<LoweredPass> passes;  // in a valid (topological) order
   std::vector<LoweredResource> resources;
