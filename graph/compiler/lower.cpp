@@ -109,14 +109,15 @@ class Lowerer {
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
-  // instead copies them and touches twice the memory.
+  // instead copies them and touches twice the memory. The accesses get one block of the arena.
   void reserve(const std::vector<int>& order) {
     size_t passes = 0, resources = 0, uses = 0;
     for (int n : order) {
       if (s_[n].kind != NodeState::Kind::active) continue;
       const NodeSchema& s = *r_.nodes[n].schema;
       passes += s.passes.size();
-      for (const auto& pass : s.passes) uses += pass.uses.size();
+      for (const auto& pass : s.passes)
+        for (const PassUse& use : pass.uses) uses += use.component >= 0 ? 1 : use_port(s, use).type.components().size();
       for (const auto& port : s.outputs) resources += port.type.components().size();
       for (const auto& port : s.resources) resources += port.type.components().size();
     }
@@ -124,6 +125,18 @@ class Lowerer {
     out_.resources.reserve(resources);
     out_.arena =
         std::make_shared<std::pmr::monotonic_buffer_resource>(std::max<size_t>(uses, 1) * sizeof(LoweredAccess));
+  }
+
+  static const PortSpec& use_port(const NodeSchema& s, const PassUse& use) {
+    switch (use.target) {
+      case PassUse::Target::input:
+        return s.inputs[use.index];
+      case PassUse::Target::output:
+        return s.outputs[use.index];
+      case PassUse::Target::internal:
+        break;
+    }
+    return s.resources[use.index];
   }
 
   const std::string& id(int n) const { return r_.graph->nodes[n].id; }
@@ -222,7 +235,7 @@ class Lowerer {
   Span make_resources(int n, const PortSpec& spec, std::string_view separator) {
     Span span{static_cast<int>(out_.resources.size()), 0};
     for (const PortComponent& c : spec.type.components()) {
-      LoweredResource res;
+      LoweredResource& res = out_.resources.emplace_back();  // built in place: no copy to move and destroy
       res.name =
           c.name.empty() ? joined({id(n), separator, spec.name}) : joined({id(n), separator, spec.name, ".", c.name});
       res.node = n;
@@ -231,7 +244,6 @@ class Lowerer {
       res.depth_format = c.depth;
       size(n, spec, res);
       res.bytes = resource_bytes_for(res, c.bytes_per_texel);
-      out_.resources.push_back(std::move(res));
       ++span.count;
     }
     return span;
