@@ -315,13 +315,13 @@ class Lowerer {
         continue;
       }
       const PassSpec& spec = s.passes[p];
-      LoweredPass pass{.accesses = std::pmr::vector<LoweredAccess>(out_.arena.get())};
-      pass.node = n;
-      pass.pass = static_cast<int>(p);
-      pass.name = joined({id(n), "/", spec.name});
-      pass.queue = spec.queue;
-      pass.is_static = is_static;
-      pass.cache_key = is_static ? fnv1a(key, spec.name) : 0;
+      LoweredPass pass{.node = n,
+                       .pass = static_cast<int>(p),
+                       .name = joined({id(n), "/", spec.name}),
+                       .queue = spec.queue,
+                       .accesses = std::pmr::vector<LoweredAccess>(out_.arena.get()),
+                       .is_static = is_static,
+                       .cache_key = is_static ? fnv1a(key, spec.name) : 0};
       int pass_index = static_cast<int>(out_.passes.size());
       pass.accesses.reserve(spec.uses.size());
       for (const PassUse& use : spec.uses) {
