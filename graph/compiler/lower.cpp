@@ -116,8 +116,7 @@ class Lowerer {
       if (s_[n].kind != NodeState::Kind::active) continue;
       const NodeSchema& s = *r_.nodes[n].schema;
       passes += s.passes.size();
-      for (const auto& pass : s.passes)
-        for (const PassUse& use : pass.uses) uses += use.component >= 0 ? 1 : use_port(s, use).type.components().size();
+      for (const auto& pass : s.passes) uses += most_accesses(s, pass);
       for (const auto& port : s.outputs) resources += port.type.components().size();
       for (const auto& port : s.resources) resources += port.type.components().size();
     }
@@ -127,16 +126,17 @@ class Lowerer {
         std::make_shared<std::pmr::monotonic_buffer_resource>(std::max<size_t>(uses, 1) * sizeof(LoweredAccess));
   }
 
-  static const PortSpec& use_port(const NodeSchema& s, const PassUse& use) {
-    switch (use.target) {
-      case PassUse::Target::input:
-        return s.inputs[use.index];
-      case PassUse::Target::output:
-        return s.outputs[use.index];
-      case PassUse::Target::internal:
-        break;
+  // A pass's accesses when every input is linked: one per use, or per component of a bundle
+  // it uses whole. Reserved exactly, a pass's list never moves within the arena.
+  static size_t most_accesses(const NodeSchema& s, const PassSpec& pass) {
+    size_t count = 0;
+    for (const PassUse& use : pass.uses) {
+      const PortSpec& port = use.target == PassUse::Target::input    ? s.inputs[use.index]
+                             : use.target == PassUse::Target::output ? s.outputs[use.index]
+                                                                     : s.resources[use.index];
+      count += use.component >= 0 ? 1 : port.type.components().size();
     }
-    return s.resources[use.index];
+    return count;
   }
 
   const std::string& id(int n) const { return r_.graph->nodes[n].id; }
@@ -323,7 +323,7 @@ class Lowerer {
                        .is_static = is_static,
                        .cache_key = is_static ? fnv1a(key, spec.name) : 0};
       int pass_index = static_cast<int>(out_.passes.size());
-      pass.accesses.reserve(spec.uses.size());
+      pass.accesses.reserve(most_accesses(s, spec));
       for (const PassUse& use : spec.uses) {
         Span span;
         if (use.target == PassUse::Target::output)
