@@ -51,7 +51,8 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   states = timer.run("cull", [&] { return cull(resolved, std::move(states)); });
   dump("cull", [&] { return dump_node_states(resolved, states); });
 
-  auto lowered = timer.run("lower", [&] { return lower(resolved, *order_nodes, states, options.frame, options.roots, diagnostics); });
+  auto lowered = timer.run(
+      "lower", [&] { return lower(resolved, *order_nodes, states, options.frame, options.roots, diagnostics); });
   if (!lowered) return result;
   dump("lower", [&] { return dump_lowered(*lowered); });
   auto order = timer.run("schedule", [&] { return schedule(*lowered); });
@@ -64,8 +65,8 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   dump("synchronize", [&] { return dump_barriers(*lowered, order, barriers); });
 
   result.plan = timer.run("assemble", [&] {
-    return assemble(graph, resolved, states, std::move(*lowered), *order_nodes, order, lives, std::move(memory), std::move(barriers),
-                    {options.scene.name, options.frame, options.roots});
+    return assemble(graph, resolved, std::move(states), std::move(*lowered), *order_nodes, order, lives,
+                    std::move(memory), std::move(barriers), {options.scene.name, options.frame, options.roots});
   });
   return result;
 }

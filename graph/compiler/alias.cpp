@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <bit>
-#include <unordered_map>
+#include <utility>
 
 namespace lg {
 namespace {
@@ -20,6 +20,63 @@ bool is_persistent(const LoweredResource& r) {
 struct ByteRange {
   uint64_t start, end;
   uint32_t start_id;  // the placer's number for `start`: equal starts, equal numbers
+};
+
+// The distinct offsets placements start at, each with a number for good (in order of first
+// sight) and its rank among them. Greedy placement reuses offsets (a few hundred at 10,000
+// nodes), so ranks turn sorting ranges by start into setting bits in a small bitmap.
+class StartOffsets {
+ public:
+  explicit StartOffsets(size_t resources) {
+    sorted_.reserve(resources);
+    id_of_rank_.reserve(resources);
+    rank_of_id_.reserve(resources);
+    furthest_.reserve(resources);
+  }
+
+  // The number of `offset`, which becomes a known start if it is not one yet. A new start
+  // shifts the ranks above it: O(starts), a few hundred steps a few hundred times (quadratic
+  // in the resources only if nearly every one starts at an offset of its own).
+  uint32_t add(uint64_t offset) {
+    const auto at = std::lower_bound(sorted_.begin(), sorted_.end(), offset);
+    const auto rank = static_cast<uint32_t>(at - sorted_.begin());
+    if (at != sorted_.end() && *at == offset) return id_of_rank_[rank];
+    const auto id = static_cast<uint32_t>(rank_of_id_.size());
+    for (uint32_t& r : rank_of_id_) r += r >= rank;
+    rank_of_id_.push_back(rank);
+    sorted_.insert(at, offset);
+    id_of_rank_.insert(id_of_rank_.begin() + rank, id);
+    furthest_.push_back(0);
+    present_.resize((sorted_.size() + 63) / 64);
+    return id;
+  }
+
+  // Sorts ranges of known starts by start, one range per start ending at the furthest end of
+  // the ranges that share it; returns the new end. That is all the placer's gap scan needs: it
+  // does not care how equal starts are ordered, and sees ranges that share a start as one
+  // ending at the furthest end. Linear, with no comparisons to mispredict.
+  ByteRange* unite(ByteRange* first, ByteRange* last) {
+    for (const ByteRange* r = first; r != last; ++r) {
+      const uint32_t rank = rank_of_id_[r->start_id];
+      const uint64_t bit = uint64_t{1} << (rank % 64);
+      uint64_t& word = present_[rank / 64];
+      furthest_[rank] = word & bit ? std::max(furthest_[rank], r->end) : r->end;
+      word |= bit;
+    }
+    ByteRange* out = first;
+    for (size_t w = 0; w < present_.size(); ++w)
+      for (uint64_t bits = std::exchange(present_[w], 0); bits != 0; bits &= bits - 1) {
+        const auto rank = static_cast<uint32_t>(64 * w + std::countr_zero(bits));
+        *out++ = {sorted_[rank], furthest_[rank], id_of_rank_[rank]};
+      }
+    return out;
+  }
+
+ private:
+  std::vector<uint64_t> sorted_;  // by rank: the offset
+  std::vector<uint32_t> id_of_rank_, rank_of_id_;
+  std::vector<uint64_t> present_;   // by rank, a bit: in the list unite() is sorting
+  std::vector<uint64_t> furthest_;  // by rank: the furthest end in that list
 };
 
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
@@ -78,7 +135,7 @@ class GreedyPlacer {
         ranges_(by_first.size()),
         placed_(by_first.size(), 0),
         conflicts_(by_first.size()),
-        scratch_(by_first.size()) {
+        starts_(by_first.size()) {
     firsts_.reserve(by_first.size());
     for (size_t k = 0; k < by_first.size(); ++k) {
       position_[by_first[k]] = static_cast<int>(k);
@@ -98,7 +155,7 @@ class GreedyPlacer {
       *end = ranges_[k];
       end += placed_[k];
     }
-    end = sort_by_start(conflicts_.data(), end);
+    end = starts_.unite(conflicts_.data(), end);
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
     for (const ByteRange* c = conflicts_.data(); c != end; ++c) {
@@ -110,9 +167,7 @@ class GreedyPlacer {
     }
     if (best == UINT64_MAX) best = align_up(cursor, alignment);
     const int k = position_[r];
-    auto [id, added] = start_ids_.try_emplace(best, static_cast<uint32_t>(start_ids_.size()));
-    if (added) seen_.push_back(0), slot_.push_back(0);
-    ranges_[k] = {best, best + bytes, id->second};
+    ranges_[k] = {best, best + bytes, starts_.add(best)};
     placed_[k] = 1;
     alive_.insert(life, ranges_[k]);
     size_ = std::max(size_, best + bytes);
@@ -129,73 +184,13 @@ class GreedyPlacer {
     return out;
   }
 
-  // Sorts by start; returns the new end. The gap scan does not care how equal starts are
-  // ordered, and sees ranges that share a start as one ending at the furthest end. Longer lists
-  // than a few dozen first merge the ranges that share a start (greedy placement reuses
-  // offsets: about five ranges to a start in long lists). Then short lists take an insertion
-  // sort, long ones a radix sort over the bits in which their starts differ, as comparison
-  // sorts mispredict about every other comparison on keys with no pattern.
-  ByteRange* sort_by_start(ByteRange* first, ByteRange* last) {
-    if (last - first > 32) last = merge_equal_starts(first, last);
-    const size_t count = static_cast<size_t>(last - first);
-    if (count <= 32) {
-      for (ByteRange* i = first + (count > 0); i < last; ++i) {
-        ByteRange s = *i;
-        ByteRange* j = i;
-        for (; j > first && (j - 1)->start > s.start; --j) *j = *(j - 1);
-        *j = s;
-      }
-      return last;
-    }
-    uint64_t differ = 0;
-    for (const ByteRange* r = first; r != last; ++r) differ |= r->start ^ first->start;
-    if (differ == 0) return last;
-    // Digits from the lowest differing bit (aligned starts share their low bits) to the highest,
-    // as few passes of at most 8 bits as cover them, each as narrow as they allow.
-    const int low = std::countr_zero(differ), bits = 64 - std::countl_zero(differ) - low;
-    const int passes = (bits + 7) / 8, width = (bits + passes - 1) / passes;
-    const size_t digits = size_t{1} << width, mask = digits - 1;
-    ByteRange *from = first, *to = scratch_.data();
-    for (int shift = low; shift < low + bits; shift += width) {
-      uint32_t place[257];
-      std::fill(place, place + digits + 1, 0);
-      for (size_t k = 0; k < count; ++k) ++place[((from[k].start >> shift) & mask) + 1];
-      for (size_t d = 1; d < digits; ++d) place[d] += place[d - 1];
-      for (size_t k = 0; k < count; ++k) to[place[(from[k].start >> shift) & mask]++] = from[k];
-      std::swap(from, to);
-    }
-    if (from != first) std::copy(from, from + count, first);
-    return last;
-  }
-
-  // Keeps one range per start, ending at the furthest end; returns the new end. In place and
-  // without branches: a range joins the first one with its start, or is kept.
-  ByteRange* merge_equal_starts(ByteRange* first, ByteRange* last) {
-    ++epoch_;
-    size_t kept = 0;
-    for (const ByteRange* r = first; r != last; ++r) {
-      const uint32_t id = r->start_id;
-      const bool seen = seen_[id] == epoch_;
-      const size_t slot = seen ? slot_[id] : kept;
-      const uint64_t end = seen ? std::max(first[slot].end, r->end) : r->end;
-      first[slot] = {r->start, end, id};
-      seen_[id] = epoch_;
-      slot_[id] = static_cast<uint32_t>(slot);
-      kept += !seen;
-    }
-    return first + kept;
-  }
-
-  StabbingTree alive_;                                // holds placed ranges
-  std::vector<int> position_;                         // resource -> position in first-use order
-  std::vector<int> firsts_;                           // by position: first use
-  std::vector<ByteRange> ranges_;                     // by position: bytes, once placed
-  std::vector<char> placed_;                          // by position
-  std::vector<ByteRange> conflicts_;                  // room for every placed resource
-  std::vector<ByteRange> scratch_;                    // as much, for the radix sort
-  std::unordered_map<uint64_t, uint32_t> start_ids_;  // offset -> its number
-  std::vector<uint32_t> seen_, slot_;                 // by start number: when last seen in a list, and where
-  uint32_t epoch_ = 0;
+  StabbingTree alive_;                // holds placed ranges
+  std::vector<int> position_;         // resource -> position in first-use order
+  std::vector<int> firsts_;           // by position: first use
+  std::vector<ByteRange> ranges_;     // by position: bytes, once placed
+  std::vector<char> placed_;          // by position
+  std::vector<ByteRange> conflicts_;  // room for every placed resource
+  StartOffsets starts_;               // of placed ranges
   uint64_t size_ = 0;
 };
 
@@ -204,11 +199,15 @@ class GreedyPlacer {
 // have conflicted).
 class LastOwners {
  public:
+  // Each take() adds at most two pieces: room for all of them up front.
+  explicit LastOwners(size_t takes) { owned_.reserve(2 * takes + 1); }
+
   void take(uint64_t start, uint64_t end, int owner, std::vector<int>& predecessors) {
     // Disjoint and sorted by start, so sorted by end too.
     auto first = std::partition_point(owned_.begin(), owned_.end(), [&](const Owned& o) { return o.end <= start; });
     auto last = first;
-    for (; last != owned_.end() && last->start < end; ++last) predecessors.push_back(last->owner);
+    found_.clear();
+    for (; last != owned_.end() && last->start < end; ++last) found_.push_back(last->owner);
     // What replaces [first, last): the part of the first one before `start`, the new owner,
     // and the part of the last one after `end`.
     Owned pieces[3];
@@ -222,8 +221,9 @@ class LastOwners {
     else
       owned_.erase(owned_.begin() + at + count, owned_.begin() + at + removed);
     std::copy(pieces, pieces + count, owned_.begin() + at);
-    std::sort(predecessors.begin(), predecessors.end());
-    predecessors.erase(std::unique(predecessors.begin(), predecessors.end()), predecessors.end());
+    // Gathered apart and copied once: growing each placement's list allocates several times.
+    std::sort(found_.begin(), found_.end());
+    predecessors.assign(found_.begin(), std::unique(found_.begin(), found_.end()));
   }
 
  private:
@@ -232,6 +232,7 @@ class LastOwners {
     int owner = -1;
   };
   std::vector<Owned> owned_;  // by start
+  std::vector<int> found_;    // the owners one take() replaces
 };
 
 }  // namespace
@@ -309,7 +310,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
     out.blocks[0].size = end;
   }
 
-  LastOwners owners;
+  LastOwners owners(by_first.size());
   for (int r : by_first) {
     Placement& p = out.placements[r];
     owners.take(p.offset, p.offset + p.size, r, p.predecessors);

@@ -25,7 +25,7 @@ std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
 
 }  // namespace
 
-Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, LoweredGraph&& lowered,
+Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& states, LoweredGraph&& lowered,
               const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
               MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options) {
   Plan plan;
@@ -42,7 +42,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeState
   for (int n : node_order) {
     const NodeSchema& s = *resolved.nodes[n].schema;
     // Built in place (aggregates take parentheses in C++20): no temporary to move and destroy.
-    PlanNode& node = plan.nodes.emplace_back(graph.nodes[n].id, s.type, states[n].kind, states[n].reason,
+    PlanNode& node = plan.nodes.emplace_back(graph.nodes[n].id, s.type, states[n].kind, std::move(states[n].reason),
                                              std::vector<std::pair<std::string, std::string>>{}, JsonValue::object(),
                                              lowered.nodes[n].is_static);
     if (kept_params != lowered.static_params.end() && kept_params->first == n)

@@ -22,7 +22,9 @@ struct AssembleOptions {
   AssetRoots roots;  // to make path params absolute
 };
 
-Plan assemble(const Graph& graph, const ResolvedGraph& resolved, const NodeStates& states, LoweredGraph&& lowered,
+// Takes over what the plan keeps of the IRs passed as rvalues (names, reasons, placements)
+// rather than copying it.
+Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& states, LoweredGraph&& lowered,
               const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
               MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options);
 

@@ -109,18 +109,34 @@ class Lowerer {
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
-  // instead copies them and touches twice the memory.
+  // instead copies them and touches twice the memory. The accesses get one block of the arena.
   void reserve(const std::vector<int>& order) {
-    size_t passes = 0, resources = 0;
+    size_t passes = 0, resources = 0, uses = 0;
     for (int n : order) {
       if (s_[n].kind != NodeState::Kind::active) continue;
       const NodeSchema& s = *r_.nodes[n].schema;
       passes += s.passes.size();
+      for (const auto& pass : s.passes) uses += most_accesses(s, pass);
       for (const auto& port : s.outputs) resources += port.type.components().size();
       for (const auto& port : s.resources) resources += port.type.components().size();
     }
     out_.passes.reserve(passes);
     out_.resources.reserve(resources);
+    out_.arena =
+        std::make_shared<std::pmr::monotonic_buffer_resource>(std::max<size_t>(uses, 1) * sizeof(LoweredAccess));
+  }
+
+  // A pass's accesses when every input is linked: one per use, or per component of a bundle
+  // it uses whole. Reserved exactly, a pass's list never moves within the arena.
+  static size_t most_accesses(const NodeSchema& s, const PassSpec& pass) {
+    size_t count = 0;
+    for (const PassUse& use : pass.uses) {
+      const PortSpec& port = use.target == PassUse::Target::input    ? s.inputs[use.index]
+                             : use.target == PassUse::Target::output ? s.outputs[use.index]
+                                                                     : s.resources[use.index];
+      count += use.component >= 0 ? 1 : port.type.components().size();
+    }
+    return count;
   }
 
   const std::string& id(int n) const { return r_.graph->nodes[n].id; }
@@ -219,7 +235,7 @@ class Lowerer {
   Span make_resources(int n, const PortSpec& spec, std::string_view separator) {
     Span span{static_cast<int>(out_.resources.size()), 0};
     for (const PortComponent& c : spec.type.components()) {
-      LoweredResource res;
+      LoweredResource& res = out_.resources.emplace_back();  // built in place: no copy to move and destroy
       res.name =
           c.name.empty() ? joined({id(n), separator, spec.name}) : joined({id(n), separator, spec.name, ".", c.name});
       res.node = n;
@@ -228,7 +244,6 @@ class Lowerer {
       res.depth_format = c.depth;
       size(n, spec, res);
       res.bytes = resource_bytes_for(res, c.bytes_per_texel);
-      out_.resources.push_back(std::move(res));
       ++span.count;
     }
     return span;
@@ -300,15 +315,15 @@ class Lowerer {
         continue;
       }
       const PassSpec& spec = s.passes[p];
-      LoweredPass pass;
-      pass.node = n;
-      pass.pass = static_cast<int>(p);
-      pass.name = joined({id(n), "/", spec.name});
-      pass.queue = spec.queue;
-      pass.is_static = is_static;
-      pass.cache_key = is_static ? fnv1a(key, spec.name) : 0;
+      LoweredPass pass{.node = n,
+                       .pass = static_cast<int>(p),
+                       .name = joined({id(n), "/", spec.name}),
+                       .queue = spec.queue,
+                       .accesses = std::pmr::vector<LoweredAccess>(out_.arena.get()),
+                       .is_static = is_static,
+                       .cache_key = is_static ? fnv1a(key, spec.name) : 0};
       int pass_index = static_cast<int>(out_.passes.size());
-      pass.accesses.reserve(spec.uses.size());
+      pass.accesses.reserve(most_accesses(s, spec));
       for (const PassUse& use : spec.uses) {
         Span span;
         if (use.target == PassUse::Target::output)

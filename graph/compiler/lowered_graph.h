@@ -3,6 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <memory_resource>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,7 +49,7 @@ struct LoweredPass {
   int pass = -1;     // index into the schema's passes
   std::string name;  // "bloom/downsample"
   Queue queue = Queue::compute;
-  std::vector<LoweredAccess> accesses;
+  std::pmr::vector<LoweredAccess> accesses;  // in LoweredGraph::arena when lowered
   bool is_static = false;
   uint64_t cache_key = 0;  // static passes only
 };
@@ -65,6 +68,25 @@ struct LoweredOutput {
 };
 
 struct LoweredGraph {
+  LoweredGraph() = default;
+  LoweredGraph(LoweredGraph&&) noexcept = default;
+  LoweredGraph(const LoweredGraph&) = default;
+  // Member by member, the arena would go before the passes that allocated from it: the old
+  // graph is destroyed whole (passes, then arena) and the new one built in its place.
+  LoweredGraph& operator=(LoweredGraph&& other) noexcept {
+    if (this != &other) {
+      this->~LoweredGraph();
+      new (this) LoweredGraph(std::move(other));
+    }
+    return *this;
+  }
+  LoweredGraph& operator=(const LoweredGraph& other) { return *this = LoweredGraph(other); }
+
+  // Holds the accesses of the passes lower() makes, back to back: one allocation for them all
+  // instead of one per pass, read in order by the phases after it. Shared, so that moves and
+  // copies of the graph (whose vectors allocate on their own) keep it alive. Declared first, so
+  // destroyed after the passes.
+  std::shared_ptr<std::pmr::monotonic_buffer_resource> arena;
   std::vector<LoweredNode> nodes;   // one per graph node (culled ones stay empty)
   std::vector<LoweredPass> passes;  // in a valid (topological) order
   std::vector<LoweredResource> resources;
