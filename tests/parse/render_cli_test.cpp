@@ -14,15 +14,12 @@ namespace lg {
 namespace {
 
 namespace fs = std::filesystem;
+using parse_test::contains;
 using parse_test::lumagraph;
 using parse_test::Outcome;
 using parse_test::read_text;
 using parse_test::TempDir;
 using parse_test::write_text;
-
-bool contains(const std::string& s, const std::string& part) {
-  return s.find(part) != std::string::npos;
-}
 
 TEST(RenderCli, WritesImageStatsAndDump) {
   TempDir dir;
