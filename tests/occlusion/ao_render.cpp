@@ -37,6 +37,7 @@ AoRender render_occlusion(const World& world, uint32_t width, uint32_t height, c
     for (const PassStats& pass : stats.passes)
       if (pass.name.rfind("ao/", 0) == 0) ms += pass.gpu_ms;
     out.ao_gpu_ms.push_back(ms);
+    out.frame_gpu_ms.push_back(stats.gpu_ms);
     if (f == 0) out.first_ao = renderer.executor().read_image("ao.ao");
   }
   out.last_ao = renderer.executor().read_image("ao.ao");

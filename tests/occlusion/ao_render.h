@@ -20,8 +20,9 @@ struct AoRender {
   std::vector<float> last_ao;       // after the last frame (temporal accumulation, for GTAO)
   std::vector<float> bent_normals;  // GTAO's, after the last frame (empty for SSAO)
   GbufferReadback gbuffer;
-  SceneView view;                 // the last frame's
-  std::vector<double> ao_gpu_ms;  // per frame, the occlusion node's passes summed
+  SceneView view;                    // the last frame's
+  std::vector<double> ao_gpu_ms;     // per frame, the occlusion node's passes summed
+  std::vector<double> frame_gpu_ms;  // per frame, the whole command buffer
   size_t validation_messages = 0;
 };
 
