@@ -1,4 +1,4 @@
-// `lumagraph`: render, compile, validate and list render graphs from the command line.
+// `lumagraph`: render, compile, validate and list render graphs, and bake occlusion, from the command line.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -15,6 +15,7 @@ commands:
   compile [GRAPH]   compile a graph against a scene and print the plan
   validate GRAPH    check a graph file and report every error
   nodes             list the node types, their ports and params
+  bake MESH         bake ambient occlusion and bent normals (vertex, texel, volume)
 
 `lumagraph COMMAND --help` describes each command. With no GRAPH, render and compile use
 the embedded default graph (examples/default.json) and the embedded default scene.
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   if (command == "compile") return compile_command(rest);
   if (command == "validate") return validate_command(rest);
   if (command == "nodes") return nodes_command(rest);
+  if (command == "bake") return bake_command(rest);
   std::fprintf(stderr, "lumagraph: unknown command '%s'\n\n%s", command.c_str(), help);
   return exit_usage;
 }

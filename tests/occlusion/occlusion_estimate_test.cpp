@@ -176,6 +176,22 @@ TEST(OcclusionEstimate, AnySplitOfABatchIsBitIdentical) {
   EXPECT_TRUE(some_occluded);  // the comparison covers real occlusion, not only open floor
 }
 
+TEST(OcclusionEstimate, SphereVisibilityInTheOpenOverAFloorAndInsideABox) {
+  const RayScene empty(std::vector<glm::vec3>{}, std::vector<uint32_t>{});
+  EXPECT_EQ(estimate_sphere_visibility(empty, {1, 2, 3}, {.rays = 64}, 1).visibility, 1.0f);
+  // Above an (effectively infinite) floor the lower half of the sphere is blocked: 1/2 up to
+  // noise (binomial bound, 4 standard errors), and the bent normal points up.
+  const RayScene floor(test::scene_of({test::floor_quad(1e5f)}));
+  const SphereVisibility above = estimate_sphere_visibility(floor, {0, 0.5f, 0}, {.rays = 4096}, 2);
+  EXPECT_NEAR(above.visibility, 0.5, visibility_tolerance(0.5, 4096, 1));
+  EXPECT_GT(above.bent_normal.y, 0.99f);
+  EXPECT_EQ(above.backface_fraction, 0.0f);
+  const RayScene box(test::scene_of({{make_box(glm::vec3(1.0f)), glm::mat4(1.0f)}}));
+  const SphereVisibility inside = estimate_sphere_visibility(box, {0.1f, -0.2f, 0.3f}, {.rays = 256}, 3);
+  EXPECT_EQ(inside.visibility, 0.0f);
+  EXPECT_EQ(inside.backface_fraction, 1.0f);
+}
+
 TEST(OcclusionEstimate, SettingsOutOfRangeAreRejected) {
   EXPECT_THROW(check_occlusion_settings({.rays = 0}), std::invalid_argument);
   EXPECT_THROW(check_occlusion_settings({.rays = max_rays_per_point + 1}), std::invalid_argument);

@@ -43,6 +43,41 @@ TEST(RayScene, OcclusionRespectsTMax) {
   EXPECT_FALSE(scene.occluded({0, 1, 0}, {0, 1, 0}, inf));
 }
 
+TEST(RayScene, PacketsAgreeWithSingleRays) {
+  // A floor and a wall: from a point near their crease, rays in every direction, some blocked,
+  // in full and partial packets, with and without a t_max that cuts some hits off.
+  const RayScene scene(test::scene_of({test::floor_quad(10.0f), test::wall_quad(0.5f, 1.0f, 10.0f)}));
+  const glm::vec3 origin{0.0f, 0.2f, 0.1f};
+  std::vector<glm::vec3> directions;
+  for (int i = 0; i < 29; ++i) {
+    const float a = 0.7f * float(i), b = 0.37f * float(i) - 5.0f;
+    directions.push_back(glm::normalize(glm::vec3(std::cos(a), std::sin(b), std::sin(a))));
+  }
+  for (float t_max : {inf, 0.6f}) {
+    size_t blocked_count = 0;
+    for (size_t first = 0; first < directions.size(); first += RayScene::packet_size) {
+      const size_t n = std::min(RayScene::packet_size, directions.size() - first);
+      bool blocked[RayScene::packet_size];
+      std::optional<RayHit> hits[RayScene::packet_size];
+      scene.occluded_packet(origin, std::span(directions).subspan(first, n), t_max, std::span(blocked, n));
+      scene.intersect_packet(origin, std::span(directions).subspan(first, n), t_max, std::span(hits, n));
+      for (size_t j = 0; j < n; ++j) {
+        EXPECT_EQ(blocked[j], scene.occluded(origin, directions[first + j], t_max)) << "ray " << first + j;
+        const std::optional<RayHit> single = scene.intersect(origin, directions[first + j], t_max);
+        ASSERT_EQ(hits[j].has_value(), single.has_value()) << "ray " << first + j;
+        if (single) {
+          EXPECT_EQ(hits[j]->primitive, single->primitive);
+          EXPECT_NEAR(hits[j]->distance, single->distance, 1e-6f * single->distance);
+          EXPECT_EQ(hits[j]->normal, single->normal);
+        }
+        blocked_count += blocked[j];
+      }
+    }
+    EXPECT_GT(blocked_count, 0u);
+    EXPECT_LT(blocked_count, directions.size());
+  }
+}
+
 TEST(RayScene, RawTrianglesAndBounds) {
   const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const std::vector<uint32_t> indices{0, 1, 2};
@@ -87,7 +122,7 @@ TEST(RayScene, BadInputNamesTheProblem) {
     RayScene scene(view);
     FAIL() << "an infinite transform was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("after its world transform"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has a non-finite world position"), std::string::npos) << e.what();
   }
 }
 

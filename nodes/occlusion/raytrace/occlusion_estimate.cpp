@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,44 @@
 #include "nodes/occlusion/raytrace/ray_offset.h"
 
 namespace lg {
+namespace {
+
+// rho for a ray that hit at `distance` (within max_distance).
+double hit_weight(const OcclusionSettings& settings, float distance) {
+  if (settings.falloff == OcclusionFalloff::none) return 0.0;
+  const double x = std::min(1.0, double(distance) / settings.max_distance);
+  return x * (2.0 - x);
+}
+
+// Traces `count` rays from `origin` in packets of consecutive sample indices (the same packets on
+// every run, so results do not depend on threads): `direction(i)` is ray i's unit direction;
+// `visit(direction, ray, hit)` sees every ray in order (its double and float directions) with
+// its closest hit, when `need_hits`, or with any hit (distance and normal then unset) otherwise.
+template <class Direction, class Visit>
+void trace_rays(const RayScene& scene, glm::vec3 origin, uint32_t count, float t_max, bool need_hits,
+                Direction direction, Visit visit) {
+  constexpr size_t packet = RayScene::packet_size;
+  glm::dvec3 directions[packet];
+  glm::vec3 rays[packet];
+  bool blocked[packet];
+  std::optional<RayHit> hits[packet];
+  for (uint32_t first = 0; first < count; first += packet) {
+    const size_t n = std::min<size_t>(packet, count - first);
+    for (size_t j = 0; j < n; ++j) {
+      directions[j] = direction(first + uint32_t(j));
+      rays[j] = glm::normalize(glm::vec3(directions[j]));
+    }
+    if (need_hits) {
+      scene.intersect_packet(origin, std::span(rays, n), t_max, std::span(hits, n));
+    } else {
+      scene.occluded_packet(origin, std::span(rays, n), t_max, std::span(blocked, n));
+      for (size_t j = 0; j < n; ++j) hits[j] = blocked[j] ? std::optional(RayHit{}) : std::nullopt;
+    }
+    for (size_t j = 0; j < n; ++j) visit(directions[j], rays[j], hits[j]);
+  }
+}
+
+}  // namespace
 
 void check_occlusion_settings(const OcclusionSettings& settings) {
   if (settings.rays < 1 || settings.rays > max_rays_per_point)
@@ -32,20 +71,14 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
   const uint32_t count = uint32_t(settings.rays);
   double visible = 0.0;
   glm::dvec3 bent{0.0};
-  for (uint32_t i = 0; i < count; ++i) {
-    const glm::dvec3 direction = frame.to_world(cosine_hemisphere(stratified_point(i, count, seed)));
-    const glm::vec3 ray = glm::normalize(glm::vec3(direction));
-    double weight;
-    if (settings.falloff == OcclusionFalloff::obscurance) {
-      const std::optional<RayHit> hit = scene.intersect(origin, ray, settings.max_distance);
-      const double x = hit ? std::min(1.0, double(hit->distance) / settings.max_distance) : 1.0;
-      weight = x * (2.0 - x);
-    } else {
-      weight = scene.occluded(origin, ray, settings.max_distance) ? 0.0 : 1.0;
-    }
-    visible += weight;
-    bent += weight * direction;
-  }
+  trace_rays(
+      scene, origin, count, settings.max_distance, settings.falloff == OcclusionFalloff::obscurance,
+      [&](uint32_t i) { return frame.to_world(cosine_hemisphere(stratified_point(i, count, seed))); },
+      [&](glm::dvec3 direction, glm::vec3, const std::optional<RayHit>& hit) {
+        const double weight = hit ? hit_weight(settings, hit->distance) : 1.0;
+        visible += weight;
+        bent += weight * direction;
+      });
   OcclusionResult result;
   const double k = std::clamp(visible / count, 0.0, 1.0);
   result.visibility = float(k);
@@ -53,6 +86,33 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
   result.bent_normal = bent_length > 0.0 ? glm::vec3(bent / bent_length) : normal;
   result.cone_cos = float(std::sqrt(1.0 - k));
   result.cone_angle = float(std::asin(std::sqrt(k)));
+  return result;
+}
+
+SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 point, const OcclusionSettings& settings,
+                                            uint64_t seed) {
+  const uint32_t count = uint32_t(settings.rays);
+  double visible = 0.0;
+  glm::dvec3 bent{0.0};
+  uint32_t backfaces = 0;
+  auto direction = [&](uint32_t i) {
+    const glm::dvec2 u = stratified_point(i, count, seed);
+    const double z = 1.0 - 2.0 * u.y, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = 2.0 * std::numbers::pi * u.x;
+    return glm::dvec3{r * std::cos(phi), r * std::sin(phi), z};
+  };
+  trace_rays(scene, point, count, settings.max_distance, true, direction,
+             [&](glm::dvec3 d, glm::vec3 ray, const std::optional<RayHit>& hit) {
+               if (hit && glm::dot(hit->normal, ray) > 0.0f) ++backfaces;
+               const double weight = hit ? hit_weight(settings, hit->distance) : 1.0;
+               visible += weight;
+               bent += weight * d;
+             });
+  SphereVisibility result;
+  result.visibility = float(std::clamp(visible / count, 0.0, 1.0));
+  const double bent_length = glm::length(bent);
+  if (bent_length > 0.0) result.bent_normal = glm::vec3(bent / bent_length);
+  result.backface_fraction = float(double(backfaces) / count);
   return result;
 }
 
@@ -66,17 +126,13 @@ std::vector<OcclusionResult> estimate_occlusion_many(const RayScene& scene, std:
                                                      const std::function<void(size_t)>& progress) {
   check_occlusion_settings(settings);
   std::vector<OcclusionResult> results(points.size());
-  // Batches of about 1% (at least 256 points) between progress reports, each spread over all cores.
-  const size_t batch = progress ? std::max<size_t>(256, points.size() / 100) : std::max<size_t>(1, points.size());
-  for (size_t begin = 0; begin < points.size(); begin += batch) {
-    const size_t end = std::min(points.size(), begin + batch);
-    parallel_for(end - begin, [&](size_t j) {
-      const size_t i = begin + j;
-      results[i] =
-          estimate_occlusion(scene, points[i].position, points[i].normal, settings, point_seed(seed, first_index + i));
-    });
-    if (progress) progress(end);
-  }
+  parallel_for_with_progress(
+      points.size(),
+      [&](size_t i) {
+        results[i] = estimate_occlusion(scene, points[i].position, points[i].normal, settings,
+                                        point_seed(seed, first_index + i));
+      },
+      progress);
   return results;
 }
 

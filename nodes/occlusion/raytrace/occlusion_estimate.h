@@ -56,6 +56,16 @@ struct OcclusionResult {
 OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::vec3 normal,
                                    const OcclusionSettings& settings, uint64_t seed);
 
+// Visibility at a point in space, with no surface: uniform over the whole sphere of directions
+// (stratified: z = 1 - 2 u, phi = 2 pi v is equal-area), rho as above. An empty scene gives 1.
+struct SphereVisibility {
+  float visibility = 1.0f;                  // the weighted fraction of directions unoccluded
+  glm::vec3 bent_normal{0.0f, 0.0f, 1.0f};  // unit mean unoccluded direction; +Z if none
+  float backface_fraction = 0.0f;           // rays whose first hit is a back face (inside a closed mesh: 1)
+};
+SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 point, const OcclusionSettings& settings,
+                                            uint64_t seed);
+
 struct SurfacePoint {
   glm::vec3 position{0.0f};
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit

@@ -1,4 +1,5 @@
-// parallel_for(): std::thread workers pulling blocks of indices from an atomic counter.
+// parallel_for(): std::thread workers pulling blocks of indices from an atomic counter; and in
+// batches with progress reports between them.
 #include "nodes/occlusion/raytrace/parallel_for.h"
 
 #include <algorithm>
@@ -40,6 +41,16 @@ void parallel_for(size_t count, const std::function<void(size_t)>& body, unsigne
   work();
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+}
+
+void parallel_for_with_progress(size_t count, const std::function<void(size_t)>& body,
+                                const std::function<void(size_t)>& progress) {
+  const size_t batch = progress ? std::max<size_t>(1024, count / 200) : std::max<size_t>(1, count);
+  for (size_t begin = 0; begin < count; begin += batch) {
+    const size_t end = std::min(count, begin + batch);
+    parallel_for(end - begin, [&](size_t j) { body(begin + j); });
+    if (progress) progress(end);
+  }
 }
 
 }  // namespace lg

@@ -12,4 +12,9 @@ namespace lg {
 // rethrown here after every thread has stopped (the remaining indices are skipped).
 void parallel_for(size_t count, const std::function<void(size_t index)>& body, unsigned threads = 0);
 
+// parallel_for on all cores in batches of about 1/200 of the count (at least 1,024 indices),
+// calling `progress` (when given) from the calling thread after each with the indices done.
+void parallel_for_with_progress(size_t count, const std::function<void(size_t index)>& body,
+                                const std::function<void(size_t done)>& progress);
+
 }  // namespace lg

@@ -10,7 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "runtime/scene/mesh_tools.h"
+#include "nodes/occlusion/raytrace/world_mesh.h"
 
 namespace lg {
 
@@ -55,19 +55,9 @@ RTCRay make_ray(glm::vec3 origin, glm::vec3 direction, float t_max) {
 }  // namespace
 
 RayScene::RayScene(const SceneView& view) {
-  for (size_t d = 0; d < view.draws.size(); ++d) {
-    const DrawItem& draw = view.draws[d];
-    if (draw.mesh < 0 || size_t(draw.mesh) >= view.meshes.size())
-      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(draw.mesh) +
-                                  ", but the scene has " + std::to_string(view.meshes.size()));
-    const MeshData& mesh = view.meshes[size_t(draw.mesh)];
-    const std::string name = "mesh '" + mesh.name + "' (draw " + std::to_string(d) + ")";
-    if (std::string problem = mesh_problem(mesh); !problem.empty()) throw std::invalid_argument(name + ": " + problem);
-    const uint32_t base = uint32_t(positions_.size());
-    for (const glm::vec3& p : mesh.positions) positions_.push_back(glm::vec3(draw.world * glm::vec4(p, 1.0f)));
-    check_finite(std::span(positions_).subspan(base), name + " after its world transform");
-    for (uint32_t i : mesh.indices) indices_.push_back(base + i);
-  }
+  WorldMesh mesh = make_world_mesh(view);
+  positions_ = std::move(mesh.positions);
+  indices_ = std::move(mesh.indices);
   build();
 }
 
@@ -133,11 +123,15 @@ std::optional<RayHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direction,
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(embree_->scene, &context, &query);
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  const std::array<glm::vec3, 3> corners = triangle(query.hit.primID);
+  return make_hit(query.ray.tfar, query.hit.primID, direction);
+}
+
+RayHit RayScene::make_hit(float distance, uint32_t primitive, glm::vec3 direction) const {
+  const std::array<glm::vec3, 3> corners = triangle(primitive);
   // Our own normal rather than Embree's Ng, so that its orientation is the documented one.
   const glm::vec3 n = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
   const float length = glm::length(n);
-  return RayHit{query.ray.tfar, length > 0.0f ? n / length : -direction, query.hit.primID};
+  return RayHit{distance, length > 0.0f ? n / length : -direction, primitive};
 }
 
 bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float t_max) const {
@@ -146,6 +140,53 @@ bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float t_max) cons
   RTCRay ray = make_ray(origin, direction, t_max);
   rtcOccluded1(embree_->scene, &context, &ray);
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+namespace {
+
+// Fills an 8-wide packet with rays from `origin`; lanes past the directions are switched off.
+template <class Packet>
+void fill_packet(Packet& rays, int (&valid)[8], glm::vec3 origin, std::span<const glm::vec3> directions, float t_max) {
+  for (size_t i = 0; i < 8; ++i) {
+    const bool used = i < directions.size();
+    valid[i] = used ? -1 : 0;
+    const glm::vec3 d = used ? directions[i] : glm::vec3(0.0f, 0.0f, 1.0f);
+    rays.org_x[i] = origin.x, rays.org_y[i] = origin.y, rays.org_z[i] = origin.z;
+    rays.dir_x[i] = d.x, rays.dir_y[i] = d.y, rays.dir_z[i] = d.z;
+    rays.tnear[i] = 0.0f, rays.tfar[i] = t_max;
+    rays.mask[i] = std::numeric_limits<unsigned>::max();
+  }
+}
+
+}  // namespace
+
+void RayScene::occluded_packet(glm::vec3 origin, std::span<const glm::vec3> directions, float t_max,
+                               std::span<bool> occluded) const {
+  static_assert(packet_size == 8, "the packet is Embree's RTCRay8");
+  alignas(32) int valid[8];
+  alignas(32) RTCRay8 rays{};
+  fill_packet(rays, valid, origin, directions, t_max);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcOccluded8(valid, embree_->scene, &context, &rays);
+  for (size_t i = 0; i < directions.size(); ++i) occluded[i] = rays.tfar[i] < 0.0f;
+}
+
+void RayScene::intersect_packet(glm::vec3 origin, std::span<const glm::vec3> directions, float t_max,
+                                std::span<std::optional<RayHit>> hits) const {
+  alignas(32) int valid[8];
+  alignas(32) RTCRayHit8 query{};
+  fill_packet(query.ray, valid, origin, directions, t_max);
+  for (size_t i = 0; i < 8; ++i) query.hit.geomID[i] = query.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect8(valid, embree_->scene, &context, &query);
+  for (size_t i = 0; i < directions.size(); ++i)
+    hits[i] = query.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID
+                  ? std::nullopt
+                  : std::optional(make_hit(query.ray.tfar[i], query.hit.primID[i], directions[i]));
 }
 
 }  // namespace lg

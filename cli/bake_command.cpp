@@ -1,0 +1,255 @@
+// `lumagraph bake`: ambient occlusion and bent normals of a mesh or scene baked with Embree per
+// vertex, per lightmap texel or in a volume, whole or one chunk at a time, and `lumagraph bake
+// merge` to assemble the chunks (docs/bake-format.md, docs/baking.md).
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <limits>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "nodes/occlusion/bake/bake_file.h"
+#include "nodes/occlusion/bake/bake_outputs.h"
+#include "nodes/occlusion/bake/bake_run.h"
+#include "runtime/scene/load_world.h"
+#include "runtime/scene/make_scene_view.h"
+#include "runtime/scene/scene_error.h"
+
+namespace lg::cli {
+namespace {
+
+constexpr const char* help = R"(usage: lumagraph bake MESH_OR_SCENE --out PATH [options]
+       lumagraph bake merge PART... --out PATH
+
+Bakes ambient visibility k_A (cosine-weighted, stratified Monte Carlo with Embree on all cores)
+and bent normals of a mesh (.obj, .gltf, .glb) or scene file (.json), every draw in world space.
+PATH receives the .lgbake file (docs/bake-format.md); texel bakes also write PATH's stem .png
+(k_A) and .exr (bent normal, k_A), volume bakes a .vti (VTK image data) beside it.
+
+options:
+  --mode vertex|texel|volume  per vertex (default), per texel of a generated lightmap UV set,
+                        or at the points of a grid around the geometry (over the whole sphere;
+                        points inside geometry are marked invalid)
+  --rays N              rays per point, 1 to 1048576 (default 256)
+  --max-distance D      rays end at D (default: infinite)
+  --falloff none|obscurance
+                        a hit within D occludes fully (none, default) or by the obscurance
+                        curve 1 - (1 - t/D)^2 (needs --max-distance)
+  --resolution R        texel: lightmap size R (R x R texels, default 512, at most 8192);
+                        volume: points along the longest axis (default 32) or NXxNYxNZ
+                        (2 to 1024 each)
+  --seed S              random seed (default 1); same seed, same result on any machine split
+  --chunk I/N           bake only chunk I of N (0 <= I < N): a contiguous range of the points;
+                        merge the N part files with `lumagraph bake merge`
+  --out PATH            the output file (required)
+
+`bake merge PART... --out PATH` checks that the parts are all the chunks of one bake, each
+once, and writes the whole bake, byte-identical to a single run with the same options.
+
+exit status: 0 baked, 1 usage error, 2 invalid input (mesh, scene or part files), 3 writing failed
+)";
+
+constexpr int exit_write = 3;
+
+ArgSpec bake_arg_spec() {
+  return {{"--help"},
+          {"--mode", "--rays", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out"},
+          {}};
+}
+
+bool parse_unsigned(const std::string& text, uint64_t max, uint64_t& value) {
+  char tail = 0;
+  unsigned long long v = 0;
+  if (text.empty() || text[0] == '-' || std::sscanf(text.c_str(), "%llu%c", &v, &tail) != 1 || v > max) return false;
+  value = v;
+  return true;
+}
+
+struct BakeOptions {
+  BakeMode mode = BakeMode::vertex;
+  OcclusionSettings occlusion;
+  std::array<uint32_t, 3> resolution{0, 0, 0};
+  uint64_t seed = 1;
+  uint32_t chunk_index = 0, chunk_count = 1;
+  bool chunked = false;
+};
+
+// Reads the options; returns an error message for a bad value.
+std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
+  if (auto mode = args.value("--mode")) {
+    auto parsed = parse_bake_mode(*mode);
+    if (!parsed) return "--mode expects vertex, texel or volume; got '" + *mode + "'";
+    o.mode = *parsed;
+  }
+  uint64_t n = 0;
+  if (auto rays = args.value("--rays")) {
+    if (!parse_unsigned(*rays, max_rays_per_point, n) || n == 0)
+      return "--rays expects a count from 1 to " + std::to_string(max_rays_per_point) + "; got '" + *rays + "'";
+    o.occlusion.rays = int(n);
+  }
+  if (auto distance = args.value("--max-distance")) {
+    char tail = 0;
+    float d = 0;
+    if (std::sscanf(distance->c_str(), "%f%c", &d, &tail) != 1 || !std::isfinite(d) || d <= 0.0f)
+      return "--max-distance expects a positive number; got '" + *distance + "'";
+    o.occlusion.max_distance = d;
+  }
+  if (auto falloff = args.value("--falloff")) {
+    if (*falloff == "obscurance")
+      o.occlusion.falloff = OcclusionFalloff::obscurance;
+    else if (*falloff != "none")
+      return "--falloff expects none or obscurance; got '" + *falloff + "'";
+  }
+  if (o.occlusion.falloff == OcclusionFalloff::obscurance && std::isinf(o.occlusion.max_distance))
+    return "--falloff obscurance needs --max-distance";
+  if (auto seed = args.value("--seed")) {
+    if (!parse_unsigned(*seed, uint64_t(1) << 53, o.seed))
+      return "--seed expects an integer from 0 to 2^53; got '" + *seed + "'";
+  }
+  if (auto resolution = args.value("--resolution")) {
+    if (o.mode == BakeMode::vertex) return "--resolution applies to texel and volume bakes, not vertex";
+    unsigned x = 0, y = 0, z = 0;
+    char tail = 0;
+    if (o.mode == BakeMode::volume && std::sscanf(resolution->c_str(), "%ux%ux%u%c", &x, &y, &z, &tail) == 3) {
+      o.resolution = {x, y, z};
+    } else if (parse_unsigned(*resolution, std::numeric_limits<uint32_t>::max(), n)) {
+      o.resolution = {uint32_t(n), 0, 0};
+    } else {
+      return o.mode == BakeMode::texel ? "--resolution expects the lightmap size R; got '" + *resolution + "'"
+                                       : "--resolution expects N or NXxNYxNZ; got '" + *resolution + "'";
+    }
+  }
+  if (o.resolution[0] == 0) o.resolution = {o.mode == BakeMode::texel ? 512u : 32u, 0, 0};
+  if (auto chunk = args.value("--chunk")) {
+    unsigned i = 0, count = 0;
+    char tail = 0;
+    if (std::sscanf(chunk->c_str(), "%u/%u%c", &i, &count, &tail) != 2 || count == 0 || i >= count ||
+        count > max_bake_chunks)
+      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_bake_chunks) + "; got '" + *chunk + "'";
+    o.chunk_index = i, o.chunk_count = count, o.chunked = true;
+  }
+  return std::nullopt;
+}
+
+// "\rbake [###########             ]  45%  1134 of 2503 points  0.4 s, 0.5 s left" on a terminal,
+// nothing otherwise.
+class ProgressLine {
+ public:
+  explicit ProgressLine(uint64_t total) : total_(total), shown_(isatty(STDERR_FILENO)) {}
+  void update(uint64_t done) const {
+    if (!shown_ || total_ == 0) return;
+    constexpr int width = 24;
+    const int filled = int(width * done / total_);
+    const double elapsed = seconds(), left = done > 0 ? elapsed * double(total_ - done) / double(done) : 0.0;
+    std::fprintf(stderr, "\rbake [%.*s%*s] %3d%%  %llu of %llu points  %.1f s, %.1f s left ", filled,
+                 "########################", width - filled, "", int(100 * done / total_),
+                 static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), elapsed, left);
+  }
+  void finish() const {
+    if (shown_ && total_ > 0) std::fputc('\n', stderr);
+  }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  uint64_t total_;
+  bool shown_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+int merge_command(const std::vector<std::string>& parts, const std::string& out) {
+  if (parts.empty()) return usage_error("bake", "merge needs the part files to merge");
+  try {
+    std::vector<BakeFile> files;
+    for (const std::string& path : parts) files.push_back(read_bake_file(path));
+    const BakeFile merged = merge_bake_parts(files, parts);
+    try {
+      for (const std::string& path : write_bake_outputs(out, merged)) std::printf("wrote %s\n", path.c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "lumagraph bake: error: %s\n", e.what());
+      return exit_write;
+    }
+    std::printf("merged %zu parts: %llu points\n", parts.size(), static_cast<unsigned long long>(merged.header.points));
+  } catch (const BakeFileError& e) {
+    std::fprintf(stderr, "lumagraph bake: error: %s\n", e.what());
+    return exit_invalid;
+  }
+  return exit_ok;
+}
+
+}  // namespace
+
+int bake_command(const std::vector<std::string>& argv) {
+  std::string error;
+  auto args = parse_args(argv, bake_arg_spec(), &error);
+  if (!args) return usage_error("bake", error);
+  if (args->has("--help")) {
+    std::fputs(help, stdout);
+    return exit_ok;
+  }
+  const std::optional<std::string> out = args->value("--out");
+  if (!out) return usage_error("bake", "--out PATH is required");
+  if (!args->positional.empty() && args->positional[0] == "merge")
+    return merge_command({args->positional.begin() + 1, args->positional.end()}, *out);
+  if (args->positional.size() != 1)
+    return usage_error("bake", "expected one mesh or scene file, got " + std::to_string(args->positional.size()));
+  BakeOptions options;
+  if (auto bad = read_bake_options(*args, options)) return usage_error("bake", *bad);
+  const std::string& input = args->positional[0];
+
+  WorldMesh mesh;
+  std::optional<BakeDomain> domain;
+  std::optional<RayScene> scene;
+  try {
+    mesh = make_world_mesh(make_scene_view(load_world(input), 1.0f));
+    if (options.mode == BakeMode::vertex) domain = BakeDomain::vertices(mesh);
+    if (options.mode == BakeMode::texel) domain = BakeDomain::lightmap(mesh, options.resolution[0]);
+    if (options.mode == BakeMode::volume) domain = BakeDomain::volume(mesh, options.resolution);
+    scene.emplace(mesh.positions, mesh.indices, input);
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return exit_invalid;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lumagraph bake: %s: error: %s\n", input.c_str(), e.what());
+    return exit_invalid;
+  }
+
+  BakeFile file;
+  file.header =
+      make_bake_header(*domain, mesh, input, options.occlusion, options.seed, options.chunk_index, options.chunk_count);
+  if (options.mode == BakeMode::texel) file.lightmap_uvs = domain->lightmap_uvs();
+  const PointRange range = file.header.range;
+  ProgressLine progress(range.size());
+  file.data =
+      run_bake(*scene, *domain, options.occlusion, options.seed, range, [&](uint64_t done) { progress.update(done); });
+  progress.finish();
+  const double seconds = progress.seconds();
+
+  double visibility_sum = 0.0;
+  size_t valid = 0;
+  for (size_t i = 0; i < file.data.size(); ++i)
+    if (file.data.valid[i] > 0.0f) visibility_sum += file.data.visibility[i], ++valid;
+  std::printf(
+      "baked %llu %s points of %s (chunk %u/%u: %llu to %llu of %llu), %d rays each, in %.2f s; mean k_A %.4f over %zu "
+      "valid points\n",
+      static_cast<unsigned long long>(range.size()), bake_mode_name(options.mode), input.c_str(), options.chunk_index,
+      options.chunk_count, static_cast<unsigned long long>(range.begin), static_cast<unsigned long long>(range.end),
+      static_cast<unsigned long long>(file.header.points), options.occlusion.rays, seconds,
+      valid ? visibility_sum / valid : 0.0, valid);
+  try {
+    if (options.chunked) {
+      write_bake_file(*out, file);
+      std::printf("wrote %s\n", out->c_str());
+    } else {
+      for (const std::string& path : write_bake_outputs(*out, file)) std::printf("wrote %s\n", path.c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lumagraph bake: error: %s\n", e.what());
+    return exit_write;
+  }
+  return exit_ok;
+}
+
+}  // namespace lg::cli

@@ -1,0 +1,54 @@
+// make_world_mesh(): the SceneView's draws flattened into one world-space vertex list.
+#include "nodes/occlusion/raytrace/world_mesh.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+#include <stdexcept>
+
+#include "runtime/scene/mesh_tools.h"
+
+namespace lg {
+
+WorldMesh make_world_mesh(const SceneView& view) {
+  WorldMesh out;
+  for (size_t d = 0; d < view.draws.size(); ++d) {
+    const DrawItem& draw = view.draws[d];
+    if (draw.mesh < 0 || size_t(draw.mesh) >= view.meshes.size())
+      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(draw.mesh) +
+                                  ", but the scene has " + std::to_string(view.meshes.size()));
+    const MeshData& mesh = view.meshes[size_t(draw.mesh)];
+    if (std::string problem = mesh_problem(mesh); !problem.empty())
+      throw std::invalid_argument("mesh '" + mesh.name + "': " + problem);
+    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(draw.world)));
+    const uint32_t base = uint32_t(out.positions.size());
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+      const glm::vec3 p = glm::vec3(draw.world * glm::vec4(mesh.positions[v], 1.0f));
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw std::invalid_argument("mesh '" + mesh.name + "': vertex " + std::to_string(v) +
+                                    " has a non-finite world position; positions must be finite numbers");
+      out.positions.push_back(p);
+      const glm::vec3 n = normal_matrix * mesh.normals[v];
+      const float length = glm::length(n);
+      out.normals.push_back(std::isfinite(length) && length > 1e-20f ? n / length : glm::vec3(0.0f));
+    }
+    for (uint32_t i : mesh.indices) out.indices.push_back(base + i);
+    out.parts.push_back({mesh.name, base, uint32_t(mesh.positions.size())});
+  }
+  return out;
+}
+
+uint64_t world_mesh_hash(const WorldMesh& mesh) {
+  uint64_t hash = 0xcbf29ce484222325ull;
+  auto add = [&](const void* data, size_t bytes) {
+    for (size_t i = 0; i < bytes; ++i) hash = (hash ^ static_cast<const uint8_t*>(data)[i]) * 0x100000001b3ull;
+  };
+  add(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+  add(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+  add(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+  return hash;
+}
+
+}  // namespace lg
