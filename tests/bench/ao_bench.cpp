@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "nodes/occlusion/raytrace/world_mesh.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
 #include "nodes/occlusion/reference/scene_reference.h"
 #include "tests/occlusion/ao_render.h"
@@ -61,8 +62,8 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// FNV-1a over what decides a reference: the camera, the size, the settings and every
-// world-space vertex, so a changed scene or camera never reads a stale file.
+// FNV-1a over what decides a reference: the camera, the size, the settings and the world-space
+// geometry (its own hash), so a changed scene or camera never reads a stale file.
 class Key {
  public:
   template <class T>
@@ -82,10 +83,7 @@ std::string cache_path(const Options& o, const char* kind, const SceneView& view
   Key key;
   key.add(view.camera.view).add(view.camera.projection).add(o.width).add(o.height).add(s.rays).add(s.max_distance);
   key.add(s.falloff_from).add(s.seed).add(stride);
-  for (const DrawItem& d : view.draws) {
-    key.add(d.world);
-    for (const glm::vec3& p : view.meshes[size_t(d.mesh)].positions) key.add(p);
-  }
+  key.add(world_mesh_hash(make_world_mesh(view)));
   char name[128];
   std::snprintf(name, sizeof name, "/%s-%s-%ux%u-%016" PRIx64 ".bin", view.name.c_str(), kind, o.width, o.height,
                 key.value());

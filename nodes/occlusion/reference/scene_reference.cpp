@@ -1,15 +1,13 @@
 #include "nodes/occlusion/reference/scene_reference.h"
 
-#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/matrix.hpp>
 #include <limits>
 #include <optional>
-#include <vector>
 
 #include "nodes/occlusion/raytrace/parallel_for.h"
 #include "nodes/occlusion/raytrace/ray_offset.h"
+#include "nodes/occlusion/raytrace/world_mesh.h"
 #include "nodes/occlusion/reference/camera_pixels.h"
 
 namespace lg {
@@ -24,42 +22,30 @@ struct SurfaceHit {
   glm::dvec3 geometric;         // unit geometric normal on the camera's side
 };
 
-// Maps RayScene primitives back to draws: primitive p of the scene is triangle p - first[d] of
-// draw d for the last d with first[d] <= p.
+// The interpolated world-space vertex normal at `point` on triangle `primitive` of the scene's
+// flattened geometry (RayScene(view) numbers its triangles as make_world_mesh(view) does).
 class ShadingNormals {
  public:
-  explicit ShadingNormals(const SceneView& view) : view_(view) {
-    uint32_t count = 0;
-    for (const DrawItem& draw : view.draws) {
-      first_.push_back(count);
-      count += uint32_t(view.meshes[size_t(draw.mesh)].indices.size() / 3);
-      normal_matrices_.push_back(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(draw.world)))));
-    }
-  }
+  explicit ShadingNormals(const SceneView& view) : mesh_(make_world_mesh(view)) {}
 
-  // The interpolated vertex normal at `point` on primitive `primitive` (corners in world space).
-  glm::dvec3 at(uint32_t primitive, const std::array<glm::vec3, 3>& corners, glm::dvec3 point) const {
-    const size_t d = size_t(std::upper_bound(first_.begin(), first_.end(), primitive) - first_.begin()) - 1;
-    const MeshData& mesh = view_.meshes[size_t(view_.draws[d].mesh)];
-    const size_t triangle = primitive - first_[d];
-    const glm::dvec3 a(corners[0]), b(corners[1]), c(corners[2]);
+  glm::dvec3 at(uint32_t primitive, glm::dvec3 point) const {
+    const uint32_t* corner = &mesh_.indices[3 * size_t(primitive)];
+    const glm::dvec3 a(mesh_.positions[corner[0]]), b(mesh_.positions[corner[1]]), c(mesh_.positions[corner[2]]);
     const glm::dvec3 n = glm::cross(b - a, c - a);
     const double area2 = glm::dot(n, n);
-    if (!(area2 > 0.0)) return glm::normalize(n);
+    if (!(area2 > 0.0)) return glm::dvec3(0.0, 0.0, 1.0);  // never hit: zero area
     // Barycentric coordinates of the point by sub-triangle areas.
     const double wb = glm::dot(glm::cross(point - a, c - a), n) / area2;
     const double wc = glm::dot(glm::cross(b - a, point - a), n) / area2;
-    const double wa = 1.0 - wb - wc;
-    const auto normal = [&](int k) { return glm::dvec3(mesh.normals[mesh.indices[3 * triangle + k]]); };
-    const glm::dvec3 interpolated = normal_matrices_[d] * (wa * normal(0) + wb * normal(1) + wc * normal(2));
+    const glm::dvec3 interpolated = (1.0 - wb - wc) * glm::dvec3(mesh_.normals[corner[0]]) +
+                                    wb * glm::dvec3(mesh_.normals[corner[1]]) +
+                                    wc * glm::dvec3(mesh_.normals[corner[2]]);
     const double length = glm::length(interpolated);
-    return length > 1e-12 ? interpolated / length : glm::normalize(n);
+    return length > 1e-12 ? interpolated / length : n / std::sqrt(area2);
   }
 
  private:
-  const SceneView& view_;
-  std::vector<uint32_t> first_;
-  std::vector<glm::dmat3> normal_matrices_;
+  WorldMesh mesh_;
 };
 
 std::optional<SurfaceHit> primary_hit(const RayScene& scene, const ShadingNormals& normals, glm::dvec3 eye,
@@ -76,7 +62,7 @@ std::optional<SurfaceHit> primary_hit(const RayScene& scene, const ShadingNormal
       continue;
     }
     const double side = front ? 1.0 : -1.0;
-    const glm::dvec3 n = normals.at(hit->primitive, scene.triangle(hit->primitive), position);
+    const glm::dvec3 n = normals.at(hit->primitive, position);
     return SurfaceHit{position, n * side, glm::dvec3(hit->normal) * side};
   }
   return std::nullopt;
