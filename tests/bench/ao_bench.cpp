@@ -172,7 +172,9 @@ void print_dominance(const std::vector<Point>& points, bool accumulated) {
                 s.accumulated.mean_absolute, *g, *g < s.accumulated.mean_absolute ? "GTAO lower" : "SSAO lower");
   }
   // Dominance needs a GTAO point at least as fast as every SSAO point, each with lower error.
-  const char* verdict = compared > 0 && won == compared && faster == 0 ? "yes" : won == compared ? "partly" : "no";
+  const char* verdict = compared + faster == 0            ? "nothing to compare"
+                        : compared > 0 && won == compared ? (faster == 0 ? "yes" : "partly")
+                                                          : "no";
   std::printf(
       "GTAO dominates SSAO (%s): %s: lower error at %d of %d SSAO points with a GTAO point as fast; %d SSAO "
       "point(s) faster than every GTAO point\n",
