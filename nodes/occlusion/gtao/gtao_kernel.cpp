@@ -36,10 +36,18 @@ Quality quality_preset(const std::string& name) {
   throw std::logic_error("occlusion.gtao has no quality '" + name + "'");
 }
 
+// The preset, with the `slices` and `steps` params in its place where they are not 0.
+Quality quality_of(const PlanNode& node) {
+  Quality q = quality_preset(param_string(node, "quality"));
+  if (const auto slices = uint32_t(param_number(node, "slices"))) q.slices = slices;
+  if (const auto steps = uint32_t(param_number(node, "steps"))) q.steps = steps;
+  return q;
+}
+
 class GtaoKernel final : public NodeKernel {
  public:
   explicit GtaoKernel(const PlanNode& node)
-      : quality_(quality_preset(param_string(node, "quality"))),
+      : quality_(quality_of(node)),
         radius_(float(param_number(node, "radius"))),
         thickness_(float(param_number(node, "thickness"))),
         temporal_blend_(float(param_number(node, "temporal_blend"))) {}

@@ -30,15 +30,43 @@ float fast_acos(float x) {
   return acos(clamp(x, -1.0, 1.0));
 }
 
+// The horizon angle h = n + clamp(h_raw - n, -pi/2, pi/2) on side `side` (-1: h0, +1: h1) with
+// cos h and sin h, where h_raw = side * acos(horizon_cos), clamped to the normal's tangent plane
+// n -+ pi/2.
+vec3 clamp_horizon(float horizon_cos, float side, float n, vec2 cs_n) {
+  float c = clamp(horizon_cos, -1.0, 1.0);
+  float h_raw = side * acos(c);
+  if (side * (h_raw - n) > HALF_PI) return vec3(n + side * HALF_PI, -side * cs_n.y, side * cs_n.x);
+  return vec3(h_raw, c, side * sqrt(max(1.0 - c * c, 0.0)));
+}
+
+// The cosine-weighted visible arc from the view vector to horizon h (h.x the angle, h.yz its
+// cosine and sine): (cos n + 2 h sin n - cos(2h - n)) / 4.
+float visible_arc(vec3 h, vec2 cs_n) {
+  float c2 = h.y * h.y - h.z * h.z, s2 = 2.0 * h.y * h.z;
+  return (cs_n.x + 2.0 * h.x * cs_n.y - (c2 * cs_n.x + s2 * cs_n.y)) / 4.0;
+}
+
+// One horizon's terms of the bent-normal integral: 6 sin(h - n) - sin(3h - n) - 3 sin(h + n)
+// along the slice, -cos(3h - n) - 3 cos(h + n) toward the eye.
+vec2 bent_terms(vec3 h, vec2 cs_n) {
+  float ch = h.y, sh = h.z, cn = cs_n.x, sn = cs_n.y;
+  float c3 = ch * (4.0 * ch * ch - 3.0), s3 = sh * (3.0 - 4.0 * sh * sh);
+  float along = 6.0 * (sh * cn - ch * sn) - (s3 * cn - c3 * sn) - 3.0 * (sh * cn + ch * sn);
+  float toward = -(c3 * cn + s3 * sn) - 3.0 * (ch * cn - sh * sn);
+  return vec2(along, toward);
+}
+
 // Mip k's texel i averages mip-0 texels [2^k i, 2^k (i + 1)), which on a plane is the plane's
 // depth at the block's centre (device depth is affine across the screen on planes). So a sample
 // reads the texel of its level that holds it and stands at that texel's centre: a point on the
 // surface, never one lifted off a flat floor by filtering or by a level that does not tile the
 // image exactly (odd sizes).
+// (Level sizes follow from mip 0's, the viewport, without querying the texture per sample.)
 vec3 sample_position(vec2 uv, int mip) {
-  ivec2 level = textureSize(depth_mips, mip);
-  ivec2 t = clamp(ivec2(uv * vec2(textureSize(depth_mips, 0)) / float(1 << mip)), ivec2(0), level - 1);
-  vec2 centre = (vec2(t) + 0.5) * float(1 << mip) / vec2(textureSize(depth_mips, 0));
+  ivec2 level = max(ivec2(viewport.xy) >> mip, ivec2(1));
+  ivec2 t = clamp(ivec2(uv * viewport.xy / float(1 << mip)), ivec2(0), level - 1);
+  vec2 centre = (vec2(t) + 0.5) * float(1 << mip) * viewport.zw;
   return view_position(centre, linear_depth(texelFetch(depth_mips, t, mip).r));
 }
 
@@ -78,13 +106,17 @@ void main() {
   uint slices = counts.x, steps = counts.y;
   float radius = search.x;
   float screen_radius = min(radius * search.y / z, search.w);  // pixels
-  float falloff_from = 0.62 * radius;  // samples fade out between 62% and 100% of the radius
+  // Samples fade out between 62% and 100% of the radius: weight (radius - d) / (radius - from),
+  // 1 at `from` and 0 at the radius.
+  float falloff_from = 0.62 * radius;
   float falloff_mul = -1.0 / (radius - falloff_from);
-  float falloff_add = -falloff_from * falloff_mul;
+  float falloff_add = -radius * falloff_mul;
+  float min_t = min(1.3 / max(screen_radius, 1e-3), 1.0);
+  float last_mip = float(textureQueryLevels(depth_mips) - 1);
   float slice_noise = noise(vec2(texel), counts.z);
   float step_noise = noise(vec2(texel) + vec2(17.0, 31.0), counts.z);
 
-  float visibility = 0.0;
+  float visibility = 0.0, open_weight = 0.0;
   vec3 bent = vec3(0.0);
   for (uint slice = 0u; slice < slices; ++slice) {
     float phi = (float(slice) + slice_noise) / float(slices) * PI;
@@ -98,15 +130,23 @@ void main() {
     if (projected_length < 1e-5) continue;
     float sign_n = sign(dot(ortho_direction, projected_normal));
     float cos_n = clamp(dot(projected_normal, view_vec) / projected_length, 0.0, 1.0);
+    float sin_n = sign_n * sqrt(max(1.0 - cos_n * cos_n, 0.0));
     float n = sign_n * fast_acos(cos_n);
-    float low0 = cos(n + HALF_PI), low1 = cos(n - HALF_PI);
+    float low0 = -sin_n, low1 = sin_n;  // cos(n + pi/2), cos(n - pi/2): the tangent plane
     float horizon0 = low0, horizon1 = low1;
     for (uint s = 0u; s < steps; ++s) {
-      float t = (float(s) + step_noise) / float(steps);
-      t = t * t;  // more samples near the centre, where occluders matter most
+      // Evenly spaced (jittered) from 1.3 pixels out (closer, a sample sees only the pixel's own
+      // surface, as in XeGTAO) to the radius. Squared spacing, denser near the centre, left the
+      // outer half of the radius with one sample in three and missed most of the occlusion
+      // there: against the ray-traced bunny, 3x3 had a mean absolute error of 0.045 with it
+      // and 0.038 evenly spaced (tests/occlusion, 320x180).
+      float t = min_t + (1.0 - min_t) * (float(s) + step_noise) / float(steps);
       vec2 offset = omega * (t * screen_radius) * viewport.zw;
       float offset_px = t * screen_radius;
-      int mip = int(clamp(log2(max(offset_px, 1.0)) - 3.3, 0.0, float(textureQueryLevels(depth_mips) - 1)));
+      // A mip texel at most 1/80 of the offset: averaged depth across a silhouette is a surface
+      // that is not there, and coarser levels (1/10, as XeGTAO) raised the bunny's error at
+      // 1280x720 from 0.037 to 0.042 (lumagraph-bench-ao).
+      int mip = int(clamp(log2(max(offset_px, 1.0)) - 6.3, 0.0, last_mip));
       for (int side = 0; side < 2; ++side) {
         vec2 suv = side == 0 ? uv + offset : uv - offset;
         if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) continue;
@@ -121,23 +161,25 @@ void main() {
         else horizon1 = max(horizon1, mix(low1, shc, weight));
       }
     }
-    // Horizon angles measured from the view vector, clamped to the hemisphere of the normal.
-    float h0 = -fast_acos(horizon1);
-    float h1 = fast_acos(horizon0);
-    h0 = n + max(h0 - n, -HALF_PI);
-    h1 = n + min(h1 - n, HALF_PI);
-    float sin_n = sin(n);
-    float arc0 = (cos_n + 2.0 * h0 * sin_n - cos(2.0 * h0 - n)) / 4.0;
-    float arc1 = (cos_n + 2.0 * h1 * sin_n - cos(2.0 * h1 - n)) / 4.0;
-    visibility += projected_length * (arc0 + arc1);
+    // Horizon angles measured from the view vector, clamped to the hemisphere of the normal,
+    // with their cosines and sines (the integrals below need no further trigonometry).
+    vec2 cs_n = vec2(cos_n, sin_n);
+    vec3 h0 = clamp_horizon(horizon1, -1.0, n, cs_n);
+    vec3 h1 = clamp_horizon(horizon0, 1.0, n, cs_n);
+    visibility += projected_length * (visible_arc(h0, cs_n) + visible_arc(h1, cs_n));
+    open_weight += projected_length * (cos_n + n * sin_n);  // the same with both horizons open
     // The visible arc's direction-weighted integral (XeGTAO's bent normal) in the slice's own
     // basis: t0 along the marching direction, t1 toward the eye.
-    float t0 = (6.0 * sin(h0 - n) - sin(3.0 * h0 - n) + 6.0 * sin(h1 - n) - sin(3.0 * h1 - n) + 16.0 * sin_n -
-                3.0 * (sin(h0 + n) + sin(h1 + n))) / 12.0;
-    float t1 = (-cos(3.0 * h0 - n) - cos(3.0 * h1 - n) + 8.0 * cos(n) - 3.0 * (cos(h0 + n) + cos(h1 + n))) / 12.0;
+    vec2 b0 = bent_terms(h0, cs_n), b1 = bent_terms(h1, cs_n);
+    float t0 = (b0.x + b1.x + 16.0 * sin_n) / 12.0;
+    float t1 = (b0.y + b1.y + 8.0 * cos_n) / 12.0;
     bent += (normalize(ortho_direction) * t0 + view_vec * t1) * projected_length;
   }
-  visibility = slices > 0u ? clamp(visibility / float(slices), 0.0, 1.0) : 1.0;
+  // Normalised by what the same slices give an open hemisphere rather than by their count: a
+  // slice's share of the integral is exact only on average over slice angles, so one slice
+  // alone gave up to 1.3 on open surfaces, clamped to 1, and less elsewhere (a dark bias of
+  // single-slice settings); the ratio is 1 on any open surface for any slice count.
+  visibility = open_weight > 0.0 ? clamp(visibility / open_weight, 0.0, 1.0) : 1.0;
   float bent_length = length(bent);
   vec3 world_bent = bent_length > 1e-6 ? normalize(mat3(world_from_view) * (bent / bent_length)) : world_n;
   // A cosine-weighted visible cone of half-angle a has visibility sin^2 a: its cosine is
