@@ -34,11 +34,11 @@
 #include "nodes/lighting/ibl/ibl_occlusion.h"
 #include "nodes/occlusion/raytrace/occlusion_estimate.h"
 #include "nodes/occlusion/raytrace/parallel_for.h"
-#include "nodes/occlusion/raytrace/ray_offset.h"
 #include "nodes/occlusion/raytrace/ray_scene.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "tests/env/env_test_support.h"
+#include "tests/lighting/occluded_irradiance.h"
 
 namespace lg::test {
 namespace {
@@ -49,10 +49,6 @@ constexpr uint32_t kFace = 48;        // grace has 64 texels a quarter turn (256
 constexpr int kOcclusionRays = 4096;  // k_A's standard error at most 0.5 / 64 = 0.008
 constexpr int kBunnyPoints = 768, kFloorPoints = 384;
 constexpr int kShOrder = 2;
-
-double luminance(const glm::dvec3& c) {
-  return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
 
 struct Triangles {
   size_t first = 0, count = 0;  // a draw's range of the RayScene's triangles
@@ -106,40 +102,25 @@ PointIrradiance irradiance_at(const RayScene& scene, const CubeImage& env, std::
                               const SurfacePoint& point, uint64_t seed) {
   const OcclusionResult occ = estimate_occlusion(scene, point.position, point.normal, {.rays = kOcclusionRays}, seed);
   const glm::dvec3 n(point.normal), bent(occ.bent_normal);
-  const glm::vec3 origin = offset_ray_origin(point.position, point.normal);
-  glm::dvec3 reference(0.0), open(0.0), exact_cone(0.0);
+  const OccludedIrradiance traced = occluded_irradiance(scene, env, point.position, point.normal, n);
+  glm::dvec3 exact_cone(0.0);
   for (int f = 0; f < 6; ++f)
     for (uint32_t j = 0; j < env.size; ++j)
       for (uint32_t i = 0; i < env.size; ++i) {
         const glm::dvec3 d = glm::normalize(env.direction(f, i, j));
-        const glm::dvec3 radiance = glm::dvec3(env.at(f, i, j)) * texel_solid_angle(env.size, i, j);
-        const double cosine = glm::dot(n, d);
-        if (glm::dot(bent, d) >= occ.cone_cos) exact_cone += radiance * cosine;
-        if (cosine <= 0) continue;
-        open += radiance * cosine;
-        if (!scene.occluded(origin, glm::vec3(d), std::numeric_limits<float>::infinity()))
-          reference += radiance * cosine;
+        if (glm::dot(bent, d) >= occ.cone_cos)
+          exact_cone += glm::dvec3(env.at(f, i, j)) * texel_solid_angle(env.size, i, j) * glm::dot(n, d);
       }
   const double k_a = occ.visibility;
   PointIrradiance out;
-  out.reference = luminance(reference);
-  out.open = luminance(open);
+  out.reference = luminance(traced.reference);
+  out.open = luminance(traced.open);
   out.exact_cone = luminance(exact_cone);
   out.sh_open = luminance(glm::max(evaluate_sh(sh, n), glm::dvec3(0.0)));
   out.ao_normal = k_a * out.sh_open;
   out.ao_bent = k_a * luminance(glm::max(evaluate_sh(sh, bent), glm::dvec3(0.0)));
   out.cone = luminance(cone_lobe_irradiance(sh, n, bent, occ.cone_cos, k_a));
   return out;
-}
-
-struct ErrorStats {
-  double mean = 0, p95 = 0;
-};
-
-ErrorStats stats(std::vector<double> errors) {
-  std::sort(errors.begin(), errors.end());
-  return {std::accumulate(errors.begin(), errors.end(), 0.0) / errors.size(),
-          errors[std::min(errors.size() - 1, size_t(std::ceil(0.95 * errors.size())) - 1)]};
 }
 
 TEST(IblOcclusionRaytrace, ConeFoldedIrradianceBeatsAmbientOcclusionOnTheBunny) {
@@ -206,14 +187,14 @@ TEST(IblOcclusionRaytrace, ConeFoldedIrradianceBeatsAmbientOcclusionOnTheBunny) 
 
   std::cout << "grace.hdr on the bunny world, " << gain.size() << " points (" << sealed
             << " sealed left out), SH order " << kShOrder << "; unoccluded SH irradiance against the cube's: mean "
-            << stats(sh_truncation).mean << ", p95 " << stats(sh_truncation).p95 << "\n";
+            << error_stats(sh_truncation).mean << ", p95 " << error_stats(sh_truncation).p95 << "\n";
   std::cout << std::left << std::setw(26) << "method" << std::right << std::setw(16) << "relative mean" << std::setw(8)
             << "p95" << std::setw(16) << "of open mean" << std::setw(8) << "p95"
             << "\n";
   std::ofstream csv(fs::path(LUMAGRAPH_BINARY_DIR) / "ibl_occlusion_vs_raytrace.csv");
   csv << "method,points,relative_mean,relative_p95,of_open_mean,of_open_p95\n";
   for (const Method& m : methods) {
-    const ErrorStats rel = stats(m.relative), open = stats(m.of_open);
+    const ErrorStats rel = error_stats(m.relative), open = error_stats(m.of_open);
     std::cout << std::left << std::setw(26) << m.name << std::right << std::fixed << std::setprecision(4)
               << std::setw(16) << rel.mean << std::setw(8) << rel.p95 << std::setw(16) << open.mean << std::setw(8)
               << open.p95 << "\n";
@@ -223,13 +204,11 @@ TEST(IblOcclusionRaytrace, ConeFoldedIrradianceBeatsAmbientOcclusionOnTheBunny) 
 
   // The cone must beat AO x SH(n) by more than chance: the mean of the per-point gain at least
   // 4 standard errors above 0 (the points are independent draws; k_A's ray noise is in both).
-  const double mean_gain = std::accumulate(gain.begin(), gain.end(), 0.0) / gain.size();
-  double var = 0;
-  for (double g : gain) var += (g - mean_gain) * (g - mean_gain);
-  const double standard_error = std::sqrt(var / (gain.size() - 1) / gain.size());
-  std::cout << "mean gain of the cone over AO x SH(n): " << mean_gain << " +- " << standard_error << "\n";
-  EXPECT_GT(mean_gain, 4 * standard_error);
-  EXPECT_LT(stats(methods[2].relative).p95, stats(methods[0].relative).p95);
+  const MeanAndError mean_gain = mean_and_error(gain);
+  std::cout << "mean gain of the cone over AO x SH(n): " << mean_gain.mean << " +- " << mean_gain.standard_error
+            << "\n";
+  EXPECT_GT(mean_gain.mean, 4 * mean_gain.standard_error);
+  EXPECT_LT(error_stats(methods[2].relative).p95, error_stats(methods[0].relative).p95);
 }
 
 }  // namespace
