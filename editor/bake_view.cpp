@@ -47,6 +47,14 @@ vtkFloatArray* float_array(vtkImageData* image, const char* name, int components
   return array;
 }
 
+// The last non-empty line of a VTK message, without the "vtkClass (0x...): " that starts it.
+std::string last_line(std::string message) {
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  message = message.substr(message.find_last_of('\n') + 1);
+  const size_t object = message.find("): ");
+  return object == std::string::npos ? message : message.substr(object + 3);
+}
+
 // VTK's XML reader reports a damaged file through error events, not exceptions: the observer
 // keeps the first message for ours.
 vtkSmartPointer<vtkImageData> read_vti(const std::string& path) {
@@ -65,9 +73,8 @@ vtkSmartPointer<vtkImageData> read_vti(const std::string& path) {
   reader->Update();
   vtkImageData* image = reader->GetOutput();
   if (!vtk_error.empty() || !image || image->GetNumberOfPoints() == 0) {
-    const size_t cut = vtk_error.find_last_of('\n', vtk_error.size() > 1 ? vtk_error.size() - 2 : 0);
     throw BakeFileError(path + ": damaged VTK image data" +
-                        (vtk_error.empty() ? std::string(" (no points)") : ": " + vtk_error.substr(cut + 1)));
+                        (vtk_error.empty() ? std::string(" (no points)") : ": " + last_line(vtk_error)));
   }
   auto copy = vtkSmartPointer<vtkImageData>::New();
   copy->DeepCopy(image);

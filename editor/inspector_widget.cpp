@@ -176,12 +176,28 @@ void InspectorWidget::show_message(const QString& text) {
   vtk_->window->Render();
 }
 
+void InspectorWidget::show_error(const QString& text) {
+  show_message(text);
+  // Also in the view itself, where the eye is, not only in the line below it.
+  vtkNew<vtkTextActor> error;
+  error->SetInput(text.toUtf8().constData());
+  error->GetTextProperty()->SetFontSize(18);
+  error->GetTextProperty()->SetColor(1.0, 0.45, 0.4);
+  error->GetTextProperty()->SetJustificationToCentered();
+  error->GetTextProperty()->SetVerticalJustificationToCentered();
+  error->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  error->GetPositionCoordinate()->SetValue(0.5, 0.5);
+  vtk_->renderer->AddActor2D(error);
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
 bool InspectorWidget::open_environment(const QString& path) {
   try {
     show_environment(load_env_probe(path.toStdString()));
     return true;
   } catch (const ImageFileError& e) {
-    show_message(QString::fromStdString(e.what()));
+    show_error(QString::fromStdString(e.what()));
     return false;
   }
 }
@@ -252,7 +268,7 @@ bool InspectorWidget::open_bake(const QString& path) {
     show_volume(load_bake_volume(path.toStdString()));
     return true;
   } catch (const BakeFileError& e) {
-    show_message(QString::fromStdString(e.what()));
+    show_error(QString::fromStdString(e.what()));
     return false;
   }
 }

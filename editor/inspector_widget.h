@@ -36,6 +36,8 @@ class InspectorWidget : public QWidget {
   std::optional<VolumeSliceState> volume_state() const;
   void set_volume_slice(int axis, int index);
   void show_message(const QString& text);
+  // A message that something failed: below the view and in red in it.
+  void show_error(const QString& text);
   QString summary() const;
 
  protected:
