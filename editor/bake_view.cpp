@@ -4,7 +4,6 @@
 #include <vtkArrowSource.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkColorTransferFunction.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkDataSetMapper.h>
 #include <vtkExtractVOI.h>
@@ -20,24 +19,20 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
-#include <vtkScalarBarActor.h>
-#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkXMLImageDataReader.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <sstream>
 
+#include "editor/bake_legend.h"
 #include "nodes/occlusion/bake/bake_file.h"
 
 namespace lg {
 
 namespace {
-
-const char* const shown_name = "shown_visibility";
 
 vtkFloatArray* float_array(vtkImageData* image, const char* name, int components) {
   auto* array = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray(name));
@@ -85,7 +80,8 @@ vtkSmartPointer<vtkImageData> image_of_bake(const std::string& path) {
   const BakeFile file = read_bake_file(path);
   const BakeHeader& h = file.header;
   if (h.mode != BakeMode::volume)
-    throw BakeFileError(path + ": a " + bake_mode_name(h.mode) + " bake, expected a volume bake (--mode volume)");
+    throw BakeFileError(path + ": a " + bake_mode_name(h.mode) +
+                        " bake, expected a volume bake (--mode volume); a vertex bake opens with its mesh (--mesh)");
   if (h.chunk_count != 1)
     throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
                         " of a bake; merge the chunks first (lumagraph bake merge)");
@@ -105,39 +101,6 @@ vtkSmartPointer<vtkImageData> image_of_bake(const std::string& path) {
   add("bent_normal", 3, file.data.bent_normal);
   add("valid", 1, file.data.valid);
   return image;
-}
-
-// Viridis at five stops: perceptually even, readable in grey, and distinct from the grey mask.
-vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range) {
-  vtkNew<vtkColorTransferFunction> ramp;
-  const double stops[5][3] = {{0.267, 0.005, 0.329},
-                              {0.229, 0.322, 0.546},
-                              {0.128, 0.567, 0.551},
-                              {0.369, 0.789, 0.383},
-                              {0.993, 0.906, 0.144}};
-  for (int i = 0; i < 5; ++i) ramp->AddRGBPoint(i / 4.0, stops[i][0], stops[i][1], stops[i][2]);
-  auto lut = vtkSmartPointer<vtkLookupTable>::New();
-  lut->SetNumberOfTableValues(256);
-  for (int i = 0; i < 256; ++i) {
-    double rgb[3];
-    ramp->GetColor(i / 255.0, rgb);
-    lut->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1);
-  }
-  // A constant bake (an empty scene) still needs a range the colour map can span.
-  lut->SetRange(range[0], std::max(range[1], range[0] + 1e-6));
-  lut->SetNanColor(0.55, 0.55, 0.55, 1);
-  return lut;
-}
-
-vtkSmartPointer<vtkTextActor> text_at(const std::string& text, double x, double y, int size, bool top) {
-  auto actor = vtkSmartPointer<vtkTextActor>::New();
-  actor->SetInput(text.c_str());
-  actor->GetTextProperty()->SetFontSize(size);
-  actor->GetTextProperty()->SetColor(0.92, 0.92, 0.92);
-  if (top) actor->GetTextProperty()->SetVerticalJustificationToTop();
-  actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  actor->GetPositionCoordinate()->SetValue(x, y);
-  return actor;
 }
 
 }  // namespace
@@ -160,25 +123,11 @@ BakeVolume load_bake_volume(const std::string& path) {
     throw BakeFileError(path +
                         ": not an occlusion bake: expected point arrays visibility (1 component), bent_normal (3) "
                         "and valid (1) of one value per grid point");
-  vtkNew<vtkFloatArray> shown;
-  shown->SetName(shown_name);
-  const vtkIdType n = visibility->GetNumberOfTuples();
-  shown->SetNumberOfTuples(n);
-  double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (vtkIdType i = 0; i < n; ++i) {
-    const float v = visibility->GetValue(i);
-    if (valid->GetValue(i) > 0) {
-      shown->SetValue(i, v);
-      low = std::min(low, double(v)), high = std::max(high, double(v));
-    } else {
-      shown->SetValue(i, std::numeric_limits<float>::quiet_NaN());
-      ++volume.invalid_points;
-    }
-  }
-  if (volume.invalid_points == n) low = high = 0;
-  volume.visibility_range = {low, high};
-  volume.image->GetPointData()->AddArray(shown);
-  volume.image->GetPointData()->SetActiveScalars(shown_name);
+  const MaskedVisibility masked = mask_visibility(visibility, valid);
+  volume.visibility_range = masked.range;
+  volume.invalid_points = masked.invalid_points;
+  volume.image->GetPointData()->AddArray(masked.shown);
+  volume.image->GetPointData()->SetActiveScalars(shown_visibility_name);
   volume.image->GetPointData()->SetActiveVectors("bent_normal");
   return volume;
 }
@@ -301,28 +250,7 @@ VolumeSlices::VolumeSlices(vtkRenderer* renderer, const BakeVolume& volume) : pi
   axes->GetZAxesLinesProperty()->SetColor(0.5, 0.5, 0.5);
   renderer->AddActor(axes);
 
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(p.lut);
-  bar->SetTitle("k_A");
-  bar->SetNumberOfLabels(5);
-  bar->SetLabelFormat("%.2f");
-  // The grey swatch below the ramp is the legend of the masked points.
-  bar->DrawNanAnnotationOn();
-  bar->SetNanAnnotation("inside");
-  bar->SetWidth(0.1);
-  bar->SetHeight(0.62);
-  bar->SetPosition(0.87, 0.16);
-  bar->UnconstrainedFontSizeOn();
-  for (vtkTextProperty* text :
-       {bar->GetTitleTextProperty(), bar->GetLabelTextProperty(), bar->GetAnnotationTextProperty()}) {
-    text->SetItalic(false);
-    text->SetBold(false);
-    text->SetShadow(false);
-    text->SetColor(0.92, 0.92, 0.92);
-    text->SetFontSize(15);
-  }
-  bar->GetTitleTextProperty()->SetFontSize(18);
-  renderer->AddActor2D(bar);
+  add_visibility_bar(renderer, p.lut, "inside");
 
   std::ostringstream title;
   title.precision(3);
@@ -330,7 +258,7 @@ VolumeSlices::VolumeSlices(vtkRenderer* renderer, const BakeVolume& volume) : pi
         << p.dims[0] << " x " << p.dims[1] << " x " << p.dims[2] << " points, k_A from " << volume.visibility_range[0]
         << " to " << volume.visibility_range[1] << " over the valid points\n"
         << "grey: inside geometry (" << volume.invalid_points << " points) - arrows: bent normals on the z slice";
-  renderer->AddActor2D(text_at(title.str(), 0.015, 0.98, 16, true));
+  add_title(renderer, title.str());
 }
 
 VolumeSlices::~VolumeSlices() = default;

@@ -29,6 +29,7 @@
 
 #include "editor/bake_view.h"
 #include "editor/env_probe.h"
+#include "editor/vertex_bake_view.h"
 #include "nodes/occlusion/bake/bake_file.h"
 
 namespace lg {
@@ -166,6 +167,7 @@ void InspectorWidget::clear_view() {
   vtk_->renderer->RemoveAllViewProps();
   vtk_->spheres.clear();
   volume_.reset();
+  vertex_bake_range_.reset();
   slice_bar_->hide();
   slice_caption_->hide();
 }
@@ -313,6 +315,35 @@ void InspectorWidget::set_volume_slice(int axis, int index) {
   slice_caption_->setText(QString::fromStdString(volume_->slice_caption()));
   vtk_->window->Render();
   vtk_->widget->update();
+}
+
+bool InspectorWidget::open_vertex_bake(const QString& path, const QString& mesh_path) {
+  try {
+    show_vertex_bake(load_vertex_bake(path.toStdString(), mesh_path.toStdString()));
+    return true;
+  } catch (const BakeFileError& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void InspectorWidget::show_vertex_bake(const VertexBake& bake) {
+  clear_view();
+  add_vertex_bake(vtk_->renderer, bake);
+  vertex_bake_range_ = bake.visibility_range;
+  summary_->setText(tr("%1 on %2 — vertex bake, %3 vertices · k_A %4 to %5 · %6 vertices with nothing baked (grey)")
+                        .arg(QString::fromStdString(bake.path))
+                        .arg(QString::fromStdString(bake.mesh_path))
+                        .arg(bake.mesh->GetNumberOfPoints())
+                        .arg(bake.visibility_range[0], 0, 'g', 4)
+                        .arg(bake.visibility_range[1], 0, 'g', 4)
+                        .arg(bake.invalid_points));
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+std::optional<std::array<double, 2>> InspectorWidget::vertex_bake_range() const {
+  return vertex_bake_range_;
 }
 
 }  // namespace lg

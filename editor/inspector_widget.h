@@ -17,6 +17,7 @@ namespace lg {
 struct EnvProbe;
 struct BakeVolume;
 struct VolumeSliceState;
+struct VertexBake;
 class VolumeSlices;
 
 class InspectorWidget : public QWidget {
@@ -35,6 +36,12 @@ class InspectorWidget : public QWidget {
   // The shown volume's slices; nullopt when no volume is shown.
   std::optional<VolumeSliceState> volume_state() const;
   void set_volume_slice(int axis, int index);
+
+  void show_vertex_bake(const VertexBake& bake);
+  // A vertex bake (NAME.lgbake) on the mesh or scene it was baked from.
+  bool open_vertex_bake(const QString& path, const QString& mesh_path);
+  // The shown vertex bake's colour range; nullopt when none is shown.
+  std::optional<std::array<double, 2>> vertex_bake_range() const;
   void show_message(const QString& text);
   // A message that something failed: below the view and in red in it.
   void show_error(const QString& text);
@@ -49,6 +56,7 @@ class InspectorWidget : public QWidget {
 
   std::unique_ptr<Vtk> vtk_;
   std::unique_ptr<VolumeSlices> volume_;
+  std::optional<std::array<double, 2>> vertex_bake_range_;
   QWidget* slice_bar_;
   std::array<QSlider*, 3> slice_sliders_{};
   QLabel* slice_caption_;
