@@ -11,9 +11,34 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 
+#include "nodes/occlusion/bake/bake_file.h"
+
 namespace lg {
+
+BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint) {
+  if (!std::filesystem::exists(path)) throw BakeFileError(path + ": no such file");
+  BakeFile file = read_bake_file(path);
+  const BakeHeader& h = file.header;
+  if (h.mode != mode)
+    throw BakeFileError(path + ": a " + bake_mode_name(h.mode) + " bake, expected a " + bake_mode_name(mode) +
+                        " bake; " + hint);
+  if (h.chunk_count != 1)
+    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
+                        " of a bake; merge the chunks first (lumagraph bake merge)");
+  return file;
+}
+
+vtkSmartPointer<vtkFloatArray> vtk_array(const char* name, int components, const std::vector<float>& values) {
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(vtkIdType(values.size() / components));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
+}
 
 MaskedVisibility mask_visibility(vtkDataArray* visibility, vtkDataArray* valid) {
   MaskedVisibility masked;

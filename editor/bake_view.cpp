@@ -77,29 +77,15 @@ vtkSmartPointer<vtkImageData> read_vti(const std::string& path) {
 }
 
 vtkSmartPointer<vtkImageData> image_of_bake(const std::string& path) {
-  const BakeFile file = read_bake_file(path);
+  const BakeFile file = read_whole_bake(path, BakeMode::volume, "a vertex bake opens with its mesh (--mesh)");
   const BakeHeader& h = file.header;
-  if (h.mode != BakeMode::volume)
-    throw BakeFileError(path + ": a " + bake_mode_name(h.mode) +
-                        " bake, expected a volume bake (--mode volume); a vertex bake opens with its mesh (--mesh)");
-  if (h.chunk_count != 1)
-    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
-                        " of a bake; merge the chunks first (lumagraph bake merge)");
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(int(h.dims[0]), int(h.dims[1]), int(h.dims[2]));
   image->SetOrigin(h.origin.x, h.origin.y, h.origin.z);
   image->SetSpacing(h.spacing.x, h.spacing.y, h.spacing.z);
-  const auto add = [&](const char* name, int components, const std::vector<float>& values) {
-    vtkNew<vtkFloatArray> array;
-    array->SetName(name);
-    array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(vtkIdType(values.size() / components));
-    std::copy(values.begin(), values.end(), array->GetPointer(0));
-    image->GetPointData()->AddArray(array);
-  };
-  add("visibility", 1, file.data.visibility);
-  add("bent_normal", 3, file.data.bent_normal);
-  add("valid", 1, file.data.valid);
+  image->GetPointData()->AddArray(vtk_array("visibility", 1, file.data.visibility));
+  image->GetPointData()->AddArray(vtk_array("bent_normal", 3, file.data.bent_normal));
+  image->GetPointData()->AddArray(vtk_array("valid", 1, file.data.valid));
   return image;
 }
 

@@ -23,29 +23,9 @@
 
 namespace lg {
 
-namespace {
-
-vtkSmartPointer<vtkFloatArray> float_array(const char* name, int components, const std::vector<float>& values) {
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(vtkIdType(values.size() / components));
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
-  return array;
-}
-
-}  // namespace
-
 VertexBake load_vertex_bake(const std::string& path, const std::string& mesh_path) {
-  if (!std::filesystem::exists(path)) throw BakeFileError(path + ": no such file");
-  const BakeFile file = read_bake_file(path);
+  const BakeFile file = read_whole_bake(path, BakeMode::vertex, "a volume bake opens without --mesh");
   const BakeHeader& h = file.header;
-  if (h.mode != BakeMode::vertex)
-    throw BakeFileError(path + ": a " + std::string(bake_mode_name(h.mode)) +
-                        " bake, expected a vertex bake with --mesh");
-  if (h.chunk_count != 1)
-    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
-                        " of a bake; merge the chunks first (lumagraph bake merge)");
   WorldMesh mesh;
   try {
     mesh = make_world_mesh(make_scene_view(load_world(mesh_path), 1.0f));
@@ -74,14 +54,14 @@ VertexBake load_vertex_bake(const std::string& path, const std::string& mesh_pat
   }
   bake.mesh->SetPoints(points);
   bake.mesh->SetPolys(triangles);
-  const auto visibility = float_array("visibility", 1, file.data.visibility);
-  const auto valid = float_array("valid", 1, file.data.valid);
+  const auto visibility = vtk_array("visibility", 1, file.data.visibility);
+  const auto valid = vtk_array("valid", 1, file.data.valid);
   const MaskedVisibility masked = mask_visibility(visibility, valid);
   bake.visibility_range = masked.range;
   bake.invalid_points = masked.invalid_points;
   bake.mesh->GetPointData()->AddArray(masked.shown);
   bake.mesh->GetPointData()->SetActiveScalars(shown_visibility_name);
-  bake.mesh->GetPointData()->AddArray(float_array("bent_normal", 3, file.data.bent_normal));
+  bake.mesh->GetPointData()->AddArray(vtk_array("bent_normal", 3, file.data.bent_normal));
   return bake;
 }
 

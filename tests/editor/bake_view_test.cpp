@@ -159,7 +159,7 @@ TEST(BakeView, BrokenOrWrongFilesNameTheFile) {
   vertex.header.parts = {{"box", 0, uint32_t(vertex.data.size())}};
   const std::string vertex_path = box.dir.filePath("vertex.lgbake").toStdString();
   write_bake_file(vertex_path, vertex);
-  expect_refused(vertex_path, "a vertex bake, expected a volume bake");
+  expect_refused(vertex_path, "a vertex bake, expected a volume bake; a vertex bake opens with its mesh");
 }
 
 TEST(BakeView, TheCommandExitsNonZeroAndSaysWhichFile) {

@@ -65,7 +65,8 @@ TEST(VertexBakeView, ShowsTheBakeOnItsMeshAndRefusesAnotherMesh) {
   write_bake_file(volume.toStdString(), file);
   EXPECT_FALSE(inspector.open_vertex_bake(volume, bunny));
   EXPECT_TRUE(inspector.summary().startsWith(volume)) << inspector.summary().toStdString();
-  EXPECT_TRUE(inspector.summary().contains("expected a vertex bake")) << inspector.summary().toStdString();
+  EXPECT_TRUE(inspector.summary().contains("a volume bake, expected a vertex bake"))
+      << inspector.summary().toStdString();
 }
 
 }  // namespace
