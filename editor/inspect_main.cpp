@@ -1,5 +1,9 @@
 // lumagraph-inspect FILE [--screenshot PNG]: shows an environment probe (an equirectangular
 // .hdr or .exr) on a sphere beside its L2 SH reconstruction and the error between them.
+// lumagraph-inspect --bake BAKE [--screenshot PNG]: shows a baked occlusion volume (NAME.vti or
+// NAME.lgbake of `lumagraph bake --mode volume`) as three slices coloured by visibility.
+// lumagraph-inspect --bake NAME.lgbake --mesh MESH [--screenshot PNG]: shows a vertex bake on
+// the mesh (or scene) it was baked from, coloured by each vertex's visibility.
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -15,21 +19,33 @@ int main(int argc, char** argv) {
   QApplication::setApplicationName(QStringLiteral("lumagraph-inspect"));
 
   QCommandLineParser args;
-  args.setApplicationDescription(QStringLiteral("Inspects environment probes."));
+  args.setApplicationDescription(QStringLiteral("Inspects environment probes and baked occlusion volumes."));
   args.addHelpOption();
-  args.addPositionalArgument(QStringLiteral("file"), QStringLiteral("Environment (.hdr, .exr)."));
+  args.addPositionalArgument(QStringLiteral("file"), QStringLiteral("Environment (.hdr, .exr)."),
+                             QStringLiteral("[file]"));
+  const QCommandLineOption bake(QStringLiteral("bake"),
+                                QStringLiteral("A volume bake to show instead (.vti or .lgbake of lumagraph bake)."),
+                                QStringLiteral("BAKE"));
   const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                       QStringLiteral("Write the window to a PNG and exit."), QStringLiteral("PNG"));
+  const QCommandLineOption mesh(QStringLiteral("mesh"),
+                                QStringLiteral("The mesh or scene a vertex bake (--bake NAME.lgbake) was baked from."),
+                                QStringLiteral("MESH"));
+  args.addOption(bake);
+  args.addOption(mesh);
   args.addOption(screenshot);
   args.process(app);
-  if (args.positionalArguments().size() != 1) args.showHelp(1);
+  if (args.positionalArguments().size() != (args.isSet(bake) ? 0 : 1)) args.showHelp(1);
+  const QString file = args.isSet(bake) ? args.value(bake) : args.positionalArguments().front();
 
   lg::InspectorWidget inspector;
-  inspector.setWindowTitle(QStringLiteral("Lumagraph Inspector — %1").arg(args.positionalArguments().front()));
-  inspector.resize(1400, 620);
+  inspector.setWindowTitle(QStringLiteral("Lumagraph Inspector — %1").arg(file));
+  inspector.resize(args.isSet(bake) ? 1100 : 1400, args.isSet(bake) ? 820 : 620);
   inspector.show();
-  const bool opened = inspector.open_environment(args.positionalArguments().front());
-  std::cout << inspector.summary().toStdString() << "\n";
+  const bool opened = args.isSet(mesh)   ? inspector.open_vertex_bake(file, args.value(mesh))
+                      : args.isSet(bake) ? inspector.open_bake(file)
+                                         : inspector.open_environment(file);
+  (opened ? std::cout : std::cerr) << inspector.summary().toStdString() << "\n";
   if (!args.isSet(screenshot)) return app.exec();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
   if (!inspector.grab().save(args.value(screenshot))) {

@@ -18,13 +18,19 @@
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "editor/bake_view.h"
 #include "editor/env_probe.h"
+#include "editor/vertex_bake_view.h"
+#include "nodes/occlusion/bake/bake_file.h"
 
 namespace lg {
 
@@ -112,17 +118,37 @@ struct InspectorWidget::Vtk {
 };
 
 InspectorWidget::InspectorWidget(QWidget* parent)
-    : QWidget(parent), vtk_(std::make_unique<Vtk>()), summary_(new QLabel(this)) {
+    : QWidget(parent),
+      vtk_(std::make_unique<Vtk>()),
+      slice_bar_(new QWidget(this)),
+      slice_caption_(new QLabel(this)),
+      summary_(new QLabel(this)) {
   vtk_->widget = new QVTKOpenGLNativeWidget(this);
   vtk_->widget->setRenderWindow(vtk_->window);
   vtk_->window->AddRenderer(vtk_->renderer);
   vtk_->renderer->SetBackground(0.11, 0.12, 0.14);
   summary_->setWordWrap(true);
+  summary_->setContentsMargins(6, 0, 6, 2);
+  slice_caption_->setContentsMargins(6, 0, 6, 0);
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(vtk_->widget, 1);
+  layout->addWidget(slice_bar_);
+  layout->addWidget(slice_caption_);
   layout->addWidget(summary_);
+  // One slider per axis moves that axis's slice of a volume (hidden until one is shown).
+  auto* sliders = new QHBoxLayout(slice_bar_);
+  sliders->setContentsMargins(6, 2, 6, 0);
+  for (int axis = 0; axis < 3; ++axis) {
+    sliders->addWidget(new QLabel(tr("%1 slice").arg(QChar("xyz"[axis])), slice_bar_));
+    slice_sliders_[axis] = new QSlider(Qt::Horizontal, slice_bar_);
+    sliders->addWidget(slice_sliders_[axis], 1);
+    connect(slice_sliders_[axis], &QSlider::valueChanged, this,
+            [this, axis](int index) { set_volume_slice(axis, index); });
+  }
+  slice_bar_->hide();
+  slice_caption_->hide();
   show_message(tr("Open an environment (.hdr, .exr) to inspect it, or select an env.load node."));
 }
 
@@ -137,11 +163,35 @@ void InspectorWidget::resizeEvent(QResizeEvent* event) {
   vtk_->lay_out(double(std::max(1, vtk_->widget->width())) / std::max(1, vtk_->widget->height()));
 }
 
-void InspectorWidget::show_message(const QString& text) {
+void InspectorWidget::clear_view() {
   vtk_->renderer->RemoveAllViewProps();
   vtk_->spheres.clear();
+  volume_.reset();
+  vertex_bake_range_.reset();
+  slice_bar_->hide();
+  slice_caption_->hide();
+}
+
+void InspectorWidget::show_message(const QString& text) {
+  clear_view();
   summary_->setText(text);
   vtk_->window->Render();
+}
+
+void InspectorWidget::show_error(const QString& text) {
+  show_message(text);
+  // Also in the view itself, where the eye is, not only in the line below it.
+  vtkNew<vtkTextActor> error;
+  error->SetInput(text.toUtf8().constData());
+  error->GetTextProperty()->SetFontSize(18);
+  error->GetTextProperty()->SetColor(1.0, 0.45, 0.4);
+  error->GetTextProperty()->SetJustificationToCentered();
+  error->GetTextProperty()->SetVerticalJustificationToCentered();
+  error->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  error->GetPositionCoordinate()->SetValue(0.5, 0.5);
+  vtk_->renderer->AddActor2D(error);
+  vtk_->window->Render();
+  vtk_->widget->update();
 }
 
 bool InspectorWidget::open_environment(const QString& path) {
@@ -149,14 +199,13 @@ bool InspectorWidget::open_environment(const QString& path) {
     show_environment(load_env_probe(path.toStdString()));
     return true;
   } catch (const ImageFileError& e) {
-    show_message(QString::fromStdString(e.what()));
+    show_error(QString::fromStdString(e.what()));
     return false;
   }
 }
 
 void InspectorWidget::show_environment(const EnvProbe& probe) {
-  vtk_->renderer->RemoveAllViewProps();
-  vtk_->spheres.clear();
+  clear_view();
   const double exposure = probe.mean_luminance > 0 ? 0.6 / probe.mean_luminance : 1;
   vtkSmartPointer<vtkPolyData> env = unit_sphere(), sh = unit_sphere(), error = unit_sphere();
   vtkNew<vtkUnsignedCharArray> env_rgb, sh_rgb;
@@ -214,6 +263,87 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
                         .arg(probe.rms_error, 0, 'g', 4)
                         .arg(100 * probe.relative_rms_error, 0, 'f', 1)
                         .arg(100 * probe.negative_fraction, 0, 'f', 1));
+}
+
+bool InspectorWidget::open_bake(const QString& path) {
+  try {
+    show_volume(load_bake_volume(path.toStdString()));
+    return true;
+  } catch (const BakeFileError& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void InspectorWidget::show_volume(const BakeVolume& volume) {
+  clear_view();
+  volume_ = std::make_unique<VolumeSlices>(vtk_->renderer, volume);
+  const VolumeSliceState state = volume_->state();
+  for (int axis = 0; axis < 3; ++axis) {
+    const QSignalBlocker quiet(slice_sliders_[axis]);
+    slice_sliders_[axis]->setRange(0, state.dims[axis] - 1);
+    slice_sliders_[axis]->setValue(state.slice[axis]);
+  }
+  slice_bar_->show();
+  slice_caption_->setText(QString::fromStdString(volume_->slice_caption()));
+  slice_caption_->show();
+  summary_->setText(tr("%1 — volume bake, %2 x %3 x %4 points · k_A %5 to %6 over valid points · %7 points inside "
+                       "geometry (grey)")
+                        .arg(QString::fromStdString(volume.path))
+                        .arg(state.dims[0])
+                        .arg(state.dims[1])
+                        .arg(state.dims[2])
+                        .arg(volume.visibility_range[0], 0, 'g', 4)
+                        .arg(volume.visibility_range[1], 0, 'g', 4)
+                        .arg(volume.invalid_points));
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+std::optional<VolumeSliceState> InspectorWidget::volume_state() const {
+  if (!volume_) return std::nullopt;
+  return volume_->state();
+}
+
+void InspectorWidget::set_volume_slice(int axis, int index) {
+  if (!volume_) return;
+  volume_->set_slice(axis, index);
+  {
+    const QSignalBlocker quiet(slice_sliders_[axis]);
+    slice_sliders_[axis]->setValue(volume_->state().slice[axis]);
+  }
+  slice_caption_->setText(QString::fromStdString(volume_->slice_caption()));
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+bool InspectorWidget::open_vertex_bake(const QString& path, const QString& mesh_path) {
+  try {
+    show_vertex_bake(load_vertex_bake(path.toStdString(), mesh_path.toStdString()));
+    return true;
+  } catch (const BakeFileError& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+void InspectorWidget::show_vertex_bake(const VertexBake& bake) {
+  clear_view();
+  add_vertex_bake(vtk_->renderer, bake);
+  vertex_bake_range_ = bake.visibility_range;
+  summary_->setText(tr("%1 on %2 — vertex bake, %3 vertices · k_A %4 to %5 · %6 vertices with nothing baked (grey)")
+                        .arg(QString::fromStdString(bake.path))
+                        .arg(QString::fromStdString(bake.mesh_path))
+                        .arg(bake.mesh->GetNumberOfPoints())
+                        .arg(bake.visibility_range[0], 0, 'g', 4)
+                        .arg(bake.visibility_range[1], 0, 'g', 4)
+                        .arg(bake.invalid_points));
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+std::optional<std::array<double, 2>> InspectorWidget::vertex_bake_range() const {
+  return vertex_bake_range_;
 }
 
 }  // namespace lg

@@ -1,0 +1,123 @@
+#include "editor/bake_legend.h"
+
+#include <vtkColorTransferFunction.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+
+#include "nodes/occlusion/bake/bake_file.h"
+
+namespace lg {
+
+BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint) {
+  if (!std::filesystem::exists(path)) throw BakeFileError(path + ": no such file");
+  BakeFile file = read_bake_file(path);
+  const BakeHeader& h = file.header;
+  if (h.mode != mode)
+    throw BakeFileError(path + ": a " + bake_mode_name(h.mode) + " bake, expected a " + bake_mode_name(mode) +
+                        " bake; " + hint);
+  if (h.chunk_count != 1)
+    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
+                        " of a bake; merge the chunks first (lumagraph bake merge)");
+  return file;
+}
+
+vtkSmartPointer<vtkFloatArray> vtk_array(const char* name, int components, const std::vector<float>& values) {
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(vtkIdType(values.size() / components));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
+}
+
+MaskedVisibility mask_visibility(vtkDataArray* visibility, vtkDataArray* valid) {
+  MaskedVisibility masked;
+  masked.shown = vtkSmartPointer<vtkFloatArray>::New();
+  masked.shown->SetName(shown_visibility_name);
+  const vtkIdType n = visibility->GetNumberOfTuples();
+  masked.shown->SetNumberOfTuples(n);
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (vtkIdType i = 0; i < n; ++i) {
+    const double v = visibility->GetTuple1(i);
+    if (valid->GetTuple1(i) > 0) {
+      masked.shown->SetValue(i, float(v));
+      low = std::min(low, v), high = std::max(high, v);
+    } else {
+      masked.shown->SetValue(i, std::numeric_limits<float>::quiet_NaN());
+      ++masked.invalid_points;
+    }
+  }
+  if (masked.invalid_points == n) low = high = 0;
+  masked.range = {low, high};
+  return masked;
+}
+
+// Viridis at five stops: perceptually even, readable in grey, and distinct from the grey mask.
+vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range) {
+  vtkNew<vtkColorTransferFunction> ramp;
+  const double stops[5][3] = {{0.267, 0.005, 0.329},
+                              {0.229, 0.322, 0.546},
+                              {0.128, 0.567, 0.551},
+                              {0.369, 0.789, 0.383},
+                              {0.993, 0.906, 0.144}};
+  for (int i = 0; i < 5; ++i) ramp->AddRGBPoint(i / 4.0, stops[i][0], stops[i][1], stops[i][2]);
+  auto lut = vtkSmartPointer<vtkLookupTable>::New();
+  lut->SetNumberOfTableValues(256);
+  for (int i = 0; i < 256; ++i) {
+    double rgb[3];
+    ramp->GetColor(i / 255.0, rgb);
+    lut->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1);
+  }
+  // A constant bake (an empty scene) still needs a range the colour map can span.
+  lut->SetRange(range[0], std::max(range[1], range[0] + 1e-6));
+  lut->SetNanColor(0.55, 0.55, 0.55, 1);
+  return lut;
+}
+
+void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* masked) {
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(lut);
+  bar->SetTitle("k_A");
+  bar->SetNumberOfLabels(5);
+  bar->SetLabelFormat("%.2f");
+  // The grey swatch below the ramp is the legend of the masked points.
+  bar->DrawNanAnnotationOn();
+  bar->SetNanAnnotation(masked);
+  bar->SetWidth(0.1);
+  bar->SetHeight(0.62);
+  bar->SetPosition(0.87, 0.16);
+  bar->UnconstrainedFontSizeOn();
+  for (vtkTextProperty* text :
+       {bar->GetTitleTextProperty(), bar->GetLabelTextProperty(), bar->GetAnnotationTextProperty()}) {
+    text->SetItalic(false);
+    text->SetBold(false);
+    text->SetShadow(false);
+    text->SetColor(0.92, 0.92, 0.92);
+    text->SetFontSize(15);
+  }
+  bar->GetTitleTextProperty()->SetFontSize(18);
+  renderer->AddActor2D(bar);
+}
+
+void add_title(vtkRenderer* renderer, const std::string& text) {
+  vtkNew<vtkTextActor> title;
+  title->SetInput(text.c_str());
+  title->GetTextProperty()->SetFontSize(16);
+  title->GetTextProperty()->SetColor(0.92, 0.92, 0.92);
+  title->GetTextProperty()->SetVerticalJustificationToTop();
+  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  title->GetPositionCoordinate()->SetValue(0.015, 0.98);
+  renderer->AddActor2D(title);
+}
+
+}  // namespace lg

@@ -1,0 +1,44 @@
+// What the inspector's bake views share: reading a whole bake of one mode, its arrays as VTK arrays, visibility with
+// the invalid points masked (NaN, drawn grey), the colour map and its bar, and the title in the view's top-left corner.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkFloatArray;
+class vtkLookupTable;
+class vtkRenderer;
+
+namespace lg {
+
+struct BakeFile;
+enum class BakeMode;
+
+// The .lgbake at `path` through the bake library; throws BakeFileError naming it when it is
+// missing, damaged, a chunk of a bake, or a bake of another mode than `mode` (`hint` then says
+// how to open it).
+BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint);
+
+inline constexpr const char* shown_visibility_name = "shown_visibility";
+
+// `values` as a float array of `components` per point.
+vtkSmartPointer<vtkFloatArray> vtk_array(const char* name, int components, const std::vector<float>& values);
+
+struct MaskedVisibility {
+  vtkSmartPointer<vtkFloatArray> shown;  // visibility, NaN where valid is 0
+  std::array<double, 2> range{0, 0};     // over the valid points
+  long long invalid_points = 0;
+};
+MaskedVisibility mask_visibility(vtkDataArray* visibility, vtkDataArray* valid);
+
+// Viridis over `range`, NaN grey.
+vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range);
+// The colour bar of k_A at the right, with a grey "`masked`" swatch below it.
+void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* masked);
+void add_title(vtkRenderer* renderer, const std::string& text);
+
+}  // namespace lg

@@ -1,0 +1,105 @@
+#include "editor/vertex_bake_view.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "editor/bake_legend.h"
+#include "nodes/occlusion/bake/bake_file.h"
+#include "runtime/scene/load_world.h"
+#include "runtime/scene/make_scene_view.h"
+
+namespace lg {
+
+VertexBake load_vertex_bake(const std::string& path, const std::string& mesh_path) {
+  const BakeFile file = read_whole_bake(path, BakeMode::vertex, "a volume bake opens without --mesh");
+  const BakeHeader& h = file.header;
+  WorldMesh mesh;
+  try {
+    mesh = make_world_mesh(make_scene_view(load_world(mesh_path), 1.0f));
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    throw BakeFileError(what.find(mesh_path) == std::string::npos ? mesh_path + ": " + what : what);
+  }
+  if (world_mesh_hash(mesh) != h.input_hash || mesh.positions.size() != h.points)
+    throw BakeFileError(mesh_path + ": not the geometry " + path + " was baked from (" +
+                        std::to_string(mesh.positions.size()) + " vertices, the bake has " + std::to_string(h.points) +
+                        "; or their positions, normals or indices differ)");
+
+  VertexBake bake;
+  bake.path = path;
+  bake.mesh_path = mesh_path;
+  bake.rays = unsigned(h.occlusion.rays);
+  bake.mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    points->SetPoint(vtkIdType(i), mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
+  vtkNew<vtkCellArray> triangles;
+  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const vtkIdType corners[3] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+    triangles->InsertNextCell(3, corners);
+  }
+  bake.mesh->SetPoints(points);
+  bake.mesh->SetPolys(triangles);
+  const auto visibility = vtk_array("visibility", 1, file.data.visibility);
+  const auto valid = vtk_array("valid", 1, file.data.valid);
+  const MaskedVisibility masked = mask_visibility(visibility, valid);
+  bake.visibility_range = masked.range;
+  bake.invalid_points = masked.invalid_points;
+  bake.mesh->GetPointData()->AddArray(masked.shown);
+  bake.mesh->GetPointData()->SetActiveScalars(shown_visibility_name);
+  bake.mesh->GetPointData()->AddArray(vtk_array("bent_normal", 3, file.data.bent_normal));
+  return bake;
+}
+
+void add_vertex_bake(vtkRenderer* renderer, const VertexBake& bake) {
+  const vtkSmartPointer<vtkLookupTable> lut = visibility_colours(bake.visibility_range);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(bake.mesh);
+  mapper->SetLookupTable(lut);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->SetColorModeToMapScalars();
+  mapper->InterpolateScalarsBeforeMappingOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  // Unlit, so a colour on the mesh reads on the bar; the occlusion itself shows the shape.
+  actor->GetProperty()->SetLighting(false);
+  renderer->AddActor(actor);
+  add_visibility_bar(renderer, lut, "no normal");
+
+  double bounds[6];
+  bake.mesh->GetBounds(bounds);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOff();
+  const double centre[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2};
+  // From the front (+Z), a little to the side and above, Y up.
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + 0.5, centre[1] + 0.4, centre[2] + 1.6);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetWindowCenter(-0.1, 0);
+  renderer->ResetCamera(bounds);
+
+  std::ostringstream title;
+  title.precision(3);
+  title << "Ambient visibility k_A of " << std::filesystem::path(bake.path).filename().string() << " on "
+        << std::filesystem::path(bake.mesh_path).filename().string() << "\n"
+        << bake.mesh->GetNumberOfPoints() << " vertices, " << bake.rays << " rays each, k_A from "
+        << bake.visibility_range[0] << " to " << bake.visibility_range[1] << "\n"
+        << "grey: nothing baked (degenerate normal, " << bake.invalid_points << " vertices)";
+  add_title(renderer, title.str());
+}
+
+}  // namespace lg
