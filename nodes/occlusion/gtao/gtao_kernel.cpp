@@ -101,8 +101,9 @@ class GtaoKernel final : public NodeKernel {
       const uint32_t mip = std::min(level, mips.desc().mips - 1);
       writes.push_back(storage_image(2 + level, mips.view({.base_mip = mip, .mip_count = 1})));
     }
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/prefilter.comp", writes, mips.desc().width, mips.desc().height,
-                     {}, 16);
+    // One invocation a 2x2 quad, 8x8 invocations a 16x16 tile.
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/prefilter.comp", writes, (mips.desc().width + 1) / 2,
+                     (mips.desc().height + 1) / 2, {}, 8);
   }
 
   void horizons(PassContext& ctx) {
@@ -114,8 +115,8 @@ class GtaoKernel final : public NodeKernel {
                                       storage_image(3, noisy.view()),
                                       storage_image(4, ctx.image("tmp.edges").view()),
                                       storage_image(5, ctx.image("out.bent_normals").view())};
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width,
-                     noisy.desc().height);
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height,
+                     {}, 16);
   }
 
   void denoise(PassContext& ctx) {
@@ -129,7 +130,8 @@ class GtaoKernel final : public NodeKernel {
                                       sampled_image(3, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
                                       sampled_image(4, history.view(), ctx.linear_sampler()),
                                       storage_image(5, ao.view())};
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/denoise.comp", writes, ao.desc().width, ao.desc().height);
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/denoise.comp", writes, (ao.desc().width + 1) / 2,
+                     (ao.desc().height + 1) / 2, {}, 8);  // 2x2 pixels an invocation
   }
 
   Quality quality_;

@@ -6,6 +6,9 @@
 // (history rejection: a disoccluded or changed pixel cannot keep stale values) and blended.
 #include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
 
+// One invocation a 2x2 quad of pixels, 8x8 invocations a 16x16 tile: the quad's four 3x3
+// neighbourhoods share one 4x4 block of fetches (16 rather than 36), and lavapipe pays for every
+// invocation.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 1) uniform sampler2D noisy;
@@ -19,10 +22,9 @@ vec4 unpack_edges(float packed) {
   return vec4((bits >> 6) & 3u, (bits >> 4) & 3u, (bits >> 2) & 3u, bits & 3u) / 3.0;
 }
 
-void main() {
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = imageSize(ao);
-  if (any(greaterThanEqual(texel, size))) return;
+// Pixel `texel` of the quad whose 4x4 block of raw occlusion (the quad and its one-pixel ring)
+// is `block`; `corner` is the pixel's place in the quad (0 or 1 each way).
+void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4]) {
   vec4 e = unpack_edges(texelFetch(edges, texel, 0).r);  // left, right, top, bottom
   float sum = 0.0, weight = 0.0, lo = 1.0, hi = 0.0;
   for (int y = -1; y <= 1; ++y)
@@ -30,7 +32,7 @@ void main() {
       float wx = x < 0 ? e.x : x > 0 ? e.y : 1.0;
       float wy = y < 0 ? e.z : y > 0 ? e.w : 1.0;
       float w = wx * wy * (x == 0 && y == 0 ? 1.5 : 1.0);
-      float v = texelFetch(noisy, clamp(texel + ivec2(x, y), ivec2(0), size - 1), 0).r;
+      float v = block[corner.y + y + 1][corner.x + x + 1];
       sum += w * v;
       weight += w;
       if (w > 0.0) {
@@ -49,4 +51,17 @@ void main() {
     }
   }
   imageStore(ao, texel, vec4(result));
+}
+
+void main() {
+  ivec2 size = ivec2(viewport.xy);  // the G-buffer's extent, which `ao` has
+  ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * 2;
+  if (any(greaterThanEqual(origin, size))) return;
+  float block[4][4];
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x)
+      block[y][x] = texelFetch(noisy, clamp(origin + ivec2(x - 1, y - 1), ivec2(0), size - 1), 0).r;
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x)
+      if (all(lessThan(origin + ivec2(x, y), size))) denoise_pixel(origin + ivec2(x, y), ivec2(x, y), block);
 }

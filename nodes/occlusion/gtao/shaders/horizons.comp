@@ -8,7 +8,7 @@
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
 layout(binding = 2) uniform sampler2D gbuffer_normal;
@@ -73,7 +73,7 @@ vec3 sample_position(vec2 uv, int mip) {
 // Four depth-edge weights (left, right, top, bottom) in 2 bits each: 1 where the neighbour's
 // depth continues this pixel's plane, 0 across a discontinuity (for the denoiser).
 float pack_edges(ivec2 texel, float z) {
-  ivec2 size = textureSize(depth_mips, 0);
+  ivec2 size = ivec2(viewport.xy);
   float l = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(-1, 0), ivec2(0), size - 1), 0).r);
   float r = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(1, 0), ivec2(0), size - 1), 0).r);
   float t = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(0, -1), ivec2(0), size - 1), 0).r);
@@ -88,7 +88,7 @@ float pack_edges(ivec2 texel, float z) {
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = imageSize(noisy);
+  ivec2 size = ivec2(viewport.xy);
   if (any(greaterThanEqual(texel, size))) return;
   vec2 uv = (vec2(texel) + 0.5) * viewport.zw;
   float z = linear_depth(texelFetch(depth_mips, texel, 0).r);
@@ -151,9 +151,9 @@ void main() {
         vec2 suv = side == 0 ? uv + offset : uv - offset;
         if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) continue;
         vec3 delta = sample_position(suv, mip) - p;
-        float dist = length(delta);
-        if (!(dist > 1e-6)) continue;
-        float shc = dot(delta / dist, view_vec);
+        float dist_squared = dot(delta, delta);
+        if (!(dist_squared > 1e-12)) continue;
+        float shc = dot(delta, view_vec) * inversesqrt(dist_squared);
         // Thin occluders: depth differences count more in the falloff (search.z >= 1).
         float falloff_dist = length(vec3(delta.xy, delta.z * search.z));
         float weight = clamp(falloff_dist * falloff_mul + falloff_add, 0.0, 1.0);
