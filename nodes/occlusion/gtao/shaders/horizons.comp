@@ -8,7 +8,7 @@
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
 layout(binding = 2) uniform sampler2D gbuffer_normal;
