@@ -115,7 +115,8 @@ class GtaoKernel final : public NodeKernel {
                                       storage_image(3, noisy.view()),
                                       storage_image(4, ctx.image("tmp.edges").view()),
                                       storage_image(5, ctx.image("out.bent_normals").view())};
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height);
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width,
+                     noisy.desc().height);
   }
 
   void denoise(PassContext& ctx) {

@@ -157,8 +157,10 @@ void main() {
         // Thin occluders: depth differences count more in the falloff (search.z >= 1).
         float falloff_dist = length(vec3(delta.xy, delta.z * search.z));
         float weight = clamp(falloff_dist * falloff_mul + falloff_add, 0.0, 1.0);
-        if (side == 0) horizon0 = max(horizon0, mix(low0, shc, weight));
-        else horizon1 = max(horizon1, mix(low1, shc, weight));
+        if (side == 0)
+          horizon0 = max(horizon0, mix(low0, shc, weight));
+        else
+          horizon1 = max(horizon1, mix(low1, shc, weight));
       }
     }
     // Horizon angles measured from the view vector, clamped to the hemisphere of the normal,
