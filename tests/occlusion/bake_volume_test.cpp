@@ -1,6 +1,7 @@
 // occlusion.bake's per-frame volume path on lavapipe: the GPU lookup against the same formulas
 // in double (volume_lookup.h) on the same grid, an open plane, a crease against the open floor,
-// and the bunny against the camera-view ray-traced reference (printed).
+// a re-bake when the geometry changes, and the bunny against the camera-view ray-traced
+// reference (printed).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "api/renderer.h"
 #include "nodes/occlusion/bake/volume_lookup.h"
 #include "nodes/occlusion/raytrace/world_mesh.h"
 #include "nodes/occlusion/reference/camera_pixels.h"
@@ -153,6 +155,41 @@ TEST(BakeVolume, CreaseIsDarkerThanTheOpenFloor) {
   ASSERT_GT(crease_n, 10u);
   ASSERT_GT(open_n, 10u);
   EXPECT_LT(crease, open - 0.1);
+}
+
+// Adding the wall (a new mesh) to a world already rendered changes its assets
+// (SceneView::version), so the kernel bakes again: the floor in front of the wall goes from
+// open (1, as in the open-plane test) to clearly darker (the crease test measures 0.61 there).
+TEST(BakeVolume, ChangedGeometryIsBakedAgain) {
+  RendererOptions options;
+  options.device.validation = true;
+  options.alias = false;  // the G-buffer is read back after the frame
+  Renderer renderer(options);
+  renderer.set_graph(occlusion_graph(bake_node(0.0)));
+  World world = floor_world(false);
+  auto crease_ao = [&] {
+    renderer.render(world, {96, 64});
+    AoRender r;
+    r.last_ao = renderer.executor().read_image("ao.ao");
+    r.gbuffer = {96, 64, {}, renderer.executor().read_image("gbuf.gbuffer.normal")};
+    const std::vector<float> depth = renderer.executor().read_image("gbuf.gbuffer.depth");
+    for (size_t i = 0; i < depth.size(); i += 4) r.gbuffer.depth.push_back(depth[i]);
+    r.view = renderer.scene_view();
+    size_t n = 0;
+    const double ao = mean_floor_ao(
+        r, [](glm::dvec3 p) { return std::abs(p.x) < 2.0 && p.z > -2.9 && p.z < -2.4; }, &n);
+    EXPECT_GT(n, 10u);
+    return ao;
+  };
+  const double before = crease_ao();
+  const Entity wall = world.create("wall");
+  world.add(wall, MeshRenderer{world.add_mesh(make_box({6.0f, 2.0f, 0.2f})), 0});
+  world.add(wall, Transform{}).position = {0.0f, 1.0f, -3.0f};
+  const double after = crease_ao();
+  std::printf("floor before the wall %.3f, after %.3f\n", before, after);
+  EXPECT_GT(before, 0.95);
+  EXPECT_LT(after, before - 0.2);
+  EXPECT_TRUE(renderer.context().take_validation_messages().empty());
 }
 
 // The bunny at 160x90 against the camera-view ray-traced reference (128 rays, 0.5 m, a hit

@@ -1,3 +1,5 @@
+// occlusion.bake's kernel: the visibility grid baked on the CPU per asset version, uploaded
+// as a storage buffer, and looked up per pixel by one compute pass.
 #include "nodes/occlusion/bake/bake_kernel.h"
 
 #include <limits>
@@ -69,7 +71,7 @@ class BakeKernel final : public NodeKernel {
   }
 
  private:
-  // The CPU bake, once per geometry version: a scene without triangles gets an empty grid
+  // The CPU bake, once per asset version: a scene without triangles gets an empty grid
   // (every pixel open) rather than an error, as an empty frame does in the other nodes.
   void bake(PassContext& ctx, const SceneView& scene) {
     const WorldMesh mesh = make_world_mesh(scene);

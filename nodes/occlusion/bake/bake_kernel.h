@@ -1,5 +1,5 @@
 // The kernel of occlusion.bake: bakes the scene's visibility grid on the CPU when the scene's
-// geometry changes (SceneView::version) and looks it up per pixel (shaders/volume_lookup.comp).
+// assets change (SceneView::version) and looks it up per pixel (shaders/volume_lookup.comp).
 #pragma once
 
 #include <memory>
