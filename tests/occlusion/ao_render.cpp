@@ -41,7 +41,7 @@ AoRender render_occlusion(const World& world, uint32_t width, uint32_t height, c
     if (f == 0) out.first_ao = renderer.executor().read_image("ao.ao");
   }
   out.last_ao = renderer.executor().read_image("ao.ao");
-  if (node.find("occlusion.gtao") != std::string::npos)
+  if (node.find("occlusion.gtao") != std::string::npos || node.find("occlusion.bake") != std::string::npos)
     out.bent_normals = renderer.executor().read_image("ao.bent_normals");
   out.gbuffer.width = width;
   out.gbuffer.height = height;

@@ -1,5 +1,5 @@
-// Renders a G-buffer and one occlusion node (occlusion.gtao, its history linked back, or
-// occlusion.ssao) through the library API on lavapipe, and reads back what the references and
+// Renders a G-buffer and one occlusion node (occlusion.gtao, its history linked back,
+// occlusion.ssao or occlusion.bake) through the library API on lavapipe, and reads back what the references and
 // the error statistics need: the occlusion after the first and the last frame, the G-buffer's
 // depth and normals, the frame's SceneView, and the occlusion node's GPU time per frame (its
 // passes' timestamps). Shared by tests/occlusion and lumagraph-bench-ao.
@@ -18,7 +18,7 @@ namespace lg::test {
 struct AoRender {
   std::vector<float> first_ao;      // float RGBA after frame 1 (no history yet)
   std::vector<float> last_ao;       // after the last frame (temporal accumulation, for GTAO)
-  std::vector<float> bent_normals;  // GTAO's, after the last frame (empty for SSAO)
+  std::vector<float> bent_normals;  // GTAO's or the bake's, after the last frame (empty for SSAO)
   GbufferReadback gbuffer;
   SceneView view;                    // the last frame's
   std::vector<double> ao_gpu_ms;     // per frame, the occlusion node's passes summed

@@ -178,7 +178,9 @@ TEST(OcclusionEstimate, AnySplitOfABatchIsBitIdentical) {
 
 TEST(OcclusionEstimate, SphereVisibilityInTheOpenOverAFloorAndInsideABox) {
   const RayScene empty(std::vector<glm::vec3>{}, std::vector<uint32_t>{});
-  EXPECT_EQ(estimate_sphere_visibility(empty, {1, 2, 3}, {.rays = 64}, 1).visibility, 1.0f);
+  const SphereVisibility open = estimate_sphere_visibility(empty, {1, 2, 3}, {.rays = 64}, 1);
+  EXPECT_EQ(open.visibility, 1.0f);
+  EXPECT_TRUE(std::isinf(open.nearest_hit));
   // Above an (effectively infinite) floor the lower half of the sphere is blocked: 1/2 up to
   // noise (binomial bound, 4 standard errors), and the bent normal points up.
   const RayScene floor(test::scene_of({test::floor_quad(1e5f)}));
@@ -186,6 +188,15 @@ TEST(OcclusionEstimate, SphereVisibilityInTheOpenOverAFloorAndInsideABox) {
   EXPECT_NEAR(above.visibility, 0.5, visibility_tolerance(0.5, 4096, 1));
   EXPECT_GT(above.bent_normal.y, 0.99f);
   EXPECT_EQ(above.backface_fraction, 0.0f);
+  // The unnormalised mean unoccluded direction: the mean of z over the upper half, 1/2, times
+  // its share, 1/2. A ray's V z has a standard deviation of 0.32, so 4096 rays give 0.005; 0.02
+  // is 4 of those. The nearest hit is the floor below, 0.5 away, within the few degrees the
+  // rays nearest straight down miss it by.
+  EXPECT_NEAR(above.mean_direction.y, 0.25, 0.02);
+  EXPECT_NEAR(above.mean_direction.x, 0.0, 0.02);
+  EXPECT_NEAR(above.mean_direction.z, 0.0, 0.02);
+  EXPECT_GE(above.nearest_hit, 0.5f * (1.0f - 1e-5f));
+  EXPECT_LE(above.nearest_hit, 0.51f);
   const RayScene box(test::scene_of({{make_box(glm::vec3(1.0f)), glm::mat4(1.0f)}}));
   const SphereVisibility inside = estimate_sphere_visibility(box, {0.1f, -0.2f, 0.3f}, {.rays = 256}, 3);
   EXPECT_EQ(inside.visibility, 0.0f);

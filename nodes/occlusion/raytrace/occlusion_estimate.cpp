@@ -95,6 +95,7 @@ SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 poi
   double visible = 0.0;
   glm::dvec3 bent{0.0};
   uint32_t backfaces = 0;
+  float nearest = std::numeric_limits<float>::infinity();
   auto direction = [&](uint32_t i) {
     const glm::dvec2 u = stratified_point(i, count, seed);
     const double z = 1.0 - 2.0 * u.y, r = std::sqrt(std::max(0.0, 1.0 - z * z));
@@ -104,6 +105,7 @@ SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 poi
   trace_rays(scene, point, count, settings.max_distance, true, direction,
              [&](glm::dvec3 d, glm::vec3 ray, const std::optional<RayHit>& hit) {
                if (hit && glm::dot(hit->normal, ray) > 0.0f) ++backfaces;
+               if (hit) nearest = std::min(nearest, hit->distance);
                const double weight = hit ? hit_weight(settings, hit->distance) : 1.0;
                visible += weight;
                bent += weight * d;
@@ -112,6 +114,8 @@ SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 poi
   result.visibility = float(std::clamp(visible / count, 0.0, 1.0));
   const double bent_length = glm::length(bent);
   if (bent_length > 0.0) result.bent_normal = glm::vec3(bent / bent_length);
+  result.mean_direction = glm::vec3(bent / double(count));
+  result.nearest_hit = nearest;
   result.backface_fraction = float(double(backfaces) / count);
   return result;
 }

@@ -61,7 +61,11 @@ OcclusionResult estimate_occlusion(const RayScene& scene, glm::vec3 point, glm::
 struct SphereVisibility {
   float visibility = 1.0f;                  // the weighted fraction of directions unoccluded
   glm::vec3 bent_normal{0.0f, 0.0f, 1.0f};  // unit mean unoccluded direction; +Z if none
-  float backface_fraction = 0.0f;           // rays whose first hit is a back face (inside a closed mesh: 1)
+  // (1/N) sum rho_i w_i, not normalised: with `visibility` the L1 spherical-harmonic projection
+  // of visibility, V(w) ~ visibility + 3 mean_direction . w.
+  glm::vec3 mean_direction{0.0f};
+  float nearest_hit = std::numeric_limits<float>::infinity();  // the closest hit's distance; infinite if none
+  float backface_fraction = 0.0f;  // rays whose first hit is a back face (inside a closed mesh: 1)
 };
 SphereVisibility estimate_sphere_visibility(const RayScene& scene, glm::vec3 point, const OcclusionSettings& settings,
                                             uint64_t seed);
