@@ -160,7 +160,7 @@ TEST(BakeVolume, CreaseIsDarkerThanTheOpenFloor) {
 // Adding the wall (a new mesh) to a world already rendered changes its assets
 // (SceneView::version), so the kernel bakes again: the floor in front of the wall goes from
 // open (1, as in the open-plane test) to clearly darker (the crease test measures 0.61 there).
-TEST(BakeVolume, ChangedGeometryIsBakedAgain) {
+TEST(BakeVolume, ChangedOrMovedGeometryIsBakedAgain) {
   RendererOptions options;
   options.device.validation = true;
   options.alias = false;  // the G-buffer is read back after the frame
@@ -186,9 +186,12 @@ TEST(BakeVolume, ChangedGeometryIsBakedAgain) {
   world.add(wall, MeshRenderer{world.add_mesh(make_box({6.0f, 2.0f, 0.2f})), 0});
   world.add(wall, Transform{}).position = {0.0f, 1.0f, -3.0f};
   const double after = crease_ao();
-  std::printf("floor before the wall %.3f, after %.3f\n", before, after);
+  world.get<Transform>(wall).position = {0.0f, 1.0f, -30.0f};  // moved away: no new asset, a new bake
+  const double moved = crease_ao();
+  std::printf("floor before the wall %.3f, after %.3f, with the wall moved away %.3f\n", before, after, moved);
   EXPECT_GT(before, 0.95);
   EXPECT_LT(after, before - 0.2);
+  EXPECT_GT(moved, after + 0.2);
   EXPECT_TRUE(renderer.context().take_validation_messages().empty());
 }
 

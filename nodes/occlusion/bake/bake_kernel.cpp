@@ -1,4 +1,4 @@
-// occlusion.bake's kernel: the visibility grid baked on the CPU per asset version, uploaded
+// occlusion.bake's kernel: the visibility grid baked on the CPU whenever the geometry changes, uploaded
 // as a storage buffer, and looked up per pixel by one compute pass.
 #include "nodes/occlusion/bake/bake_kernel.h"
 
@@ -36,6 +36,21 @@ OcclusionSettings occlusion_settings(const PlanNode& node) {
   return s;
 }
 
+// What the bake depends on in a frame's view: the asset version (mesh contents) and every draw's
+// mesh and transform, hashed (FNV-1a) so that moving an entity re-bakes as a new mesh does.
+uint64_t geometry_key(const SceneView& scene) {
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const void* data, size_t size) {
+    for (size_t i = 0; i < size; ++i) h = (h ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
+  };
+  mix(&scene.version, sizeof scene.version);
+  for (const DrawItem& d : scene.draws) {
+    mix(&d.mesh, sizeof d.mesh);
+    mix(&d.world, sizeof d.world);
+  }
+  return h;
+}
+
 class BakeKernel final : public NodeKernel {
  public:
   explicit BakeKernel(const PlanNode& node)
@@ -52,7 +67,7 @@ class BakeKernel final : public NodeKernel {
   void record(PassContext& ctx) override {
     if (ctx.pass().pass != "lookup") throw std::logic_error("occlusion.bake has no pass '" + ctx.pass().pass + "'");
     const SceneView& scene = ctx.scene();
-    if (!points_ || scene.version != baked_version_) bake(ctx, scene);
+    if (!points_ || geometry_key(scene) != baked_key_) bake(ctx, scene);
     Image& ao = ctx.image("out.ao");
     Constants c{};
     c.camera = camera_constants(scene.camera, ao.desc().width, ao.desc().height);
@@ -71,7 +86,7 @@ class BakeKernel final : public NodeKernel {
   }
 
  private:
-  // The CPU bake, once per asset version: a scene without triangles gets an empty grid
+  // The CPU bake, once per geometry (geometry_key): a scene without triangles gets an empty grid
   // (every pixel open) rather than an error, as an empty frame does in the other nodes.
   void bake(PassContext& ctx, const SceneView& scene) {
     const WorldMesh mesh = make_world_mesh(scene);
@@ -82,14 +97,14 @@ class BakeKernel final : public NodeKernel {
     }
     if (!points_) points_.emplace(ctx.gpu(), ctx.node().id + " grid", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     points_->write(grid_.points);
-    baked_version_ = scene.version;
+    baked_key_ = geometry_key(scene);
   }
 
   OcclusionSettings settings_;
   uint32_t resolution_;
   uint64_t seed_;
   VisibilityGrid grid_;
-  uint64_t baked_version_ = 0;
+  uint64_t baked_key_ = 0;
   std::optional<HostBuffer> constants_, points_;
 };
 

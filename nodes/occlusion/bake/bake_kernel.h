@@ -1,5 +1,6 @@
-// The kernel of occlusion.bake: bakes the scene's visibility grid on the CPU when the scene's
-// assets change (SceneView::version) and looks it up per pixel (shaders/volume_lookup.comp).
+// The kernel of occlusion.bake: bakes the scene's visibility grid on the CPU when the geometry
+// changes (meshes, or draws added, removed or moved) and looks it up per pixel
+// (shaders/volume_lookup.comp).
 #pragma once
 
 #include <memory>
