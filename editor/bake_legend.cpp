@@ -1,5 +1,6 @@
 #include "editor/bake_legend.h"
 
+#include <vtkCamera.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -118,6 +119,17 @@ void add_title(vtkRenderer* renderer, const std::string& text) {
   title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   title->GetPositionCoordinate()->SetValue(0.015, 0.98);
   renderer->AddActor2D(title);
+}
+
+void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset) {
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOff();
+  const double centre[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2};
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + offset[0], centre[1] + offset[1], centre[2] + offset[2]);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetWindowCenter(-0.1, 0);
+  renderer->ResetCamera(bounds);
 }
 
 }  // namespace lg

@@ -1,5 +1,6 @@
 // What the inspector's bake views share: reading a whole bake of one mode, its arrays as VTK arrays, visibility with
-// the invalid points masked (NaN, drawn grey), the colour map and its bar, and the title in the view's top-left corner.
+// the invalid points masked (NaN, drawn grey), the colour map and its bar, the title in the view's top-left corner,
+// and the camera's framing.
 #pragma once
 
 #include <vtkSmartPointer.h>
@@ -40,5 +41,9 @@ vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range);
 // The colour bar of k_A at the right, with a grey "`masked`" swatch below it.
 void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* masked);
 void add_title(vtkRenderer* renderer, const std::string& text);
+
+// Points the camera at the centre of `bounds` (xmin, xmax, ymin, ymax, zmin, zmax) from
+// `offset` away, Y up, shifted left of the colour bar, and fits the bounds in view.
+void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset);
 
 }  // namespace lg

@@ -208,20 +208,13 @@ VolumeSlices::VolumeSlices(vtkRenderer* renderer, const BakeVolume& volume) : pi
 
   double bounds[6];
   p.image->GetBounds(bounds);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOff();
-  const double centre[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2};
   // A three-quarter view from above and in front (+Z), Y up (the scenes' convention), so all
   // three slices face the viewer.
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + 1.1, centre[1] + 0.8, centre[2] + 1.6);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetWindowCenter(-0.1, 0);
-  renderer->ResetCamera(bounds);
+  frame_bounds(renderer, bounds, {1.1, 0.8, 1.6});
 
   vtkNew<vtkCubeAxesActor> axes;
   axes->SetBounds(bounds);
-  axes->SetCamera(camera);
+  axes->SetCamera(renderer->GetActiveCamera());
   axes->SetFlyModeToOuterEdges();
   axes->SetXTitle("x");
   axes->SetYTitle("y");

@@ -1,7 +1,6 @@
 #include "editor/vertex_bake_view.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
@@ -82,15 +81,7 @@ void add_vertex_bake(vtkRenderer* renderer, const VertexBake& bake) {
 
   double bounds[6];
   bake.mesh->GetBounds(bounds);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOff();
-  const double centre[3] = {(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2};
-  // From the front (+Z), a little to the side and above, Y up.
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + 0.5, centre[1] + 0.4, centre[2] + 1.6);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetWindowCenter(-0.1, 0);
-  renderer->ResetCamera(bounds);
+  frame_bounds(renderer, bounds, {0.5, 0.4, 1.6});  // from the front (+Z), a little to the side and above
 
   std::ostringstream title;
   title.precision(3);
