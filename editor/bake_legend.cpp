@@ -1,11 +1,14 @@
 #include "editor/bake_legend.h"
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
+#include <vtkMapper.h>
 #include <vtkNew.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
@@ -119,6 +122,17 @@ void add_title(vtkRenderer* renderer, const std::string& text) {
   title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   title->GetPositionCoordinate()->SetValue(0.015, 0.98);
   renderer->AddActor2D(title);
+}
+
+void add_visibility_actor(vtkRenderer* renderer, vtkMapper* mapper, vtkLookupTable* lut) {
+  mapper->SetLookupTable(lut);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->SetColorModeToMapScalars();
+  mapper->InterpolateScalarsBeforeMappingOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetLighting(false);
+  renderer->AddActor(actor);
 }
 
 void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset) {

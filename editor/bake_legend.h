@@ -12,6 +12,7 @@
 class vtkDataArray;
 class vtkFloatArray;
 class vtkLookupTable;
+class vtkMapper;
 class vtkRenderer;
 
 namespace lg {
@@ -38,6 +39,11 @@ MaskedVisibility mask_visibility(vtkDataArray* visibility, vtkDataArray* valid);
 
 // Viridis over `range`, NaN grey.
 vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range);
+// Adds an unlit actor for `mapper` coloured by `lut` over its range: unlit so that a colour on
+// screen reads on the bar; colours interpolate in the map's texture, so a masked point stays
+// grey, not blended.
+void add_visibility_actor(vtkRenderer* renderer, vtkMapper* mapper, vtkLookupTable* lut);
+
 // The colour bar of k_A at the right, with a grey "`masked`" swatch below it.
 void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* masked);
 void add_title(vtkRenderer* renderer, const std::string& text);

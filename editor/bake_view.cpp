@@ -167,15 +167,7 @@ VolumeSlices::VolumeSlices(vtkRenderer* renderer, const BakeVolume& volume) : pi
     p.place(axis);
     vtkNew<vtkDataSetMapper> mapper;
     mapper->SetInputConnection(p.slices[axis]->GetOutputPort());
-    mapper->SetLookupTable(p.lut);
-    mapper->UseLookupTableScalarRangeOn();
-    mapper->SetColorModeToMapScalars();
-    // Colours interpolate in the map's texture, so a masked point stays grey, not blended.
-    mapper->InterpolateScalarsBeforeMappingOn();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetLighting(false);
-    renderer->AddActor(actor);
+    add_visibility_actor(renderer, mapper, p.lut);
   }
 
   vtkNew<vtkArrowSource> arrow;

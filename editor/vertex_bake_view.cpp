@@ -1,6 +1,5 @@
 #include "editor/vertex_bake_view.h"
 
-#include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
@@ -9,7 +8,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
 #include <vtkRenderer.h>
 
 #include <filesystem>
@@ -68,15 +66,7 @@ void add_vertex_bake(vtkRenderer* renderer, const VertexBake& bake) {
   const vtkSmartPointer<vtkLookupTable> lut = visibility_colours(bake.visibility_range);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(bake.mesh);
-  mapper->SetLookupTable(lut);
-  mapper->UseLookupTableScalarRangeOn();
-  mapper->SetColorModeToMapScalars();
-  mapper->InterpolateScalarsBeforeMappingOn();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  // Unlit, so a colour on the mesh reads on the bar; the occlusion itself shows the shape.
-  actor->GetProperty()->SetLighting(false);
-  renderer->AddActor(actor);
+  add_visibility_actor(renderer, mapper, lut);
   add_visibility_bar(renderer, lut, "no normal");
 
   double bounds[6];
