@@ -7,9 +7,10 @@
 namespace lg {
 namespace {
 
+// Shortest round form: integral limits print whole (1048576, not 1.04858e+06).
 std::string format_number(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
+  std::snprintf(buf, sizeof buf, "%.15g", v);
   return buf;
 }
 
