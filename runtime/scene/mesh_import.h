@@ -19,7 +19,9 @@
 // top-left origin); one mesh per object and material. MTL to PBR: Kd is the base colour, d its
 // alpha, Ke the emissive, Pm (the PBR extension) the metalness, and Ns the roughness by
 // matching Blinn-Phong to GGX: alpha = sqrt(2 / (Ns + 2)), roughness = sqrt(alpha). Texture maps
-// are not loaded.
+// are not loaded. The geometry statements are checked strictly first (obj_syntax.h): a
+// malformed or non-finite number, a bad face or an index out of range is an error at its line
+// and column.
 #pragma once
 
 #include <string>

@@ -1,15 +1,18 @@
-// Wavefront OBJ import (see mesh_import.h). tinyobjloader parses the text; its indices are
-// checked here, and vertices are shared between faces that use the same position, normal and uv.
+// Wavefront OBJ import (see mesh_import.h). obj_syntax.h checks the text strictly, tinyobjloader
+// then parses it, and vertices are shared between faces that use the same position, normal and uv.
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <tuple>
 
 #include "runtime/scene/mesh_import.h"
 #include "runtime/scene/mesh_tools.h"
+#include "runtime/scene/obj_syntax.h"
 #include "runtime/scene/scene_error.h"
 
 namespace lg {
@@ -32,6 +35,16 @@ struct MeshBuilder {
   bool every_corner_has_normal = true, every_corner_has_uv = true;
 };
 
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, "the file cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// obj_syntax.h has checked every index; this guards the arrays should tinyobjloader ever
+// resolve one differently.
 void check_index(const std::string& path, int index, size_t count, const char* what, const std::string& shape) {
   if (index < 0 || static_cast<size_t>(index) >= count)
     throw SceneError(
@@ -48,23 +61,29 @@ float roughness_from_specular_exponent(float ns) {
 std::vector<Entity> import_obj(World& world, const std::string& path, Entity parent) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "the file does not exist");
-  tinyobj::ObjReader reader;
-  tinyobj::ObjReaderConfig config;
-  config.vertex_color = false;
-  if (!reader.ParseFromFile(path, config)) {
-    std::string error = reader.Error();
+  std::string text = read_text(path);
+  if (Diagnostics problems = check_obj_text(path, text); problems.has_errors()) throw SceneError(std::move(problems));
+  // The text checked is the text parsed (the file is read once); MTL files are found next to it.
+  std::istringstream stream(std::move(text));
+  std::string folder = std::filesystem::path(path).parent_path().string();
+  tinyobj::MaterialFileReader mtl_reader(folder.empty() ? folder : folder + "/");
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> mtl_materials;
+  std::string warning, error;
+  if (!tinyobj::LoadObj(&attrib, &shapes, &mtl_materials, &warning, &error, &stream, &mtl_reader, /*triangulate=*/true,
+                        /*default_vcols_fallback=*/false)) {
     while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
     throw SceneError(path, "not a valid OBJ file: " + (error.empty() ? std::string("unknown error") : error));
   }
-  const auto& attrib = reader.GetAttrib();
   size_t position_count = attrib.vertices.size() / 3, normal_count = attrib.normals.size() / 3,
          uv_count = attrib.texcoords.size() / 2;
   std::vector<int> materials;
-  for (const auto& m : reader.GetMaterials()) materials.push_back(world.add_material(pbr_from_mtl(m)));
+  for (const auto& m : mtl_materials) materials.push_back(world.add_material(pbr_from_mtl(m)));
   std::string stem = std::filesystem::path(path).stem().string();
 
   std::vector<Entity> made;
-  for (const auto& shape : reader.GetShapes()) {
+  for (const auto& shape : shapes) {
     std::string shape_name = shape.name.empty() ? stem : shape.name;
     std::map<int, MeshBuilder> by_material;
     size_t corner = 0;
@@ -72,7 +91,7 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
       size_t corners = shape.mesh.num_face_vertices[face];
       int material = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
       if (material >= static_cast<int>(materials.size())) material = -1;
-      if (corners != 3) {  // degenerate faces (points, lines) are left out
+      if (corners != 3) {  // tinyobjloader triangulates; anything else is left out
         corner += corners;
         continue;
       }
@@ -102,9 +121,9 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
       }
     }
     for (auto& [material, b] : by_material) {
-      b.mesh.name = shape_name + (by_material.size() > 1 && material >= 0
-                                      ? "/" + reader.GetMaterials()[static_cast<size_t>(material)].name
-                                      : "");
+      b.mesh.name =
+          shape_name +
+          (by_material.size() > 1 && material >= 0 ? "/" + mtl_materials[static_cast<size_t>(material)].name : "");
       if (!b.every_corner_has_uv) b.mesh.uvs.clear();
       if (std::string problem = mesh_problem(b.mesh); !problem.empty())
         throw SceneError(path, "object '" + shape_name + "': " + problem);

@@ -208,8 +208,12 @@ class SceneFileReader {
       else
         import_gltf(world_, resolved, e);
     } catch (const SceneError& error) {
-      for (const auto& item : error.diagnostics().items())
-        f.error_at("model", "'" + v.as_string() + "': " + item.message);
+      for (const auto& item : error.diagnostics().items()) {
+        std::string place = item.pos.line > 0
+                                ? ":" + std::to_string(item.pos.line) + ":" + std::to_string(item.pos.column)
+                                : std::string();  // the model's own line and column, as in `file:line:col`
+        f.error_at("model", "'" + v.as_string() + "'" + place + ": " + item.message);
+      }
       return;
     }
     if (material < 0) return;

@@ -77,7 +77,8 @@ TEST(ObjImport, StanfordBunny) {
 TEST(ObjImport, BrokenFilesGiveClearErrors) {
   World w;
   std::string path = write_variant("bad_index.obj", "o tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n");
-  EXPECT_EQ(error_of([&] { import_obj(w, path); }), path + ": error: object 'tri' uses normal 2 of 1");
+  EXPECT_EQ(error_of([&] { import_obj(w, path); }),
+            path + ":6:16: error: normal index 2 is beyond the file's 1 normal");
   path = write_variant("no_faces.obj", "v 0 0 0\nv 1 0 0\n");
   EXPECT_EQ(error_of([&] { import_obj(w, path); }), path + ": error: the file has no triangles");
   path = write_variant("binary.obj", std::string("\x00\xff\x13garbage\n\x01", 12));

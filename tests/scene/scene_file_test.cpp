@@ -253,8 +253,9 @@ TEST(SceneFile, ModelErrorsNameTheModelAndWhatIsWrong) {
     FAIL() << "loaded a broken model";
   } catch (const SceneError& e) {
     ASSERT_EQ(e.diagnostics().items().size(), 1u);
-    EXPECT_EQ(e.diagnostics().items()[0].to_string(),
-              scene + ":1:56: error: 'broken.obj': object 'broken' uses vertex 9 of 3 (/entities/0/model)");
+    EXPECT_EQ(
+        e.diagnostics().items()[0].to_string(),
+        scene + ":1:56: error: 'broken.obj':4:7: vertex index 9 is beyond the file's 3 vertices (/entities/0/model)");
   }
 }
 
