@@ -83,12 +83,16 @@ class ObjChecker {
   // The line's blank-separated words up to a comment (a word that starts with '#').
   void split_line() {
     tokens_.clear();
+    comment_ = std::string_view::npos;
     for (size_t i = 0; i < line_.size();) {
       if (is_blank(line_[i])) {
         ++i;
         continue;
       }
-      if (line_[i] == '#') break;
+      if (line_[i] == '#') {
+        comment_ = i;
+        break;
+      }
       size_t end = i;
       while (end < line_.size() && !is_blank(line_[end])) ++end;
       tokens_.push_back({line_.substr(i, end - i), i});
@@ -132,6 +136,10 @@ class ObjChecker {
       return error(tokens_[0].offset, "a face may have at most " + std::to_string(max_obj_face_corners) +
                                           " corners; this one has " + std::to_string(corners));
     for (size_t i = 1; i < tokens_.size(); ++i) check_corner(tokens_[i]);
+    if (comment_ != std::string_view::npos)
+      error(comment_,
+            "a comment may not follow a face's corners (tinyobjloader reads it as index 0); "
+            "put it on a line of its own");
   }
 
   // `v`, `v/t`, `v//n` or `v/t/n`.
@@ -202,7 +210,8 @@ class ObjChecker {
   std::string_view line_;
   uint32_t line_number_ = 0;
   std::vector<Token> tokens_;
-  std::array<int64_t, 3> defined_{};  // positions, uvs and normals defined so far
+  size_t comment_ = std::string_view::npos;  // where the line's comment starts
+  std::array<int64_t, 3> defined_{};         // positions, uvs and normals defined so far
   std::vector<ForwardReference> forward_;
   bool stopped_ = false;
 };

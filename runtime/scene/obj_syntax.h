@@ -32,7 +32,8 @@ constexpr size_t max_obj_errors = 20;
 // refused). A corner is `v`, `v/t`, `v//n` or `v/t/n` with integer indices, never 0. A negative
 // index counts back from the last element of its kind defined before its line and may not reach
 // before the first; a positive one may refer to an element defined later in the file (as
-// tinyobjloader allows) but not beyond the last. Other statements (o, g, s, usemtl, mtllib, l, p,
+// tinyobjloader allows) but not beyond the last. A `# comment` may end a v, vn or vt line, not
+// an f line (tinyobjloader would read it as a corner). Other statements (o, g, s, usemtl, mtllib, l, p,
 // free-form geometry) are left to tinyobjloader, which ignores the ones it does not know.
 Diagnostics check_obj_text(const std::string& path, std::string_view text);
 

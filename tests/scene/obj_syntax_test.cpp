@@ -75,6 +75,9 @@ TEST(ObjSyntax, BadFacesAreRefused) {
   EXPECT_EQ(refusal("past_int.obj", triangle + "f 1 2 2147483648\n"),
             ":4:7: error: vertex index 2147483648 is out of range");
   EXPECT_EQ(refusal("letters.obj", triangle + "f 1 2 3x\n"), ":4:7: error: expected an integer vertex index; got '3x'");
+  EXPECT_EQ(refusal("face_comment.obj", triangle + "f 1 2 3 # the only face\n"),
+            ":4:9: error: a comment may not follow a face's corners (tinyobjloader reads it as index 0); put it on a "
+            "line of its own");
   for (std::string corner : {"1/2/3/4", "1//", "/1", "1/", "/", "1/1/"})
     EXPECT_EQ(refusal("corner.obj", triangle + "vt 0 0\nvn 0 0 1\nf 1 2 3 " + corner + "\n"),
               ":6:9: error: expected a face corner like 3, 3/1, 3//2 or 3/1/2; got '" + corner + "'");
