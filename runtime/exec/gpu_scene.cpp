@@ -26,6 +26,12 @@ void check_mesh(const MeshData& mesh) {
     if (i >= count) fail("index " + std::to_string(i) + " past the last of " + std::to_string(count) + " vertices");
 }
 
+template <class T>
+const std::shared_ptr<const T>& not_null(const std::shared_ptr<const T>& asset, const char* what, size_t index) {
+  if (!asset) throw std::invalid_argument(std::string(what) + " " + std::to_string(index) + " of the scene is null");
+  return asset;
+}
+
 }  // namespace
 
 GpuScene::GpuScene(Context& context, Submitter& submitter) : context_(context), submitter_(submitter) {
@@ -78,10 +84,11 @@ void GpuScene::update(const SceneView& scene) {
   // Built aside, so that a malformed mesh leaves the previous upload in place.
   std::vector<GpuMesh> meshes;
   meshes.reserve(scene.meshes.size());
-  for (const MeshData& mesh : scene.meshes) meshes.push_back(upload(mesh));
+  for (size_t i = 0; i < scene.meshes.size(); ++i) meshes.push_back(upload(*not_null(scene.meshes[i], "mesh", i)));
   std::vector<Image> textures;
   textures.reserve(scene.textures.size());
-  for (const TextureData& texture : scene.textures) textures.push_back(upload(texture));
+  for (size_t i = 0; i < scene.textures.size(); ++i)
+    textures.push_back(upload(*not_null(scene.textures[i], "texture", i)));
   meshes_ = std::move(meshes);
   textures_ = std::move(textures);
   version_ = scene.version;

@@ -46,7 +46,7 @@ class GpuScene {
 
   // Uploads the meshes and textures when `scene.version` differs from the last upload (the
   // first call always uploads). Throws std::invalid_argument naming a malformed mesh or
-  // texture (attribute counts that differ, indices out of range, pixels of the wrong size).
+  // texture (attribute counts that differ, indices out of range, pixels of the wrong size, null).
   void update(const SceneView& scene);
 
   int mesh_count() const { return static_cast<int>(meshes_.size()); }

@@ -23,7 +23,7 @@ void add_framing_camera(World& world) {
   Bounds bounds;
   world.each<MeshRenderer>([&](Entity e, const MeshRenderer& r) {
     if (r.mesh < 0 || static_cast<size_t>(r.mesh) >= world.meshes().size()) return;
-    Bounds b = transformed_bounds(world.meshes()[static_cast<size_t>(r.mesh)], world.world_matrix(e));
+    Bounds b = transformed_bounds(*world.meshes()[static_cast<size_t>(r.mesh)], world.world_matrix(e));
     if (!b.empty()) {
       bounds.add(b.min);
       bounds.add(b.max);

@@ -115,7 +115,7 @@ SceneView make_scene_view(const World& world, float aspect_ratio, const SceneVie
   view.version = world.asset_revision();
   add_camera(world, aspect_ratio, view);
   if (previous) view.camera.previous_view_projection = previous->camera.projection * previous->camera.view;
-  view.meshes = world.meshes();
+  view.meshes = world.meshes();  // shared pointers: the assets themselves are not copied
   view.textures = world.textures();
   view.materials = world.materials();
   add_draws(world, previous, view);

@@ -12,8 +12,9 @@ namespace lg {
 // lowest-index EnvironmentLight and PostProcessSettings. With `previous` (last frame's view),
 // each draw's previous_world is the matching entity's world matrix then and
 // previous_view_projection the camera's then; otherwise they equal the current ones.
-// version is world.asset_revision(). Throws std::invalid_argument for an aspect ratio that is
-// not positive or a parent chain that loops.
+// version is world.asset_revision(); meshes and textures are the world's own, shared
+// (scene_view.h). Throws std::invalid_argument for an aspect ratio that is not positive or a
+// parent chain that loops.
 SceneView make_scene_view(const World& world, float aspect_ratio, const SceneView* previous = nullptr);
 
 }  // namespace lg

@@ -1,6 +1,17 @@
 #include "runtime/scene/scene_view.h"
 
+#include <stdexcept>
+
 namespace lg {
+
+const MeshData& SceneView::mesh_of(const DrawItem& draw) const {
+  if (draw.mesh < 0 || static_cast<size_t>(draw.mesh) >= meshes.size())
+    throw std::invalid_argument("a draw names mesh " + std::to_string(draw.mesh) + ", but the scene has " +
+                                std::to_string(meshes.size()));
+  const auto& mesh = meshes[static_cast<size_t>(draw.mesh)];
+  if (!mesh) throw std::invalid_argument("a draw names mesh " + std::to_string(draw.mesh) + ", which is null");
+  return *mesh;
+}
 
 const PbrMaterial& SceneView::material_of(const DrawItem& draw) const {
   static const PbrMaterial default_material;

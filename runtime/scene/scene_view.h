@@ -2,6 +2,15 @@
 // transform, and every light, flattened out of the ECS world (runtime/scene/world.h) by
 // make_scene_view(). Kernels read only this, never the world, so a host engine may also fill it
 // itself. Units: metres; light colours are linear RGB (Rec.709 primaries).
+//
+// Meshes and textures are shared, not copied: make_scene_view() hands out the World's own
+// assets behind shared_ptr<const>, so a frame's view costs a pointer per asset, and a view stays
+// valid after the world changes or goes (World::edit_mesh() copies an asset a view still holds
+// before changing it). `version` says when their contents changed; kernels re-upload or re-bake
+// on that, never by comparing pointers. A host engine filling the view itself either makes its
+// own (std::make_shared<const MeshData>(...)) or points at meshes it keeps alive for as long as
+// the view is used, through shared_ptr's aliasing constructor:
+// std::shared_ptr<const MeshData>(std::shared_ptr<void>(), &its_mesh).
 #pragma once
 
 #include <cstdint>
@@ -9,6 +18,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -106,8 +116,8 @@ struct SceneView {
   std::string name;
   uint64_t version = 0;  // changes whenever meshes, materials or textures change (GPU re-upload)
   CameraView camera;
-  std::vector<MeshData> meshes;
-  std::vector<TextureData> textures;
+  std::vector<std::shared_ptr<const MeshData>> meshes;  // never null where a draw uses it
+  std::vector<std::shared_ptr<const TextureData>> textures;
   std::vector<PbrMaterial> materials;
   std::vector<DrawItem> draws;
   std::vector<DirectionalLightData> directional_lights;
@@ -123,6 +133,8 @@ struct SceneView {
   // The draw's material, or the default PbrMaterial when it has none (material -1, which the ECS
   // uses for "default") or an index out of range.
   const PbrMaterial& material_of(const DrawItem& draw) const;
+  // The draw's mesh; throws std::invalid_argument when its index is out of range or its slot null.
+  const MeshData& mesh_of(const DrawItem& draw) const;
 
   // What the compiler specializes on: counts of each light kind, probes, glossy materials
   // (any drawn with roughness below 0.9 or any metal; a draw without a material counts as the

@@ -18,6 +18,15 @@ T& element(std::vector<T>& items, int index, const char* what) {
   return items[static_cast<size_t>(index)];
 }
 
+// The asset of `slot`, copied first when a SceneView still shares it. Assets are made as
+// non-const T (make_shared<T> here and in add_mesh/add_texture) and only the World's pointers
+// are to const, so writing through the const_cast is defined.
+template <class T>
+T& unshared(std::shared_ptr<const T>& slot) {
+  if (slot.use_count() > 1) slot = std::make_shared<T>(*slot);
+  return const_cast<T&>(*slot);
+}
+
 }  // namespace
 
 Entity World::create() {
@@ -72,7 +81,7 @@ void World::touch_assets() {
 
 int World::add_mesh(MeshData mesh) {
   touch_assets();
-  meshes_.push_back(std::move(mesh));
+  meshes_.push_back(std::make_shared<MeshData>(std::move(mesh)));
   return static_cast<int>(meshes_.size() - 1);
 }
 
@@ -84,13 +93,13 @@ int World::add_material(PbrMaterial material) {
 
 int World::add_texture(TextureData texture) {
   touch_assets();
-  textures_.push_back(std::move(texture));
+  textures_.push_back(std::make_shared<TextureData>(std::move(texture)));
   return static_cast<int>(textures_.size() - 1);
 }
 
 MeshData& World::edit_mesh(int index) {
   touch_assets();
-  return element(meshes_, index, "mesh");
+  return unshared(element(meshes_, index, "mesh"));
 }
 
 PbrMaterial& World::edit_material(int index) {
@@ -100,7 +109,7 @@ PbrMaterial& World::edit_material(int index) {
 
 TextureData& World::edit_texture(int index) {
   touch_assets();
-  return element(textures_, index, "texture");
+  return unshared(element(textures_, index, "texture"));
 }
 
 }  // namespace lg

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <glm/mat4x4.hpp>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -86,13 +87,17 @@ class World {
   glm::mat4 world_matrix(Entity e) const;
 
   // Assets. Every change moves asset_revision() to a number never used before in this process,
-  // so a renderer re-uploads when it differs from the one it uploaded.
+  // so a renderer re-uploads when it differs from the one it uploaded. Meshes and textures are
+  // held through shared pointers that SceneViews share (scene_view.h); none is ever null. An
+  // edit_ function copies an asset that a view still holds before handing it out, so views keep
+  // what they saw; its reference is for one edit: call it again after the next make_scene_view()
+  // or asset change, or the change may reach a view without a new revision.
   int add_mesh(MeshData mesh);
   int add_material(PbrMaterial material);
   int add_texture(TextureData texture);
-  const std::vector<MeshData>& meshes() const { return meshes_; }
+  const std::vector<std::shared_ptr<const MeshData>>& meshes() const { return meshes_; }
   const std::vector<PbrMaterial>& materials() const { return materials_; }
-  const std::vector<TextureData>& textures() const { return textures_; }
+  const std::vector<std::shared_ptr<const TextureData>>& textures() const { return textures_; }
   MeshData& edit_mesh(int index);
   PbrMaterial& edit_material(int index);
   TextureData& edit_texture(int index);
@@ -138,9 +143,9 @@ class World {
   std::vector<bool> live_;
   std::vector<uint32_t> free_;
   size_t live_count_ = 0;
-  std::vector<MeshData> meshes_;
+  std::vector<std::shared_ptr<const MeshData>> meshes_;
   std::vector<PbrMaterial> materials_;
-  std::vector<TextureData> textures_;
+  std::vector<std::shared_ptr<const TextureData>> textures_;
   uint64_t asset_revision_ = 0;
 };
 

@@ -59,7 +59,7 @@ std::vector<Triangles> draw_ranges(const SceneView& view) {
   std::vector<Triangles> ranges;
   size_t first = 0;
   for (const DrawItem& draw : view.draws) {
-    const size_t count = view.meshes[draw.mesh].indices.size() / 3;
+    const size_t count = view.mesh_of(draw).indices.size() / 3;
     ranges.push_back({first, count});
     first += count;
   }

@@ -14,7 +14,7 @@ SceneView scene_of(std::vector<std::pair<MeshData, glm::mat4>> placed) {
     DrawItem draw;
     draw.mesh = int(view.meshes.size());
     draw.world = world;
-    view.meshes.push_back(std::move(mesh));
+    view.meshes.push_back(std::make_shared<const MeshData>(std::move(mesh)));
     view.draws.push_back(draw);
   }
   return view;

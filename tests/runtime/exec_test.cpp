@@ -213,11 +213,12 @@ TEST_F(ExecTest, DrawsTheGpuScenesMeshIntoAnAttachment) {
     "links": [ { "from": "raster.color", "to": "out.color" } ] })");
   // One triangle covering the frame, in clip space; no uvs (they read as 0).
   scene.version = 1;
-  MeshData& mesh = scene.meshes.emplace_back();
+  MeshData mesh;
   mesh.name = "cover";
   mesh.positions = {{-1, -1, 0.5f}, {3, -1, 0.5f}, {-1, 3, 0.5f}};
   mesh.normals.assign(3, {0.25f, 0.5f, 0.75f});
   mesh.indices = {0, 1, 2};
+  scene.meshes.push_back(std::make_shared<const MeshData>(std::move(mesh)));
   GpuScene gpu_scene(context(), exec->submitter());
   for (int frame = 0; frame < 2; ++frame) {
     exec->run_frame(scene, gpu_scene);

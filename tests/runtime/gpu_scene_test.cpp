@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <memory>
 #include <span>
 #include <stdexcept>
 
@@ -20,26 +21,36 @@ namespace {
 
 using GpuSceneTest = GpuTest;
 
+// Slot `index` of the view's meshes replaced by a copy that the test may change.
+MeshData& edited_mesh(SceneView& scene, size_t index) {
+  auto copy = std::make_shared<MeshData>(*scene.meshes.at(index));
+  scene.meshes[index] = copy;
+  return *copy;
+}
+
 SceneView one_triangle_scene() {
   SceneView scene;
   scene.version = 7;
-  MeshData& mesh = scene.meshes.emplace_back();
+  MeshData mesh;
   mesh.name = "triangle";
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
   mesh.indices = {0, 1, 2};
-  MeshData& quad = scene.meshes.emplace_back();
+  scene.meshes.push_back(std::make_shared<const MeshData>(std::move(mesh)));
+  MeshData quad;
   quad.name = "quad";
   quad.positions = {{-1, -1, 2}, {1, -1, 2}, {1, 1, 2}, {-1, 1, 2}};
   quad.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
   quad.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   quad.indices = {0, 1, 2, 0, 2, 3};
-  TextureData& texture = scene.textures.emplace_back();
+  scene.meshes.push_back(std::make_shared<const MeshData>(std::move(quad)));
+  TextureData texture;
   texture.name = "checker";
   texture.width = 3;
   texture.height = 2;
   texture.rgba8 = {0,   1,   2,   255, 17,  34,  51,  68, 128, 129, 130, 131,
                    200, 201, 202, 203, 254, 253, 252, 0,  9,   99,  199, 255};
+  scene.textures.push_back(std::make_shared<const TextureData>(std::move(texture)));
   return scene;
 }
 
@@ -49,7 +60,7 @@ TEST_F(GpuSceneTest, UploadsInterleavedVerticesAndIndices) {
   gpu.update(scene);
   ASSERT_EQ(gpu.mesh_count(), 2);
   for (int m = 0; m < 2; ++m) {
-    const MeshData& want = scene.meshes[m];
+    const MeshData& want = *scene.meshes[m];
     const GpuMesh& mesh = gpu.mesh(m);
     EXPECT_EQ(mesh.vertex_count, want.positions.size());
     EXPECT_EQ(mesh.index_count, want.indices.size());
@@ -83,7 +94,7 @@ TEST_F(GpuSceneTest, UploadsTexturesInSrgbAndAWhiteTexture) {
   const Image& texture = gpu.texture(0);
   EXPECT_EQ(texture.desc().format, VK_FORMAT_R8G8B8A8_SRGB);
   std::vector<float> want(6 * 4);
-  decode_texels(format_info(VK_FORMAT_R8G8B8A8_SRGB), std::as_bytes(std::span(scene.textures[0].rgba8)), want);
+  decode_texels(format_info(VK_FORMAT_R8G8B8A8_SRGB), std::as_bytes(std::span(scene.textures[0]->rgba8)), want);
   EXPECT_EQ(read_image(submitter(), texture, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL), want);
   EXPECT_EQ(read_image(submitter(), gpu.white_texture(), VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL),
             (std::vector<float>{1, 1, 1, 1}));
@@ -107,14 +118,14 @@ TEST_F(GpuSceneTest, RefusesMalformedMeshesAndKeepsThePreviousUpload) {
   GpuScene gpu(context(), submitter());
   gpu.update(scene);
   scene.version = 9;
-  scene.meshes[1].indices.push_back(4);
+  edited_mesh(scene, 1).indices.push_back(4);
   try {
     gpu.update(scene);
     ADD_FAILURE() << "no throw";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "mesh 'quad': 7 indices, not three per triangle");
   }
-  scene.meshes[1].indices = {0, 1, 4};
+  edited_mesh(scene, 1).indices = {0, 1, 4};
   EXPECT_THROW(gpu.update(scene), std::invalid_argument);
   EXPECT_EQ(gpu.mesh_count(), 2);
   EXPECT_EQ(gpu.mesh(1).index_count, 6u);

@@ -51,12 +51,13 @@ TEST(DefaultWorld, HasGradedRowsASkyAndNoFiles) {
     EXPECT_GT(roughness[i], roughness[i - 1]);
     EXPECT_GT(metalness[i], metalness[i - 1]);
   }
-  for (const auto& t : v.textures) EXPECT_FALSE(t.rgba8.empty());
+  for (const auto& t : v.textures) EXPECT_FALSE(t->rgba8.empty());
 }
 
 TEST(DefaultWorld, MeshesAreWellFormedWithUnitNormals) {
   SceneView v = make_scene_view(default_world(), 16.0f / 9.0f);
-  for (const auto& m : v.meshes) {
+  for (const auto& shared : v.meshes) {
+    const MeshData& m = *shared;
     EXPECT_EQ(mesh_problem(m), "") << m.name;
     EXPECT_FALSE(m.indices.empty()) << m.name;
     for (const auto& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-4f) << m.name;
@@ -92,7 +93,7 @@ TEST(DefaultWorld, CameraFramesTheObjectsAtSixteenByNine) {
     return c.w > 0 && std::abs(c.x / c.w) < 0.95f && std::abs(c.y / c.w) < 0.95f && c.z / c.w > 0 && c.z / c.w <= 1;
   };
   for (const auto& d : v.draws) {
-    Bounds b = transformed_bounds(v.meshes[static_cast<size_t>(d.mesh)], d.world);
+    Bounds b = transformed_bounds(v.mesh_of(d), d.world);
     bool is_room = v.materials[static_cast<size_t>(d.material)].name == "wall" ||
                    v.materials[static_cast<size_t>(d.material)].name == "floor";
     if (!is_room) {

@@ -20,7 +20,7 @@ using test::write_variant;
 
 const MeshData* mesh_named(const World& w, const std::string& name) {
   for (const auto& m : w.meshes())
-    if (m.name == name) return &m;
+    if (m->name == name) return m.get();
   return nullptr;
 }
 
@@ -56,7 +56,7 @@ void check_fixture_world(const World& w) {
   EXPECT_FLOAT_EQ(m.roughness, 0.25f);
   expect_near(m.emissive, {0.1f, 0.2f, 0.3f});
   ASSERT_EQ(m.base_color_texture, 0);
-  const TextureData& t = w.textures()[0];
+  const TextureData& t = *w.textures()[0];
   EXPECT_EQ(t.width, 2u);
   EXPECT_EQ(t.height, 1u);
   EXPECT_EQ(t.rgba8, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));  // RGB PNG, alpha added
@@ -66,7 +66,7 @@ void check_fixture_world(const World& w) {
   // root's (1, 2, 3): (1, 3, 2).
   const DrawItem* quad_draw = nullptr;
   for (const auto& d : v.draws)
-    if (v.meshes[static_cast<size_t>(d.mesh)].name == "quad") quad_draw = &d;
+    if (v.mesh_of(d).name == "quad") quad_draw = &d;
   ASSERT_NE(quad_draw, nullptr);
   expect_near(glm::vec3(quad_draw->world * glm::vec4(0.5f, 0.5f, 0.0f, 1.0f)), {1, 3, 2});
   EXPECT_EQ(quad_draw->material, 0);
@@ -174,7 +174,7 @@ TEST(GltfImport, TruncatedAndCorruptedFilesNeverCrash) {
       World w;
       try {
         import_gltf(w, path);
-        for (const auto& m : w.meshes()) EXPECT_EQ(mesh_problem(m), "");
+        for (const auto& m : w.meshes()) EXPECT_EQ(mesh_problem(*m), "");
       } catch (const SceneError&) {
       }
     }

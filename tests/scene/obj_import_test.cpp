@@ -41,7 +41,7 @@ TEST(ObjImport, CubeWithMaterials) {
 
   for (Entity e : made) {
     const MeshRenderer& r = w.get<MeshRenderer>(e);
-    const MeshData& m = w.meshes()[static_cast<size_t>(r.mesh)];
+    const MeshData& m = *w.meshes()[static_cast<size_t>(r.mesh)];
     EXPECT_EQ(mesh_problem(m), "");
     ASSERT_EQ(m.uvs.size(), m.positions.size());
     if (r.material == 0) {  // the top face, normals from the file, uvs flipped to a top-left origin
@@ -64,7 +64,7 @@ TEST(ObjImport, StanfordBunny) {
   World w;
   import_obj(w, bunny_path());
   ASSERT_EQ(w.meshes().size(), 1u);
-  const MeshData& m = w.meshes()[0];
+  const MeshData& m = *w.meshes()[0];
   EXPECT_EQ(m.positions.size(), 2503u);
   EXPECT_EQ(m.indices.size(), 3u * 4968u);
   EXPECT_EQ(mesh_problem(m), "");

@@ -96,7 +96,7 @@ TEST(ObjSyntax, FacesHaveAtMostTheCornerLimit) {
   };
   World w = imported("polygon.obj", polygon(max_obj_face_corners));
   ASSERT_EQ(w.meshes().size(), 1u);
-  EXPECT_EQ(w.meshes()[0].indices.size(), 3 * (max_obj_face_corners - 2));
+  EXPECT_EQ(w.meshes()[0]->indices.size(), 3 * (max_obj_face_corners - 2));
   size_t too_many = max_obj_face_corners + 1;
   EXPECT_EQ(refusal("big_polygon.obj", polygon(too_many)),
             ":" + std::to_string(too_many + 1) + ":1: error: a face may have at most " +
@@ -140,8 +140,8 @@ TEST(ObjSyntax, LenientFormsOfTheFormatLoad) {
   World forward = imported("forward.obj", "f 1 2 3\n" + triangle);
   for (const World* w : {&relative, &forward}) {
     ASSERT_EQ(w->meshes().size(), 1u);
-    EXPECT_EQ(w->meshes()[0].positions, absolute.meshes()[0].positions);
-    EXPECT_EQ(w->meshes()[0].indices, absolute.meshes()[0].indices);
+    EXPECT_EQ(w->meshes()[0]->positions, absolute.meshes()[0]->positions);
+    EXPECT_EQ(w->meshes()[0]->indices, absolute.meshes()[0]->indices);
   }
   // Comments, tabs, a '+' sign, w, a vertex colour, a lone u, and a number too small for a
   // double, which underflows to 0 as tinyobjloader reads it.
@@ -153,7 +153,7 @@ TEST(ObjSyntax, LenientFormsOfTheFormatLoad) {
                            "vt 0.25\n"
                            "f 1/1 2/1 3/1\n");
   ASSERT_EQ(lenient.meshes().size(), 1u);
-  const MeshData& m = lenient.meshes()[0];
+  const MeshData& m = *lenient.meshes()[0];
   ASSERT_EQ(m.positions.size(), 3u);
   EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
   EXPECT_EQ(m.uvs[0], glm::vec2(0.25f, 1.0f));  // v defaults to 0, flipped to a top-left origin

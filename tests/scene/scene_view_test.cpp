@@ -1,11 +1,13 @@
 // make_scene_view(): camera matrices (Vulkan clip space, reversed Z, infinite far plane),
-// world-space lights, previous-frame matrices, version and summary. Tolerances: 1e-5 relative
-// on matrices and positions (float arithmetic of a few operations).
+// world-space lights, previous-frame matrices, version and summary, and the assets a view shares
+// with its world. Tolerances: 1e-5 relative on matrices and positions (float arithmetic of a few
+// operations).
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "runtime/scene/make_scene_view.h"
+#include "runtime/scene/mesh_generators.h"
 #include "runtime/scene/projection.h"
 
 namespace lg {
@@ -148,6 +150,77 @@ TEST(SceneView, VersionFollowsAssetChanges) {
   EXPECT_EQ(make_scene_view(w, 1.0f).version, v1);  // nothing changed
   w.edit_mesh(0).name = "changed";
   EXPECT_NE(make_scene_view(w, 1.0f).version, v1);
+}
+
+// A view holds the world's own meshes and textures (no copy per frame); an edit of the world
+// copies what a view or another world still holds, so each keeps what it saw.
+TEST(SceneView, SharesTheWorldsAssetsAndKeepsWhatItSaw) {
+  World w;
+  Entity e = w.create("box");
+  w.add<MeshRenderer>(e, {w.add_mesh(make_box(glm::vec3(1.0f))), -1});
+  w.add_texture({"texels", 1, 1, {1, 2, 3, 4}});
+  SceneView first = make_scene_view(w, 1.0f);
+  SceneView second = make_scene_view(w, 1.0f, &first);
+  for (const SceneView* v : {&first, &second}) {
+    EXPECT_EQ(v->meshes.at(0).get(), w.meshes()[0].get());
+    EXPECT_EQ(v->textures.at(0).get(), w.textures()[0].get());
+  }
+  const MeshData* seen = w.meshes()[0].get();
+  const size_t seen_vertices = seen->positions.size();
+  uint64_t seen_version = second.version;
+
+  w.edit_mesh(0).positions.push_back(glm::vec3(9.0f));
+  w.edit_texture(0).rgba8[0] = 200;
+  EXPECT_EQ(first.meshes[0].get(), seen);  // the views keep the mesh they were made with
+  EXPECT_EQ(second.mesh_of(second.draws[0]).positions.size(), seen_vertices);
+  EXPECT_EQ(second.textures[0]->rgba8[0], 1);
+  SceneView third = make_scene_view(w, 1.0f, &second);
+  EXPECT_EQ(third.mesh_of(third.draws[0]).positions.size(), seen_vertices + 1);
+  EXPECT_EQ(third.textures[0]->rgba8[0], 200);
+  EXPECT_NE(third.version, seen_version);
+
+  // Without views holding it, an edit changes the mesh in place.
+  first = {};
+  second = {};
+  third = {};
+  const MeshData* alone = w.meshes()[0].get();
+  w.edit_mesh(0).name = "edited";
+  EXPECT_EQ(w.meshes()[0].get(), alone);
+
+  // A copy of the world shares the assets until one of the two edits them.
+  World copy = w;
+  copy.edit_mesh(0).name = "copy";
+  EXPECT_EQ(w.meshes()[0]->name, "edited");
+  EXPECT_EQ(copy.meshes()[0]->name, "copy");
+}
+
+TEST(SceneView, OutlivesItsWorld) {
+  SceneView v;
+  {
+    World w;
+    Entity e = w.create("box");
+    w.add<MeshRenderer>(e, {w.add_mesh(make_box(glm::vec3(2.0f))), -1});
+    v = make_scene_view(w, 1.0f);
+  }
+  ASSERT_EQ(v.draws.size(), 1u);
+  EXPECT_EQ(v.mesh_of(v.draws[0]).positions, make_box(glm::vec3(2.0f)).positions);
+}
+
+TEST(SceneView, MeshOfRefusesAMissingOrNullMesh) {
+  SceneView v;
+  v.meshes.push_back(nullptr);
+  DrawItem draw;
+  draw.mesh = 0;
+  EXPECT_THROW(v.mesh_of(draw), std::invalid_argument);
+  draw.mesh = 1;
+  EXPECT_THROW(v.mesh_of(draw), std::invalid_argument);
+  draw.mesh = -1;
+  EXPECT_THROW(v.mesh_of(draw), std::invalid_argument);
+  // A host's own mesh, not owned by the view (shared_ptr's aliasing constructor).
+  const MeshData host_mesh = make_box(glm::vec3(1.0f));
+  v.meshes[0] = std::shared_ptr<const MeshData>(std::shared_ptr<void>(), &host_mesh);
+  draw.mesh = 0;
+  EXPECT_EQ(&v.mesh_of(draw), &host_mesh);
 }
 
 TEST(SceneView, SummaryCountsWhatTheWorldHas) {

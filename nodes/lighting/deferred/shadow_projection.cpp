@@ -9,7 +9,7 @@ namespace lg {
 Bounds scene_bounds(const SceneView& scene) {
   Bounds b{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
   for (const DrawItem& d : scene.draws)
-    for (const glm::vec3& p : scene.meshes.at(d.mesh).positions) {
+    for (const glm::vec3& p : scene.mesh_of(d).positions) {
       const glm::vec3 w = glm::vec3(d.world * glm::vec4(p, 1.0f));
       b.lo = glm::min(b.lo, w);
       b.hi = glm::max(b.hi, w);

@@ -16,10 +16,7 @@ WorldMesh make_world_mesh(const SceneView& view) {
   WorldMesh out;
   for (size_t d = 0; d < view.draws.size(); ++d) {
     const DrawItem& draw = view.draws[d];
-    if (draw.mesh < 0 || size_t(draw.mesh) >= view.meshes.size())
-      throw std::invalid_argument("draw " + std::to_string(d) + " names mesh " + std::to_string(draw.mesh) +
-                                  ", but the scene has " + std::to_string(view.meshes.size()));
-    const MeshData& mesh = view.meshes[size_t(draw.mesh)];
+    const MeshData& mesh = view.mesh_of(draw);
     if (std::string problem = mesh_problem(mesh); !problem.empty())
       throw std::invalid_argument("mesh '" + mesh.name + "': " + problem);
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(draw.world)));
