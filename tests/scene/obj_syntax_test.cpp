@@ -1,12 +1,14 @@
 // Malformed OBJ geometry is refused with its line and column (runtime/scene/obj_syntax.h):
 // non-finite and malformed numbers, missing coordinates, faces with too few or too many
 // corners, and indices that are zero, out of range or malformed; and the lenient forms the
-// format allows (relative and forward indices, comments, CRLF, underflowing numbers) still load.
+// format allows (relative and forward indices, comments, CRLF, underflowing numbers) still load;
+// random edits of the cube load or fail with a SceneError.
 #include "runtime/scene/obj_syntax.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <random>
 
 #include "import_test_support.h"
 #include "runtime/scene/mesh_import.h"
@@ -15,6 +17,8 @@ namespace lg {
 namespace {
 
 using test::error_of;
+using test::fixture;
+using test::read_bytes;
 using test::write_variant;
 
 const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
@@ -157,6 +161,45 @@ TEST(ObjSyntax, LenientFormsOfTheFormatLoad) {
   ASSERT_EQ(m.positions.size(), 3u);
   EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
   EXPECT_EQ(m.uvs[0], glm::vec2(0.25f, 1.0f));  // v defaults to 0, flipped to a top-left origin
+}
+
+// Random edits of the cube (characters replaced by ones that matter to OBJ, inserted or
+// deleted) either load or throw a SceneError; nothing else escapes, and under the sanitizer
+// build no edit reads out of bounds.
+TEST(ObjSyntax, RandomEditsLoadOrFailWithASceneError) {
+  const std::string cube = read_bytes(fixture("cube.obj"));
+  const std::string alphabet = " \t\r\n/-+.#0123456789eEnaif";
+  std::mt19937_64 rng(20261202);
+  auto pick = [&](size_t n) { return std::uniform_int_distribution<size_t>(0, n - 1)(rng); };
+  // Beside a copy of cube.mtl, so that the edits that keep its name still find it.
+  write_variant("cube.mtl", read_bytes(fixture("cube.mtl")));
+  size_t loaded = 0, refused = 0;
+  for (int round = 0; round < 300; ++round) {
+    std::string text = cube;
+    for (int edit = 0, edits = 1 + static_cast<int>(pick(3)); edit < edits; ++edit) {
+      size_t at = pick(text.size());
+      switch (pick(3)) {
+        case 0:
+          text[at] = alphabet[pick(alphabet.size())];
+          break;
+        case 1:
+          text.insert(at, 1, alphabet[pick(alphabet.size())]);
+          break;
+        default:
+          text.erase(at, 1);
+      }
+    }
+    std::string path = write_variant("mutated.obj", text);
+    World w;
+    try {
+      import_obj(w, path);
+      ++loaded;
+    } catch (const SceneError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(loaded, 0u);  // most edits in comments, names and digits leave a valid file
+  EXPECT_GT(refused, 0u);
 }
 
 }  // namespace
