@@ -4,6 +4,7 @@
 // plan_format.h prints it as JSON, Graphviz dot and a text table.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -68,7 +69,11 @@ struct Plan {
   std::vector<Barrier> barriers;    // sorted by Barrier::before
   std::vector<PlanOutput> outputs;  // the file's outputs, then output nodes' inputs
   std::vector<MemoryBlock> blocks;
+  std::vector<int> predecessors;  // the placements' predecessor lists, back to back
   MemoryTotals memory;
+
+  // The resources that last held resource r's bytes.
+  std::span<const int> predecessors_of(int r) const { return predecessors_in(predecessors, resources[r].placement); }
 };
 
 }  // namespace lg

@@ -217,7 +217,9 @@ class LastOwners {
   // Each take() adds at most two pieces: room for all of them up front.
   explicit LastOwners(size_t takes) { owned_.reserve(2 * takes + 1); }
 
-  void take(uint64_t start, uint64_t end, int owner, std::vector<int>& predecessors) {
+  // Gives `owner` the bytes [start, end) and appends their last owners to `list`, each once;
+  // returns how many it appended.
+  uint32_t take(uint64_t start, uint64_t end, int owner, std::vector<int>& list) {
     // Disjoint and sorted by start, so sorted by end too.
     auto first = std::partition_point(owned_.begin(), owned_.end(), [&](const Owned& o) { return o.end <= start; });
     auto last = first;
@@ -236,9 +238,10 @@ class LastOwners {
     else
       owned_.erase(owned_.begin() + at + count, owned_.begin() + at + removed);
     std::copy(pieces, pieces + count, owned_.begin() + at);
-    // Gathered apart and copied once: growing each placement's list allocates several times.
     std::sort(found_.begin(), found_.end());
-    predecessors.assign(found_.begin(), std::unique(found_.begin(), found_.end()));
+    const auto unique_end = std::unique(found_.begin(), found_.end());
+    list.insert(list.end(), found_.begin(), unique_end);
+    return static_cast<uint32_t>(unique_end - found_.begin());
   }
 
  private:
@@ -346,9 +349,11 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   }
 
   LastOwners owners(by_first.size());
+  out.predecessors.reserve(2 * by_first.size());  // rarely more than two each: no regrowth
   for (int r : by_first) {
     Placement& p = out.placements[r];
-    owners.take(p.offset, p.offset + p.size, r, p.predecessors);
+    p.first_predecessor = static_cast<uint32_t>(out.predecessors.size());
+    p.predecessor_count = owners.take(p.offset, p.offset + p.size, r, out.predecessors);
   }
   return out;
 }
@@ -369,9 +374,9 @@ JsonValue dump_memory(const LoweredGraph& lowered, const MemoryLayout& memory) {
     place.set("block", p.block);
     place.set("offset", p.offset);
     place.set("bytes", p.size);
-    if (!p.predecessors.empty()) {
+    if (p.predecessor_count > 0) {
       JsonValue& preds = place.set("takes_over_from", JsonValue::array());
-      for (int q : p.predecessors) preds.push(lowered.resources[q].name);
+      for (int q : memory.predecessors_of(static_cast<int>(r))) preds.push(lowered.resources[q].name);
     }
   }
   return out;

@@ -70,6 +70,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
   }
   plan.blocks = memory.blocks;
+  plan.predecessors = std::move(memory.predecessors);
   plan.memory.transient = memory.blocks[0].size;
   plan.memory.persistent = memory.blocks[1].size;
   plan.barriers = std::move(barriers);
