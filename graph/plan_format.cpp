@@ -85,7 +85,7 @@ JsonValue plan_to_json(const Plan& plan) {
     for (const auto& a : p.accesses) {
       JsonValue& use = uses.push(JsonValue::object());
       use.set("resource", plan.resources[a.resource].desc.name);
-      use.set("slot", a.slot);
+      use.set("slot", plan.slot_of(a));
       use.set("usage", std::string(usage_name(a.usage)));
     }
   }
