@@ -77,7 +77,7 @@ class StartOffsets {
  private:
   std::vector<uint64_t> sorted_;  // by rank: the offset
   std::vector<uint32_t> id_of_rank_, rank_of_id_;
-  std::vector<uint64_t> present_;   // by rank, a bit: in the list unite() is sorting
+  std::vector<uint64_t> present_;   // by rank, a bit: marked since the last collect()
   std::vector<uint64_t> furthest_;  // by rank: the furthest end in that list
 };
 
@@ -101,7 +101,7 @@ class StabbingTree {
   void insert(Lifetime life, ByteRange range) {
     const int scratch = static_cast<int>(ranges_.size()) - 1;
     for_nodes(life, [&](int node, int covers) {
-      ranges_[covers ? fill_[node] : scratch] = range;
+      ranges_[scratch + ((fill_[node] - scratch) & -covers)] = range;  // a select the compiler keeps branch-free
       fill_[node] += covers;
     });
   }
