@@ -106,7 +106,7 @@ bool TimelineWidget::event(QEvent* e) {
       const PlanResource& r = plan_->resources[size_t(box.resource)];
       QToolTip::showText(help->globalPos(),
                          tr("%1\n%2 %3x%4, %5\npasses %6 to %7, offset %8")
-                             .arg(QString::fromStdString(r.desc.name), QString::fromStdString(r.desc.format))
+                             .arg(QString::fromStdString(r.desc.name), QString::fromUtf8(r.desc.format.data(), qsizetype(r.desc.format.size())))
                              .arg(r.desc.width)
                              .arg(r.desc.height)
                              .arg(QString::fromStdString(format_bytes(r.placement.size)))

@@ -4,6 +4,7 @@
 // plan_format.h prints it as JSON, Graphviz dot and a text table.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct PlanNode {
 struct PlanAccess {
   int resource = -1;
   Usage usage = Usage::sampled;
-  std::string slot;   // the node's port or internal resource: "in.color", "out.ao", "tmp.chain"
+  int slot = -1;      // into Plan::slots: the node's port or internal resource
   int component = 0;  // within a bundle (G-buffer): index into its components
 };
 
@@ -68,7 +69,16 @@ struct Plan {
   std::vector<Barrier> barriers;    // sorted by Barrier::before
   std::vector<PlanOutput> outputs;  // the file's outputs, then output nodes' inputs
   std::vector<MemoryBlock> blocks;
+  std::vector<int> predecessors;  // the placements' predecessor lists, back to back
+  // Every slot name the accesses use, once: "in.color", "out.ao", "tmp.chain". A graph of
+  // thousands of nodes uses a few dozen.
+  std::vector<std::string> slots;
   MemoryTotals memory;
+
+  const std::string& slot_of(const PlanAccess& a) const { return slots[a.slot]; }
+
+  // The resources that last held resource r's bytes.
+  std::span<const int> predecessors_of(int r) const { return predecessors_in(predecessors, resources[r].placement); }
 };
 
 }  // namespace lg

@@ -85,7 +85,7 @@ JsonValue plan_to_json(const Plan& plan) {
     for (const auto& a : p.accesses) {
       JsonValue& use = uses.push(JsonValue::object());
       use.set("resource", plan.resources[a.resource].desc.name);
-      use.set("slot", a.slot);
+      use.set("slot", plan.slot_of(a));
       use.set("usage", std::string(usage_name(a.usage)));
     }
   }
@@ -94,7 +94,7 @@ JsonValue plan_to_json(const Plan& plan) {
   for (const auto& r : plan.resources) {
     JsonValue& res = resources.push(JsonValue::object());
     res.set("name", r.desc.name);
-    res.set("format", r.desc.format);
+    res.set("format", std::string(r.desc.format));
     res.set("extent", int_pair(r.desc.width, r.desc.height));
     res.set("layers", static_cast<int64_t>(r.desc.layers));
     res.set("mips", static_cast<int64_t>(r.desc.mips));
@@ -163,7 +163,7 @@ std::string plan_to_dot(const Plan& plan) {
     const PlanResource& res = plan.resources[r];
     if (res.first < 0) continue;
     out += "  r" + std::to_string(r) + " [shape=note, label=" +
-           json_quote(res.desc.name + "\n" + res.desc.format + " " + std::to_string(res.desc.width) + "x" +
+           json_quote(res.desc.name + "\n" + std::string(res.desc.format) + " " + std::to_string(res.desc.width) + "x" +
                       std::to_string(res.desc.height) + "\n" + format_bytes(res.desc.bytes)) +
            "];\n";
   }
@@ -222,7 +222,7 @@ std::string plan_to_text(const Plan& plan) {
     if (r.desc.layers > 1) extent += "x" + std::to_string(r.desc.layers);
     if (r.desc.mips > 1) extent += " m" + std::to_string(r.desc.mips);
     std::string where = (r.placement.block == 1 ? "P+" : "T+") + format_bytes(r.placement.offset);
-    out += pad("  " + r.desc.name, 30) + pad(r.desc.format, 12) + pad(extent, 14) +
+    out += pad("  " + r.desc.name, 30) + pad(std::string(r.desc.format), 12) + pad(extent, 14) +
            pad(format_bytes(r.desc.bytes), 12) + pad(std::string(lifetime_name(r.desc.lifetime)), 11) +
            pad(std::to_string(r.first) + "-" + std::to_string(r.last), 9) + where + "\n";
   }

@@ -26,6 +26,8 @@ struct PortType {
   std::string format_class;  // "hdr", "ldr", "mask", ... or "*" (inputs only); empty if none
   // Looked up once by parse_port_type, as lowering asks for them at every port.
   ResourceKind resource = ResourceKind::texture2d;
+  // Into port_type.cpp's table, which lives as long as the program: plans may keep views of
+  // its strings.
   const std::vector<PortComponent>* layout = nullptr;  // empty for wildcards
 
   const std::vector<PortComponent>& components() const { return *layout; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <numeric>
 #include <utility>
 
 namespace lg {
@@ -51,19 +52,20 @@ class StartOffsets {
     return id;
   }
 
-  // Sorts ranges of known starts by start, one range per start ending at the furthest end of
-  // the ranges that share it; returns the new end. That is all the placer's gap scan needs: it
-  // does not care how equal starts are ordered, and sees ranges that share a start as one
-  // ending at the furthest end. Linear, with no comparisons to mispredict.
-  ByteRange* unite(ByteRange* first, ByteRange* last) {
-    for (const ByteRange* r = first; r != last; ++r) {
-      const uint32_t rank = rank_of_id_[r->start_id];
-      const uint64_t bit = uint64_t{1} << (rank % 64);
-      uint64_t& word = present_[rank / 64];
-      furthest_[rank] = word & bit ? std::max(furthest_[rank], r->end) : r->end;
-      word |= bit;
-    }
-    ByteRange* out = first;
+  // Ranges of known starts are marked one by one, then collected sorted by start, one range
+  // per start ending at the furthest end of the ranges that share it. That is all the placer's
+  // gap scan needs: it does not care how equal starts are ordered, and sees ranges that share
+  // a start as one ending at the furthest end. Linear, with no comparisons to mispredict.
+  void mark(const ByteRange& r) {
+    const uint32_t rank = rank_of_id_[r.start_id];
+    const uint64_t bit = uint64_t{1} << (rank % 64);
+    uint64_t& word = present_[rank / 64];
+    furthest_[rank] = word & bit ? std::max(furthest_[rank], r.end) : r.end;
+    word |= bit;
+  }
+
+  // Writes the marked ranges to `out` and clears the marks; returns the new end.
+  ByteRange* collect(ByteRange* out) {
     for (size_t w = 0; w < present_.size(); ++w)
       for (uint64_t bits = std::exchange(present_[w], 0); bits != 0; bits &= bits - 1) {
         const auto rank = static_cast<uint32_t>(64 * w + std::countr_zero(bits));
@@ -75,7 +77,7 @@ class StartOffsets {
  private:
   std::vector<uint64_t> sorted_;  // by rank: the offset
   std::vector<uint32_t> id_of_rank_, rank_of_id_;
-  std::vector<uint64_t> present_;   // by rank, a bit: in the list unite() is sorting
+  std::vector<uint64_t> present_;   // by rank, a bit: marked since the last collect()
   std::vector<uint64_t> furthest_;  // by rank: the furthest end in that list
 };
 
@@ -87,22 +89,28 @@ class StartOffsets {
 class StabbingTree {
  public:
   StabbingTree(int passes, const std::vector<Lifetime>& intervals)
-      : leaves_(std::max(passes, 1)), start_(2 * static_cast<size_t>(leaves_) + 1, 0) {
-    for (const Lifetime& life : intervals) for_nodes(life, [&](int node) { ++start_[node + 1]; });
+      : leaves_(std::max(passes, 1)), start_(2 * static_cast<size_t>(leaves_) + 2, 0) {
+    // Nodes 1 to 2 leaves - 1, and node 2 leaves, which an interval's right edge visits
+    // without covering.
+    for (const Lifetime& life : intervals) for_nodes(life, [&](int node, int covers) { start_[node + 1] += covers; });
     for (size_t node = 1; node < start_.size(); ++node) start_[node] += start_[node - 1];
     fill_.assign(start_.begin(), start_.end() - 1);
-    ranges_.resize(start_.back());
+    ranges_.resize(start_.back() + 1);  // the last slot takes the writes of nodes that do not cover
   }
 
   void insert(Lifetime life, ByteRange range) {
-    for_nodes(life, [&](int node) { ranges_[fill_[node]++] = range; });
+    const int scratch = static_cast<int>(ranges_.size()) - 1;
+    for_nodes(life, [&](int node, int covers) {
+      ranges_[scratch + ((fill_[node] - scratch) & -covers)] = range;  // a select the compiler keeps branch-free
+      fill_[node] += covers;
+    });
   }
 
-  // Appends the ranges alive at pass t to `out`, which has room for them; returns the new end.
-  ByteRange* stab(int t, ByteRange* out) const {
+  // Calls visit(range) for each range alive at pass t.
+  template <class F>
+  void stab(int t, F&& visit) const {
     for (int node = t + leaves_; node > 0; node /= 2)
-      out = std::copy(ranges_.begin() + start_[node], ranges_.begin() + fill_[node], out);
-    return out;
+      for (int k = start_[node]; k < fill_[node]; ++k) visit(ranges_[k]);
   }
 
  private:
@@ -111,12 +119,17 @@ class StabbingTree {
   std::vector<int> fill_;   // node -> its next free slot
   std::vector<ByteRange> ranges_;
 
-  // The nodes whose ranges together cover [first, last] exactly.
+  // Visits the nodes on both edges of [first, last], each with 1 if it is one of the nodes
+  // that together cover the interval exactly, else 0: whether a node covers follows no
+  // pattern, so the callers add and select by it instead of branching.
   template <class F>
   void for_nodes(Lifetime life, F&& visit) const {
     for (int lo = life.first + leaves_, hi = life.last + 1 + leaves_; lo < hi; lo /= 2, hi /= 2) {
-      if (lo & 1) visit(lo++);
-      if (hi & 1) visit(--hi);
+      const int lo_covers = lo & 1, hi_covers = hi & 1;
+      visit(lo, lo_covers);
+      lo += lo_covers;
+      hi -= hi_covers;
+      visit(hi, hi_covers);
     }
   }
 };
@@ -136,26 +149,28 @@ class GreedyPlacer {
         placed_(by_first.size(), 0),
         conflicts_(by_first.size()),
         starts_(by_first.size()) {
-    firsts_.reserve(by_first.size());
+    begin_after_.assign(static_cast<size_t>(std::max(passes, 1)), 0);
     for (size_t k = 0; k < by_first.size(); ++k) {
       position_[by_first[k]] = static_cast<int>(k);
-      firsts_.push_back(lives[by_first[k]].first);
+      ++begin_after_[lives[by_first[k]].first];
     }
+    std::partial_sum(begin_after_.begin(), begin_after_.end(), begin_after_.begin());
   }
 
   uint64_t place(int r, Lifetime life, uint64_t bytes, uint64_t alignment) {
     // The two sources are disjoint (first use at or before this one's, or after it) and the
     // tree holds each interval once on any root path, so nothing is counted twice: the
     // conflicts are distinct placed resources, fewer than all of them.
-    ByteRange* end = alive_.stab(life.first, conflicts_.data());
+    alive_.stab(life.first, [&](const ByteRange& range) { starts_.mark(range); });
     // Without a branch on `placed_`, which follows no pattern: each range is written, and
     // kept only if placed.
-    for (auto k = std::upper_bound(firsts_.begin(), firsts_.end(), life.first) - firsts_.begin();
-         k < static_cast<long>(firsts_.size()) && firsts_[k] <= life.last; ++k) {
+    ByteRange* end = conflicts_.data();
+    for (int k = begin_after_[life.first]; k < begin_after_[life.last]; ++k) {
       *end = ranges_[k];
       end += placed_[k];
     }
-    end = starts_.unite(conflicts_.data(), end);
+    for (const ByteRange* c = conflicts_.data(); c != end; ++c) starts_.mark(*c);
+    end = starts_.collect(conflicts_.data());
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
     for (const ByteRange* c = conflicts_.data(); c != end; ++c) {
@@ -186,7 +201,7 @@ class GreedyPlacer {
 
   StabbingTree alive_;                // holds placed ranges
   std::vector<int> position_;         // resource -> position in first-use order
-  std::vector<int> firsts_;           // by position: first use
+  std::vector<int> begin_after_;      // pass -> the first position whose first use is later
   std::vector<ByteRange> ranges_;     // by position: bytes, once placed
   std::vector<char> placed_;          // by position
   std::vector<ByteRange> conflicts_;  // room for every placed resource
@@ -202,7 +217,9 @@ class LastOwners {
   // Each take() adds at most two pieces: room for all of them up front.
   explicit LastOwners(size_t takes) { owned_.reserve(2 * takes + 1); }
 
-  void take(uint64_t start, uint64_t end, int owner, std::vector<int>& predecessors) {
+  // Gives `owner` the bytes [start, end) and appends their last owners to `list`, each once;
+  // returns how many it appended.
+  uint32_t take(uint64_t start, uint64_t end, int owner, std::vector<int>& list) {
     // Disjoint and sorted by start, so sorted by end too.
     auto first = std::partition_point(owned_.begin(), owned_.end(), [&](const Owned& o) { return o.end <= start; });
     auto last = first;
@@ -221,9 +238,10 @@ class LastOwners {
     else
       owned_.erase(owned_.begin() + at + count, owned_.begin() + at + removed);
     std::copy(pieces, pieces + count, owned_.begin() + at);
-    // Gathered apart and copied once: growing each placement's list allocates several times.
     std::sort(found_.begin(), found_.end());
-    predecessors.assign(found_.begin(), std::unique(found_.begin(), found_.end()));
+    const auto unique_end = std::unique(found_.begin(), found_.end());
+    list.insert(list.end(), found_.begin(), unique_end);
+    return static_cast<uint32_t>(unique_end - found_.begin());
   }
 
  private:
@@ -234,6 +252,38 @@ class LastOwners {
   std::vector<Owned> owned_;  // by start
   std::vector<int> found_;    // the owners one take() replaces
 };
+
+// The placing order, largest first, ties by first use, then index: `by_first` bucketed by size,
+// stably. Resources come in few sizes (frame-sized images of a handful of formats), so a hash
+// of the sizes and a counting sort over the distinct ones replace a comparison sort, whose
+// three-way key mispredicted on every other comparison.
+std::vector<int> largest_first(const std::vector<int>& by_first, const std::vector<ResourceMemory>& needs) {
+  const size_t mask = std::bit_ceil(2 * by_first.size() + 1) - 1;
+  std::vector<int> slot_size(mask + 1, -1);   // open addressing: index into `sizes`, or -1
+  std::vector<uint64_t> sizes;                // distinct, in order of first sight
+  std::vector<int> size_of(by_first.size());  // by position in by_first: index into `sizes`
+  for (size_t k = 0; k < by_first.size(); ++k) {
+    const uint64_t bytes = needs[by_first[k]].bytes;
+    size_t s = (bytes * 0x9e3779b97f4a7c15ull) >> 32 & mask;
+    while (slot_size[s] >= 0 && sizes[slot_size[s]] != bytes) s = (s + 1) & mask;
+    if (slot_size[s] < 0) {
+      slot_size[s] = static_cast<int>(sizes.size());
+      sizes.push_back(bytes);
+    }
+    size_of[k] = slot_size[s];
+  }
+  // Buckets numbered largest size first; then a counting sort, stable within each.
+  std::vector<int> largest(sizes.size()), bucket(sizes.size());
+  std::iota(largest.begin(), largest.end(), 0);
+  std::sort(largest.begin(), largest.end(), [&](int a, int b) { return sizes[a] > sizes[b]; });
+  for (size_t b = 0; b < largest.size(); ++b) bucket[largest[b]] = static_cast<int>(b);
+  std::vector<int> start(sizes.size() + 1, 0);
+  for (int& d : size_of) ++start[(d = bucket[d]) + 1];
+  for (size_t b = 0; b < sizes.size(); ++b) start[b + 1] += start[b];
+  std::vector<int> out(by_first.size());
+  for (size_t k = 0; k < by_first.size(); ++k) out[start[size_of[k]]++] = by_first[k];
+  return out;
+}
 
 }  // namespace
 
@@ -274,18 +324,6 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   uint64_t stacked = 0;  // block 0's size with aliasing off: what aliasing must never exceed
   for (int r : shared) stacked = align_up(stacked, needs[r].alignment) + needs[r].bytes;
 
-  // Largest first; sorting compact keys rather than whole resources keeps the caches warm.
-  struct Key {
-    uint64_t bytes;
-    int first, index;
-  };
-  std::vector<Key> keys;
-  keys.reserve(shared.size());
-  for (int r : shared) keys.push_back({needs[r].bytes, lifetimes[r].first, r});
-  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-    if (a.bytes != b.bytes) return a.bytes > b.bytes;
-    return a.first != b.first ? a.first < b.first : a.index < b.index;
-  });
   // By first use, ties by index: the order the placer scans and the order bytes change hands.
   // A counting sort over schedule positions (`shared` is in index order, and it is stable).
   std::vector<int> start(static_cast<size_t>(passes) + 1, 0), by_first(shared.size());
@@ -294,9 +332,9 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   for (int r : shared) by_first[start[lifetimes[r].first]++] = r;
 
   GreedyPlacer placer(passes, by_first, lifetimes);
-  for (const Key& key : keys) {
-    Placement& p = out.placements[key.index];
-    p.offset = placer.place(key.index, lifetimes[key.index], p.size, needs[key.index].alignment);
+  for (int r : largest_first(by_first, needs)) {
+    Placement& p = out.placements[r];
+    p.offset = placer.place(r, lifetimes[r], p.size, needs[r].alignment);
   }
   out.blocks[0].size = placer.size();
   if (out.blocks[0].size > stacked) {
@@ -311,9 +349,11 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   }
 
   LastOwners owners(by_first.size());
+  out.predecessors.reserve(2 * by_first.size());  // rarely more than two each: no regrowth
   for (int r : by_first) {
     Placement& p = out.placements[r];
-    owners.take(p.offset, p.offset + p.size, r, p.predecessors);
+    p.first_predecessor = static_cast<uint32_t>(out.predecessors.size());
+    p.predecessor_count = owners.take(p.offset, p.offset + p.size, r, out.predecessors);
   }
   return out;
 }
@@ -334,9 +374,9 @@ JsonValue dump_memory(const LoweredGraph& lowered, const MemoryLayout& memory) {
     place.set("block", p.block);
     place.set("offset", p.offset);
     place.set("bytes", p.size);
-    if (!p.predecessors.empty()) {
+    if (p.predecessor_count > 0) {
       JsonValue& preds = place.set("takes_over_from", JsonValue::array());
-      for (int q : p.predecessors) preds.push(lowered.resources[q].name);
+      for (int q : memory.predecessors_of(static_cast<int>(r))) preds.push(lowered.resources[q].name);
     }
   }
   return out;

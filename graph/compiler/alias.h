@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "graph/compiler/lifetimes.h"
@@ -39,12 +40,23 @@ struct Placement {
   int block = -1;  // -1: not placed (no pass touches the resource)
   uint64_t offset = 0;
   uint64_t size = 0;                      // bytes reserved (the resource's size)
-  std::vector<int> predecessors;          // resources that last held these bytes
+  // The resources that last held these bytes: a run of the layout's (or plan's) predecessor
+  // list, as one list for all placements costs one allocation, not one per resource.
+  uint32_t first_predecessor = 0, predecessor_count = 0;
 };
+
+// The run of `list` a placement's predecessors occupy.
+inline std::span<const int> predecessors_in(const std::vector<int>& list, const Placement& p) {
+  return {list.data() + p.first_predecessor, p.predecessor_count};
+}
 
 struct MemoryLayout {
   std::vector<MemoryBlock> blocks;  // [0] frame-transient, [1] persistent
   std::vector<Placement> placements;
+  std::vector<int> predecessors;  // every placement's, back to back
+  std::span<const int> predecessors_of(int resource) const {
+    return predecessors_in(predecessors, placements[resource]);
+  }
 };
 
 MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes, const AliasOptions& options);

@@ -1,27 +1,54 @@
 #include "graph/compiler/assemble.h"
 
+#include <algorithm>
+#include <unordered_map>
+
 namespace lg {
 namespace {
 
-// "in.a", built in place: one string, no temporaries.
-std::string slot_name(const NodeSchema& s, const LoweredAccess& a) {
-  std::string_view prefix, name;
-  switch (a.target) {
-    case PassUse::Target::input:
-      prefix = "in.", name = s.inputs[a.port].name;
-      break;
-    case PassUse::Target::output:
-      prefix = "out.", name = s.outputs[a.port].name;
-      break;
-    case PassUse::Target::internal:
-      prefix = "tmp.", name = s.resources[a.port].name;
-      break;
+// Interns the slot names of the plan's accesses: each (schema, port) is spelled out once, the
+// first time a pass uses it, so an access costs an index lookup instead of a string.
+class SlotNames {
+ public:
+  explicit SlotNames(std::vector<std::string>& names) : names_(names) {}
+
+  int of(const NodeSchema& s, const LoweredAccess& a) {
+    auto [base, added] = base_.try_emplace(&s, ids_.size());
+    if (added) ids_.resize(ids_.size() + s.inputs.size() + s.outputs.size() + s.resources.size(), -1);
+    const size_t at = base->second + a.port +
+                      (a.target == PassUse::Target::input    ? 0
+                       : a.target == PassUse::Target::output ? s.inputs.size()
+                                                             : s.inputs.size() + s.outputs.size());
+    if (ids_[at] < 0) ids_[at] = intern(spelled(s, a));
+    return ids_[at];
   }
-  std::string slot;
-  slot.reserve(prefix.size() + name.size());
-  slot.append(prefix).append(name);
-  return slot;
-}
+
+ private:
+  std::vector<std::string>& names_;
+  std::unordered_map<const NodeSchema*, size_t> base_;  // schema -> its first entry in ids_
+  std::vector<int> ids_;                                // per schema port: index into names_, -1 until used
+
+  static std::string spelled(const NodeSchema& s, const LoweredAccess& a) {
+    switch (a.target) {
+      case PassUse::Target::input:
+        return "in." + s.inputs[a.port].name;
+      case PassUse::Target::output:
+        return "out." + s.outputs[a.port].name;
+      case PassUse::Target::internal:
+        break;
+    }
+    return "tmp." + s.resources[a.port].name;
+  }
+
+  // Types share port names ("in.color"): one entry for each distinct name. Linear, as there
+  // are few, and each is looked up once per schema port.
+  int intern(std::string name) {
+    auto it = std::find(names_.begin(), names_.end(), name);
+    if (it != names_.end()) return static_cast<int>(it - names_.begin());
+    names_.push_back(std::move(name));
+    return static_cast<int>(names_.size()) - 1;
+  }
+};
 
 }  // namespace
 
@@ -52,13 +79,14 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }
+  SlotNames slots(plan.slots);
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
     PlanPass& pass = plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
                                               std::vector<PlanAccess>{}, lp.is_static, lp.cache_key);
     pass.accesses.reserve(lp.accesses.size());
-    for (const auto& a : lp.accesses) pass.accesses.emplace_back(a.resource, a.usage, slot_name(s, a), a.component);
+    for (const auto& a : lp.accesses) pass.accesses.emplace_back(a.resource, a.usage, slots.of(s, a), a.component);
   }
   plan.resources.reserve(lowered.resources.size());
   for (size_t r = 0; r < lowered.resources.size(); ++r) {
@@ -70,6 +98,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
   }
   plan.blocks = memory.blocks;
+  plan.predecessors = std::move(memory.predecessors);
   plan.memory.transient = memory.blocks[0].size;
   plan.memory.persistent = memory.blocks[1].size;
   plan.barriers = std::move(barriers);

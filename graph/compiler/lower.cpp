@@ -435,7 +435,7 @@ JsonValue dump_lowered(const LoweredGraph& lowered) {
   for (const auto& r : lowered.resources) {
     JsonValue& res = resources.push(JsonValue::object());
     res.set("name", r.name);
-    res.set("format", r.format);
+    res.set("format", std::string(r.format));
     JsonValue extent = JsonValue::array();
     extent.push(static_cast<int64_t>(r.width));
     extent.push(static_cast<int64_t>(r.height));

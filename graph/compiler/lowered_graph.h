@@ -7,6 +7,7 @@
 #include <memory_resource>
 #include <new>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -28,7 +29,7 @@ struct LoweredResource {
   std::string name;  // "bloom.color", "gbuf.gbuffer.depth", "bloom/chain", "gtao.ao@previous"
   int node = -1;
   ResourceKind kind = ResourceKind::texture2d;
-  std::string format;
+  std::string_view format;  // a PortComponent's, in the program-long table of port types
   bool depth_format = false;
   uint32_t width = 1, height = 1, layers = 1, mips = 1;
   uint64_t bytes = 0;

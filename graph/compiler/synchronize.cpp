@@ -146,8 +146,8 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     } else if (previous_copy[r] >= 0) {
       wait_for(previous_copy[r]);  // last frame's reads of these bytes, before this frame writes
       first.reason = BarrierReason::history;
-    } else if (!memory.placements[r].predecessors.empty()) {
-      for (int p : memory.placements[r].predecessors) wait_for(p);
+    } else if (memory.placements[r].predecessor_count > 0) {
+      for (int p : memory.predecessors_of(static_cast<int>(r))) wait_for(p);
       first.reason = BarrierReason::alias;
     }
     if (res.history_of < 0 && first.reason != BarrierReason::first_use) needed = true;

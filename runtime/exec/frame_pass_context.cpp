@@ -7,7 +7,7 @@ namespace lg {
 
 const PlanAccess* FramePassContext::find(std::string_view slot, int component) const {
   for (const PlanAccess& a : pass_.accesses)
-    if (a.slot == slot && a.component == component) return &a;
+    if (frame_.plan.slot_of(a) == slot && a.component == component) return &a;
   return nullptr;
 }
 
@@ -18,7 +18,8 @@ bool FramePassContext::has(std::string_view slot, int component) const {
 void FramePassContext::missing(std::string_view slot, int component, std::string_view what) const {
   std::string bound;
   for (const PlanAccess& a : pass_.accesses)
-    bound += (bound.empty() ? "" : ", ") + a.slot + (a.component ? "." + std::to_string(a.component) : "");
+    bound +=
+        (bound.empty() ? "" : ", ") + frame_.plan.slot_of(a) + (a.component ? "." + std::to_string(a.component) : "");
   // The executor prefixes the pass's name.
   throw ExecutorError("node '" + node().id + "' (" + node().type + ") has no " + std::string(what) + " at '" +
                       std::string(slot) + (component ? "' component " + std::to_string(component) : "'") +

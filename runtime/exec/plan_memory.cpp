@@ -41,10 +41,7 @@ std::vector<Layout> layouts_after_frame(const Plan& plan) {
 }
 
 bool bytes_taken_over(const Plan& plan, int resource) {
-  return std::any_of(plan.resources.begin(), plan.resources.end(), [&](const PlanResource& r) {
-    const auto& p = r.placement.predecessors;
-    return std::find(p.begin(), p.end(), resource) != p.end();
-  });
+  return std::find(plan.predecessors.begin(), plan.predecessors.end(), resource) != plan.predecessors.end();
 }
 
 }  // namespace lg

@@ -49,7 +49,7 @@ std::string check_memory(const Plan& plan, const AliasOptions& options) {
       fail(name(r) + ": offset " + std::to_string(p.offset) + " not aligned to " + std::to_string(need.alignment));
     if (p.offset + p.size > plan.blocks[block].size) fail(name(r) + ": ends past its block");
     end[block] = std::max(end[block], p.offset + p.size);
-    if (persistent && !p.predecessors.empty()) fail(name(r) + ": persistent but takes over bytes");
+    if (persistent && p.predecessor_count > 0) fail(name(r) + ": persistent but takes over bytes");
     if (!persistent) unaliased += need.bytes;
   }
   for (int b = 0; b < 2; ++b)
@@ -118,8 +118,9 @@ std::string check_memory(const Plan& plan, const AliasOptions& options) {
         if (holder >= 0) expected.insert(holder);
       }
     }
-    std::set<int> actual(p.predecessors.begin(), p.predecessors.end());
-    if (actual.size() != p.predecessors.size()) fail(name(r) + ": a predecessor is listed twice");
+    const auto predecessors = plan.predecessors_of(static_cast<int>(r));
+    std::set<int> actual(predecessors.begin(), predecessors.end());
+    if (actual.size() != predecessors.size()) fail(name(r) + ": a predecessor is listed twice");
     if (actual != expected) {
       std::string a, e;
       for (int q : actual) a += " " + name(q);
@@ -204,7 +205,7 @@ TEST(CompilerAliasChecker, ThousandRandomDags) {
     if (HasFailure()) break;  // one case's messages are enough to debug from
     for (const auto& r : plan.resources) {
       with_history += r.desc.history_of >= 0;
-      took_over += !r.placement.predecessors.empty();
+      took_over += r.placement.predecessor_count > 0;
     }
     ++checked;
   }
@@ -228,9 +229,8 @@ TEST(CompilerAliasChecker, DefaultExampleSharesMemory) {
   // The shadow map (16 MiB, alive for two passes) does not keep bytes to itself for the frame.
   int shadow = test::resource_at(plan, "light/shadow_map");
   bool shared = false;
-  for (const auto& r : plan.resources)
-    for (int q : r.placement.predecessors) shared |= q == shadow;
-  shared |= !plan.resources[shadow].placement.predecessors.empty();
+  for (int q : plan.predecessors) shared |= q == shadow;
+  shared |= plan.resources[shadow].placement.predecessor_count > 0;
   EXPECT_TRUE(shared);
 }
 
@@ -256,8 +256,8 @@ TEST(CompilerAliasChecker, TheCheckerCatchesBrokenPlacements) {
 
   Plan forgot = good;  // a hand-over nobody waits for
   for (auto& r : forgot.resources)
-    if (!r.placement.predecessors.empty()) {
-      r.placement.predecessors.pop_back();
+    if (r.placement.predecessor_count > 0) {
+      --r.placement.predecessor_count;
       break;
     }
   EXPECT_NE(check_memory(forgot, options).find("last holders of its bytes"), std::string::npos);

@@ -155,9 +155,9 @@ std::string check_barriers(const Plan& plan) {
       if (!runs[copy_of[r]].empty())
         for (const Use& e : runs[copy_of[r]].back())
           for (const Use& l : first) add(r, -1, e.stages, e.access, l, start_reasons, "history (current)");
-    } else if (!plan.resources[r].placement.predecessors.empty()) {
+    } else if (plan.resources[r].placement.predecessor_count > 0) {
       start_reasons = {BarrierReason::alias};
-      for (int p : plan.resources[r].placement.predecessors) {
+      for (int p : plan.predecessors_of(r)) {
         if (runs[p].empty()) {
           fail(name(r) + ": predecessor " + name(p) + " is never used");
           continue;

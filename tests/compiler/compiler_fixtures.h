@@ -188,7 +188,7 @@ inline int resource_in_slot(const Plan& plan, std::string_view pass, std::string
   int p = pass_at(plan, pass);
   if (p < 0) return -1;
   for (const auto& a : plan.passes[p].accesses)
-    if (a.slot == slot) return a.resource;
+    if (plan.slot_of(a) == slot) return a.resource;
   return -1;
 }
 

@@ -85,9 +85,9 @@ float param(const PlanNode& node, std::string_view name) {
   return v ? static_cast<float>(v->as_number()) : 0.0f;
 }
 
-bool sampled(const PlanPass& pass, std::string_view slot) {
+bool sampled(const Plan& plan, const PlanPass& pass, std::string_view slot) {
   return std::any_of(pass.accesses.begin(), pass.accesses.end(),
-                     [&](const PlanAccess& a) { return a.slot == slot && a.usage == Usage::sampled; });
+                     [&](const PlanAccess& a) { return plan.slot_of(a) == slot && a.usage == Usage::sampled; });
 }
 
 class TestKernel final : public NodeKernel {
@@ -107,7 +107,7 @@ class TestKernel final : public NodeKernel {
     float constant = param(pc.node(), "value");
     if (!step->source.empty()) {
       Image& source = pc.image(step->source);
-      const bool through_sampler = sampled(pc.pass(), step->source);
+      const bool through_sampler = sampled(pc.plan(), pc.pass(), step->source);
       shader = through_sampler ? "exec_add_sampled.comp" : "exec_add_storage.comp";
       writes.push_back(through_sampler ? sampled_image(0, source.view(), pc.nearest_sampler())
                                        : storage_image(0, source.view()));
@@ -125,7 +125,7 @@ class TestKernel final : public NodeKernel {
  private:
   static int resource_of(PassContext& pc, const std::string& slot) {
     for (const PlanAccess& a : pc.pass().accesses)
-      if (a.slot == slot) return a.resource;
+      if (pc.plan().slot_of(a) == slot) return a.resource;
     pc.image(slot);  // throws naming the slot
     return -1;
   }
