@@ -27,7 +27,7 @@ struct PlanNode {
 struct PlanAccess {
   int resource = -1;
   Usage usage = Usage::sampled;
-  int slot = -1;      // into Plan::slots: the node's port or internal resource
+  int slot = -1;      // into Plan::slot_names: the node's port or internal resource
   int component = 0;  // within a bundle (G-buffer): index into its components
 };
 
@@ -72,10 +72,10 @@ struct Plan {
   std::vector<int> predecessors;  // the placements' predecessor lists, back to back
   // Every slot name the accesses use, once: "in.color", "out.ao", "tmp.chain". A graph of
   // thousands of nodes uses a few dozen.
-  std::vector<std::string> slots;
+  std::vector<std::string> slot_names;
   MemoryTotals memory;
 
-  const std::string& slot_of(const PlanAccess& a) const { return slots[a.slot]; }
+  const std::string& slot_of(const PlanAccess& a) const { return slot_names[a.slot]; }
 
   // The resources that last held resource r's bytes.
   std::span<const int> predecessors_of(int r) const { return predecessors_in(predecessors, resources[r].placement); }

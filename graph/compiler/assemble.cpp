@@ -79,14 +79,14 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }
-  SlotNames slots(plan.slots);
+  SlotNames slot_names(plan.slot_names);
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
     PlanPass& pass = plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
                                               std::vector<PlanAccess>{}, lp.is_static, lp.cache_key);
     pass.accesses.reserve(lp.accesses.size());
-    for (const auto& a : lp.accesses) pass.accesses.emplace_back(a.resource, a.usage, slots.of(s, a), a.component);
+    for (const auto& a : lp.accesses) pass.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
   }
   plan.resources.reserve(lowered.resources.size());
   for (size_t r = 0; r < lowered.resources.size(); ++r) {
