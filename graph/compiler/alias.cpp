@@ -82,10 +82,11 @@ class StartOffsets {
 };
 
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
-// a bottom-up segment tree whose nodes hold the byte ranges of the placed intervals that cover
-// their whole range; the answer is the ranges on the path from leaf t to the root. Every
-// interval is known before any is placed, so each node's room is counted up front and all
-// ranges sit in one array, node after node: a stab reads a few contiguous runs.
+// a bottom-up segment tree whose nodes hold the placed intervals that cover their whole
+// range; the answer is the intervals on the path from leaf t to the root. Every interval is
+// known before any is placed, so each node's room is counted up front and all entries sit in
+// one array, node after node: a stab reads a few contiguous runs. An entry is the interval's
+// number (4 bytes), not its byte range: an interval sits in a dozen nodes.
 class StabbingTree {
  public:
   StabbingTree(int passes, const std::vector<Lifetime>& intervals)
@@ -95,29 +96,29 @@ class StabbingTree {
     for (const Lifetime& life : intervals) for_nodes(life, [&](int node, int covers) { start_[node + 1] += covers; });
     for (size_t node = 1; node < start_.size(); ++node) start_[node] += start_[node - 1];
     fill_.assign(start_.begin(), start_.end() - 1);
-    ranges_.resize(start_.back() + 1);  // the last slot takes the writes of nodes that do not cover
+    entries_.resize(start_.back() + 1);  // the last slot takes the writes of nodes that do not cover
   }
 
-  void insert(Lifetime life, ByteRange range) {
-    const int scratch = static_cast<int>(ranges_.size()) - 1;
+  void insert(Lifetime life, int interval) {
+    const int scratch = static_cast<int>(entries_.size()) - 1;
     for_nodes(life, [&](int node, int covers) {
-      ranges_[scratch + ((fill_[node] - scratch) & -covers)] = range;  // a select the compiler keeps branch-free
+      entries_[scratch + ((fill_[node] - scratch) & -covers)] = interval;  // a select the compiler keeps branch-free
       fill_[node] += covers;
     });
   }
 
-  // Calls visit(range) for each range alive at pass t.
+  // Calls visit(interval) for each interval alive at pass t.
   template <class F>
   void stab(int t, F&& visit) const {
     for (int node = t + leaves_; node > 0; node /= 2)
-      for (int k = start_[node]; k < fill_[node]; ++k) visit(ranges_[k]);
+      for (int k = start_[node]; k < fill_[node]; ++k) visit(entries_[k]);
   }
 
  private:
   int leaves_;
-  std::vector<int> start_;  // node -> its first slot in ranges_; start_[node + 1] ends it
+  std::vector<int> start_;  // node -> its first slot in entries_; start_[node + 1] ends it
   std::vector<int> fill_;   // node -> its next free slot
-  std::vector<ByteRange> ranges_;
+  std::vector<int> entries_;
 
   // Visits the nodes on both edges of [first, last], each with 1 if it is one of the nodes
   // that together cover the interval exactly, else 0: whether a node covers follows no
@@ -161,7 +162,7 @@ class GreedyPlacer {
     // The two sources are disjoint (first use at or before this one's, or after it) and the
     // tree holds each interval once on any root path, so nothing is counted twice: the
     // conflicts are distinct placed resources, fewer than all of them.
-    alive_.stab(life.first, [&](const ByteRange& range) { starts_.mark(range); });
+    alive_.stab(life.first, [&](int position) { starts_.mark(ranges_[position]); });
     // Without a branch on `placed_`, which follows no pattern: each range is written, and
     // kept only if placed.
     ByteRange* end = conflicts_.data();
@@ -184,7 +185,7 @@ class GreedyPlacer {
     const int k = position_[r];
     ranges_[k] = {best, best + bytes, starts_.add(best)};
     placed_[k] = 1;
-    alive_.insert(life, ranges_[k]);
+    alive_.insert(life, k);
     size_ = std::max(size_, best + bytes);
     return best;
   }
@@ -199,7 +200,7 @@ class GreedyPlacer {
     return out;
   }
 
-  StabbingTree alive_;                // holds placed ranges
+  StabbingTree alive_;                // holds placed positions
   std::vector<int> position_;         // resource -> position in first-use order
   std::vector<int> begin_after_;      // pass -> the first position whose first use is later
   std::vector<ByteRange> ranges_;     // by position: bytes, once placed
