@@ -22,13 +22,14 @@ constexpr double max_length = 1e6, max_power = 1e9;
 
 const std::vector<std::string> entity_keys = {
     "name",       "parent",     "transform",         "model",           "shape",
-    "material",   "camera",     "directional_light", "point_light",     "sphere_light",
-    "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
+    "material",   "occlusion",  "camera",            "directional_light", "point_light",
+    "sphere_light", "tube_light", "rect_light",      "irradiance_volume", "reflection_probe"};
 
 class SceneFileReader {
  public:
-  SceneFileReader(World& world, const std::string& path, const AssetRoots& roots, Diagnostics& d)
-      : world_(world), path_(path), roots_(roots), d_(d) {}
+  SceneFileReader(World& world, const std::string& path, const AssetRoots& roots,
+                  const OcclusionBakeReader& read_occlusion, Diagnostics& d)
+      : world_(world), path_(path), roots_(roots), read_occlusion_(read_occlusion), d_(d) {}
 
   void read(const JsonValue& root) {
     JsonFields top(root, "", "a scene file", {"format", "name", "materials", "environment", "post", "entities"}, d_);
@@ -50,6 +51,7 @@ class SceneFileReader {
   World& world_;
   const std::string& path_;
   const AssetRoots& roots_;
+  const OcclusionBakeReader& read_occlusion_;
   Diagnostics& d_;
   std::map<std::string, int> materials_;    // name -> world material
   std::map<std::string, Entity> entities_;  // name -> entity, for "parent"
@@ -124,6 +126,7 @@ class SceneFileReader {
       world_.add<MeshRenderer>(e, {make_shape(*shape, f.pointer("shape")), material});
     else if (f.get("material"))
       f.error_at("material", "a material needs a 'model' or a 'shape' to apply to");
+    if (const JsonValue* bake = f.get("occlusion")) attach_occlusion(f, *bake, e);
     components(f, e);
   }
 
@@ -226,6 +229,42 @@ class SceneFileReader {
           return;
         }
     });
+  }
+
+  // The entity's baked occlusion, read by read_occlusion_ for the meshes it draws (its own and
+  // its model's, in draw order: entity order, as make_scene_view() sorts draws).
+  void attach_occlusion(const JsonFields& f, const JsonValue& v, Entity e) {
+    const JsonValue* source = f.get("model") ? f.get("model") : f.get("shape");
+    if (!source) return f.error_at("occlusion", "'occlusion' needs a 'model' or a 'shape' to apply to");
+    const std::string bake = asset(f, "occlusion", v, {".lgbake"});
+    if (bake.empty()) return;
+    const std::string what = source->is_string() ? "model '" + source->as_string() + "'" : "this entity's shape";
+    if (!read_occlusion_)
+      return f.error_at("occlusion", "'" + v.as_string() +
+                                         "' cannot be read here: this program loads worlds "
+                                         "without an occlusion bake reader (WorldLoadOptions::read_occlusion)");
+    std::vector<std::pair<uint32_t, int>> drawn;  // entity index, mesh
+    world_.each<MeshRenderer>([&](Entity d, const MeshRenderer& r) {
+      for (Entity a = d; !a.is_null(); a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
+        if (a == e) {
+          drawn.emplace_back(d.index, r.mesh);
+          return;
+        }
+    });
+    std::sort(drawn.begin(), drawn.end());
+    std::vector<const MeshData*> meshes;
+    for (const auto& [index, mesh] : drawn) {
+      if (mesh < 0) return;  // the shape or model already reported its error
+      meshes.push_back(&world_.meshes()[size_t(mesh)]);
+    }
+    std::vector<std::shared_ptr<const MeshOcclusion>> baked;
+    try {
+      baked = read_occlusion_(bake, meshes);
+    } catch (const std::exception& error) {
+      return f.error_at("occlusion", "'" + v.as_string() + "' for " + what + ": " + error.what());
+    }
+    for (size_t m = 0; m < drawn.size() && m < baked.size(); ++m)
+      world_.edit_mesh(drawn[m].second).occlusion = baked[m];
   }
 
   int make_shape(const JsonValue& v, const std::string& p) {
@@ -363,10 +402,10 @@ class SceneFileReader {
 };
 
 World read_world(const std::optional<JsonValue>& root, const std::string& path, const AssetRoots& roots,
-                 Diagnostics& d) {
+                 const OcclusionBakeReader& read_occlusion, Diagnostics& d) {
   World world;
   world.name = std::filesystem::path(path).stem().string();
-  if (root) SceneFileReader(world, path, roots, d).read(*root);
+  if (root) SceneFileReader(world, path, roots, read_occlusion, d).read(*root);
   if (d.has_errors()) {
     d.sort_by_position();
     throw SceneError(std::move(d));
@@ -376,16 +415,17 @@ World read_world(const std::optional<JsonValue>& root, const std::string& path, 
 
 }  // namespace
 
-World load_scene_file(const std::string& path, const AssetRoots& roots) {
+World load_scene_file(const std::string& path, const AssetRoots& roots, const OcclusionBakeReader& read_occlusion) {
   Diagnostics d(path);
   auto root = read_json_file(path, d);
-  return read_world(root, path, roots, d);
+  return read_world(root, path, roots, read_occlusion, d);
 }
 
-World parse_scene_file(std::string_view text, const std::string& path, const AssetRoots& roots) {
+World parse_scene_file(std::string_view text, const std::string& path, const AssetRoots& roots,
+                       const OcclusionBakeReader& read_occlusion) {
   Diagnostics d(path);
   auto root = read_json(text, d);
-  return read_world(root, path, roots, d);
+  return read_world(root, path, roots, read_occlusion, d);
 }
 
 }  // namespace lg
