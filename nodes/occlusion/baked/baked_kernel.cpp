@@ -152,15 +152,17 @@ class BakedKernel final : public NodeKernel {
       vkCmdDraw(cmd, bake->corner_count, 1, 0, 0);
     }
     vkCmdEndRendering(cmd);
-    drawn_frame_ = ctx.frame_index();
   }
 
   void resolve(PassContext& ctx) {
     Image& ao = ctx.image("out.ao");
-    const uint32_t drawn = drawn_frame_ == ctx.frame_index() ? 1u : 0u;
+    // Without the drawing pass (no baked mesh: the plan dropped it and tmp.baked with it) the
+    // shader reads nothing at binding 2; the G-buffer normal stands in so that it binds.
+    const uint32_t drawn = ctx.has("tmp.baked") ? 1u : 0u;
+    Image& baked = drawn ? ctx.image("tmp.baked") : ctx.image("in.gbuffer", 1);
     const DescriptorWrite writes[] = {sampled_image(0, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
                                       sampled_image(1, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-                                      sampled_image(2, ctx.image("tmp.baked").view(), ctx.nearest_sampler()),
+                                      sampled_image(2, baked.view(), ctx.nearest_sampler()),
                                       storage_image(3, ao.view()),
                                       storage_image(4, ctx.image("out.bent_normals").view())};
     dispatch_compute(ctx, "nodes/occlusion/baked/shaders/baked_resolve.comp", writes, ao.desc().width, ao.desc().height,
@@ -191,7 +193,7 @@ class BakedKernel final : public NodeKernel {
   }
 
   bool cull_backfaces_;
-  std::optional<uint64_t> uploaded_version_, drawn_frame_;
+  std::optional<uint64_t> uploaded_version_;
   std::vector<MeshBake> meshes_;  // per SceneView::meshes entry
   std::optional<HostBuffer> camera_, draws_, baked_draws_, vertex_occlusion_, lightmaps_;
 };
