@@ -56,7 +56,8 @@ struct BakeRequest {
   BakeMode mode = BakeMode::vertex;
   int rays = 64;
   float max_distance = std::numeric_limits<float>::infinity();
-  uint32_t resolution = 0;  // texel: the lightmap's side; volume: points on the longest axis
+  uint32_t resolution = 0;   // texel: the lightmap's side; volume: points on the longest axis
+  uint32_t chunk_count = 1;  // > 1: chunk 0 of this many
 };
 
 // What `lumagraph bake INPUT --out OUT` writes (the .lgbake alone), through the library.
@@ -67,7 +68,7 @@ void bake(const fs::path& input, const fs::path& out, const BakeRequest& request
                                                               : BakeDomain::volume(mesh, {request.resolution, 0, 0});
   const OcclusionSettings settings{.rays = request.rays, .max_distance = request.max_distance};
   BakeFile file;
-  file.header = make_bake_header(domain, mesh, input.string(), settings, 1, 0, 1);
+  file.header = make_bake_header(domain, mesh, input.string(), settings, 1, 0, request.chunk_count);
   if (request.mode == BakeMode::texel) file.lightmap_uvs = domain.lightmap_uvs();
   file.data = run_bake(RayScene(mesh.positions, mesh.indices), domain, settings, 1, file.header.range);
   write_bake_file(out.string(), file);
@@ -269,7 +270,8 @@ TEST(BakedOcclusion, TexelBakeMatchesItsLightmapLookup) {
 }
 
 // (3) Bakes that do not belong to the model: of another mesh (a triangle), of the same counts but
-// other positions (the bunny with one vertex moved), of a volume, and one chunk of a bake.
+// other positions (the bunny with one vertex moved), of a volume, one chunk of a bake; and a
+// world with a bake loaded by a program without a bake reader.
 TEST(BakedOcclusion, BakeOfOtherGeometryIsRefusedAtLoad) {
   SKIP_WITHOUT_BUNNY();
   const fs::path triangle = test_dir() / "triangle.obj";
@@ -303,6 +305,10 @@ TEST(BakedOcclusion, BakeOfOtherGeometryIsRefusedAtLoad) {
   error = load_error(bunny_world("volume", "bunny-volume.lgbake"));
   EXPECT_NE(error.find("is a volume bake"), std::string::npos) << error;
   EXPECT_NE(error.find("occlusion.bake node"), std::string::npos) << error;
+
+  bake(bunny_obj(), test_dir() / "bunny-chunk.lgbake", {.mode = BakeMode::vertex, .rays = 4, .chunk_count = 2});
+  error = load_error(bunny_world("chunk", "bunny-chunk.lgbake"));
+  EXPECT_NE(error.find("is chunk 0 of 2; merge the chunks first"), std::string::npos) << error;
 
   WorldLoadOptions no_reader;
   no_reader.asset_roots.roots = {test_dir().string(), shared_data().string()};

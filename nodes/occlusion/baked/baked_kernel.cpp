@@ -9,6 +9,8 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "nodes/common/camera_constants.h"
@@ -17,6 +19,7 @@
 #include "nodes/common/node_shaders.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/context.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
@@ -95,6 +98,13 @@ class BakedKernel final : public NodeKernel {
       out.corners->write(corners);
       out.corner_count = uint32_t(corners.size());
     }
+    const uint64_t limit = ctx.gpu().properties().limits.maxStorageBufferRange;
+    for (const auto& [what, bytes] : {std::pair{"vertex bakes", vertices.size() * sizeof(glm::vec4)},
+                                      std::pair{"lightmaps", texels.size() * sizeof(glm::vec4)}})
+      if (bytes > limit)
+        throw std::invalid_argument("the scene's " + std::string(what) + " take " + std::to_string(bytes >> 20) +
+                                    " MiB, more than the device's storage buffers hold (" +
+                                    std::to_string(limit >> 20) + " MiB): bake smaller lightmaps");
     vertex_occlusion_->write(vertices);
     lightmaps_->write(texels);
     uploaded_version_ = scene.version;
