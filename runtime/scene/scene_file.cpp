@@ -252,6 +252,10 @@ class SceneFileReader {
         }
     });
     std::sort(drawn.begin(), drawn.end());
+    if (drawn.empty()) {  // a model that failed to load has said so already
+      if (!d_.has_errors()) f.error_at("occlusion", "'occlusion' needs meshes to apply to; the model draws none");
+      return;
+    }
     std::vector<const MeshData*> meshes;
     for (const auto& [index, mesh] : drawn) {
       if (mesh < 0) return;  // the shape or model already reported its error

@@ -26,6 +26,7 @@
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
 #include "runtime/scene/scene_error.h"
+#include "runtime/scene/scene_file.h"
 #include "tests/occlusion/ao_render.h"
 #include "tests/occlusion/occlusion_worlds.h"
 
@@ -318,6 +319,26 @@ TEST(BakedOcclusion, BakeOfOtherGeometryIsRefusedAtLoad) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("without an occlusion bake reader"), std::string::npos) << e.what();
   }
+}
+
+// The key's own errors, each at its place: no model or shape to apply to, not a bake's extension.
+TEST(BakedOcclusion, TheSceneKeyIsChecked) {
+  WorldLoadOptions options;
+  options.read_occlusion = read_occlusion_bake;
+  const std::string path = (test_dir() / "keys.json").string();
+  auto error_of = [&](const std::string& entity) {
+    try {
+      parse_scene_file(R"({"format": "lumagraph-world/1", "entities": [)" + entity + "]}", path, {},
+                       options.read_occlusion);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(loaded)");
+  };
+  EXPECT_EQ(error_of(R"({"occlusion": "a.lgbake"})"),
+            path + ":1:60: error: 'occlusion' needs a 'model' or a 'shape' to apply to (/entities/0/occlusion)");
+  EXPECT_NE(error_of(R"({"shape": {"type": "sphere"}, "occlusion": "a.vti"})").find("(/entities/0/occlusion)"),
+            std::string::npos);
 }
 
 // (4) The example graph (occlusion.baked into lighting.ibl) on a baked bunny with Vulkan
