@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "graph/json_reader.h"
 #include "graph/spelling.h"
@@ -32,7 +33,8 @@ class SceneFileReader {
       : world_(world), path_(path), roots_(roots), read_occlusion_(read_occlusion), d_(d) {}
 
   void read(const JsonValue& root) {
-    JsonFields top(root, "", "a scene file", {"format", "name", "materials", "environment", "post", "entities"}, d_);
+    JsonFields top(root, "", "a scene file",
+                   {"format", "name", "materials", "environment", "post", "entities", "occlusion"}, d_);
     if (!top.is_object()) return;
     if (const JsonValue* f = top.get("format"); !f || !f->is_string() || f->as_string() != world_format)
       top.error_at("format", std::string("expected \"format\": \"") + world_format + "\"");
@@ -45,6 +47,7 @@ class SceneFileReader {
       if (!list->is_array()) return top.error_at("entities", "'entities' must be an array of objects");
       for (size_t i = 0; i < list->items().size(); ++i) entity(list->items()[i], json_pointer_append("/entities", i));
     }
+    if (const JsonValue* bake = top.get("occlusion")) attach_scene_occlusion(top, *bake);
   }
 
  private:
@@ -231,44 +234,79 @@ class SceneFileReader {
     });
   }
 
-  // The entity's baked occlusion, read by read_occlusion_ for the meshes it draws (its own and
-  // its model's, in draw order: entity order, as make_scene_view() sorts draws).
+  // An entity's "occlusion": a bake of its model (or shape) alone, for the meshes it draws (its
+  // own and its model's) in their own space.
   void attach_occlusion(const JsonFields& f, const JsonValue& v, Entity e) {
     const JsonValue* source = f.get("model") ? f.get("model") : f.get("shape");
     if (!source) return f.error_at("occlusion", "'occlusion' needs a 'model' or a 'shape' to apply to");
+    std::vector<Drawn> drawn = drawn_by([&](Entity d) {
+      for (Entity a = d; !a.is_null(); a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
+        if (a == e) return true;
+      return false;
+    });
+    for (Drawn& d : drawn) d.world = glm::mat4(1.0f);
+    read_bake(f, v, drawn, source->is_string() ? "model '" + source->as_string() + "'" : "this entity's shape");
+  }
+
+  // The file's own "occlusion": a bake of this scene file, every draw where it stands.
+  void attach_scene_occlusion(const JsonFields& f, const JsonValue& v) {
+    if (d_.has_errors()) return;  // the geometry it is checked against must be whole
+    std::vector<Drawn> drawn = drawn_by([](Entity) { return true; });
+    for (const Drawn& d : drawn)
+      if (world_.meshes()[size_t(d.mesh)].occlusion)
+        return f.error_at("occlusion", "an entity has an 'occlusion' of its own, and the scene file's bake covers "
+                                       "every draw: give one or the other");
+    read_bake(f, v, drawn, "this scene file");
+  }
+
+  struct Drawn {
+    uint32_t entity_index;
+    int mesh;
+    glm::mat4 world;
+  };
+
+  // The draws whose entity passes `wanted`, in draw order (entity order, as make_scene_view()
+  // sorts them), with their world matrices.
+  template <class Wanted>
+  std::vector<Drawn> drawn_by(Wanted wanted) {
+    std::vector<Drawn> drawn;
+    world_.each<MeshRenderer>([&](Entity d, const MeshRenderer& r) {
+      if (wanted(d)) drawn.push_back({d.index, r.mesh, world_.world_matrix(d)});
+    });
+    std::sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) { return a.entity_index < b.entity_index; });
+    return drawn;
+  }
+
+  // Reads the bake `v` names for the draws `drawn` (their meshes with these transforms) and
+  // attaches it to their meshes; `what` names them in errors.
+  void read_bake(const JsonFields& f, const JsonValue& v, const std::vector<Drawn>& drawn, const std::string& what) {
     const std::string bake = asset(f, "occlusion", v, {".lgbake"});
     if (bake.empty()) return;
-    const std::string what = source->is_string() ? "model '" + source->as_string() + "'" : "this entity's shape";
     if (!read_occlusion_)
       return f.error_at("occlusion", "'" + v.as_string() +
                                          "' cannot be read here: this program loads worlds "
                                          "without an occlusion bake reader (WorldLoadOptions::read_occlusion)");
-    std::vector<std::pair<uint32_t, int>> drawn;  // entity index, mesh
-    world_.each<MeshRenderer>([&](Entity d, const MeshRenderer& r) {
-      for (Entity a = d; !a.is_null(); a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
-        if (a == e) {
-          drawn.emplace_back(d.index, r.mesh);
-          return;
-        }
-    });
-    std::sort(drawn.begin(), drawn.end());
     if (drawn.empty()) {  // a model that failed to load has said so already
-      if (!d_.has_errors()) f.error_at("occlusion", "'occlusion' needs meshes to apply to; the model draws none");
+      if (!d_.has_errors()) f.error_at("occlusion", "'occlusion' needs meshes to apply to; " + what + " draws none");
       return;
     }
     std::vector<const MeshData*> meshes;
-    for (const auto& [index, mesh] : drawn) {
-      if (mesh < 0) return;  // the shape or model already reported its error
-      meshes.push_back(&world_.meshes()[size_t(mesh)]);
+    std::vector<glm::mat4> transforms;
+    std::set<int> seen;
+    for (const Drawn& d : drawn) {
+      if (d.mesh < 0) return;  // the shape or model already reported its error
+      if (!seen.insert(d.mesh).second)
+        return f.error_at("occlusion", "a mesh of " + what + " is drawn twice; a bake belongs to one draw of it");
+      meshes.push_back(&world_.meshes()[size_t(d.mesh)]);
+      transforms.push_back(d.world);
     }
     std::vector<std::shared_ptr<const MeshOcclusion>> baked;
     try {
-      baked = read_occlusion_(bake, meshes);
+      baked = read_occlusion_(bake, meshes, transforms);
     } catch (const std::exception& error) {
       return f.error_at("occlusion", "'" + v.as_string() + "' for " + what + ": " + error.what());
     }
-    for (size_t m = 0; m < drawn.size() && m < baked.size(); ++m)
-      world_.edit_mesh(drawn[m].second).occlusion = baked[m];
+    for (size_t m = 0; m < drawn.size() && m < baked.size(); ++m) world_.edit_mesh(drawn[m].mesh).occlusion = baked[m];
   }
 
   int make_shape(const JsonValue& v, const std::string& p) {

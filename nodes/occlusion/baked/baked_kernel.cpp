@@ -6,6 +6,7 @@
 // that into ao and bent normals (shaders/baked_resolve.comp).
 #include "nodes/occlusion/baked/baked_kernel.h"
 
+#include <glm/mat3x3.hpp>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -34,6 +35,7 @@ enum BakeKind : uint32_t { no_bake = 0, vertex_bake = 1, texel_bake = 2 };  // s
 
 struct BakedDraw {  // shaders/baked_draw.glsl
   uint32_t kind = no_bake, vertex_base = 0, lightmap_base = 0, lightmap_size = 0;
+  glm::mat4 lightmap_to_world{1.0f};
 };
 
 // A mesh's bake on the device: where its data starts, and for texel bakes the vertex buffer
@@ -122,11 +124,18 @@ class BakedKernel final : public NodeKernel {
       baked_draws_.emplace(ctx.gpu(), ctx.node().id + " baked draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     }
     camera_->write_value(camera_constants(scene.camera, w, h));
-    draws_->write(draw_constants(scene));
+    const std::vector<DrawConstants> draws = draw_constants(scene);
+    draws_->write(draws);
     std::vector<BakedDraw> baked_draws;
-    for (const DrawItem& d : scene.draws)
-      baked_draws.push_back(d.mesh >= 0 && size_t(d.mesh) < meshes_.size() ? meshes_[size_t(d.mesh)].draw
-                                                                           : BakedDraw{});
+    for (size_t i = 0; i < scene.draws.size(); ++i) {
+      const int mesh = scene.draws[i].mesh;
+      BakedDraw& b = baked_draws.emplace_back();
+      if (mesh < 0 || size_t(mesh) >= meshes_.size()) continue;
+      b = meshes_[size_t(mesh)].draw;
+      if (b.kind == texel_bake)
+        b.lightmap_to_world =
+            glm::mat4(glm::mat3(draws[i].normal_matrix) * scene.meshes[size_t(mesh)].occlusion->lightmap_to_mesh);
+    }
     baked_draws_->write(baked_draws);
 
     VkRenderingAttachmentInfo color = cleared_attachment(baked.view(), {.color = {{0.0f, 0.0f, 0.0f, -1.0f}}});

@@ -35,6 +35,7 @@ BakedSample baked_occlusion_at(const MeshData& mesh, const glm::dmat4& world, ui
     glm::dvec2 uv(0.0);
     for (int c = 0; c < 3; ++c) uv += barycentric[c] * glm::dvec2(occlusion.lightmap_uvs[3 * triangle + c]);
     value = lightmap_bilinear(*occlusion.lightmap, uv);
+    value = glm::dvec4(glm::dmat3(occlusion.lightmap_to_mesh) * glm::dvec3(value), value.w);
   }
   BakedSample s;
   s.ao = std::clamp(value.w, 0.0, 1.0);

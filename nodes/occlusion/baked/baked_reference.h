@@ -2,7 +2,8 @@
 // draw whose mesh carries baked occlusion. Vertex bakes interpolate k_A and the bent normal
 // (turned by the draw's normal matrix, then normalised) with the point's barycentrics; texel
 // bakes interpolate the corners' lightmap UVs and sample the lightmap bilinearly (texel centres
-// at (i + 0.5) / size, indices clamped to the edge). The cone cosine is sqrt(1 - k_A), GTAO's.
+// at (i + 0.5) / size, indices clamped to the edge), the bent normal taken to mesh space by
+// lightmap_to_mesh, then likewise. The cone cosine is sqrt(1 - k_A), GTAO's.
 #pragma once
 
 #include <array>

@@ -14,6 +14,7 @@ struct BakedDraw {
   uint vertex_base;
   uint lightmap_base;
   uint lightmap_size;
+  mat4 lightmap_to_world;  // texel: the normal matrix times the lightmap's bake-to-mesh matrix
 };
 
 layout(std430, binding = 2) readonly buffer BakedDraws { BakedDraw baked_draws[]; };

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Writes the nearest surface's bake: the interpolated vertex bake, or the lightmap sampled
 // bilinearly (texel centres at (i + 0.5) / size, indices clamped to the edge; the bake's padding
-// texels keep chart edges right), its bent normal turned by the normal matrix and normalised.
+// texels keep chart edges right), its bent normal turned to world space and normalised.
 // Surfaces without a bake write w = -1. Mirrored in double by nodes/occlusion/baked/baked_reference.h.
 #include "nodes/occlusion/baked/shaders/baked_draw.glsl"
 
@@ -34,7 +34,7 @@ void main() {
   vec4 v = vertex_bake;
   if (b.kind == kTexelBake) {
     v = lightmap_bilinear(b, lightmap_uv);
-    v.xyz = mat3(draws[draw_index].normal_matrix) * v.xyz;
+    v.xyz = mat3(b.lightmap_to_world) * v.xyz;
   }
   float len = length(v.xyz);
   vec3 n = normalize(world_normal);
