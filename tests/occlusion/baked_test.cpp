@@ -427,6 +427,30 @@ TEST(BakedOcclusion, SceneBakeMatchesItsLookupAndSeesTheContact) {
         name.c_str(), e.mean_absolute, e.p95, e.mean_signed, e.pixels, bunny_mae, bunny_pixels);
     EXPECT_LE(e.mean_absolute, 0.07);
   }
+
+  // The bunny moved since the bake: the scene's geometry hash differs. And a world may not have
+  // both a scene bake and an entity's.
+  const fs::path moved = bunny_world("scene-moved", "scene-vertex.lgbake", bunny_obj(), BakeKey::scene);
+  std::stringstream text;
+  text << std::ifstream(moved).rdbuf();
+  std::string edited = text.str();
+  edited.replace(edited.find("0.2, -0.33, 0"), 13, "0.3, -0.33, 0");
+  std::ofstream(moved) << edited;
+  std::string error = load_error(moved);
+  EXPECT_NE(error.find(moved.string() + ":2:"), std::string::npos) << error;
+  EXPECT_NE(error.find("'scene-vertex.lgbake' for this scene file: "), std::string::npos) << error;
+  EXPECT_NE(error.find("scene-input.json', whose geometry hash"), std::string::npos) << error;
+
+  const fs::path both = bunny_world("scene-both", "scene-vertex.lgbake", bunny_obj(), BakeKey::scene);
+  text.str("");
+  text << std::ifstream(both).rdbuf();
+  edited = text.str();
+  edited.replace(edited.find(R"("material": "porcelain")"), 23,
+                 R"("material": "porcelain", "occlusion": "bunny-own.lgbake")");
+  std::ofstream(both) << edited;
+  bake(bunny_obj(), test_dir() / "bunny-own.lgbake", {.mode = BakeMode::vertex, .rays = 4});
+  error = load_error(both);
+  EXPECT_NE(error.find("an entity has an 'occlusion' of its own"), std::string::npos) << error;
 }
 
 // The example world's committed bake (examples/worlds/bakes/bunny.lgbake, made by the command in
