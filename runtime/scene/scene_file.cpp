@@ -253,7 +253,7 @@ class SceneFileReader {
     if (d_.has_errors()) return;  // the geometry it is checked against must be whole
     std::vector<Drawn> drawn = drawn_by([](Entity) { return true; });
     for (const Drawn& d : drawn)
-      if (world_.meshes()[size_t(d.mesh)].occlusion)
+      if (world_.meshes()[size_t(d.mesh)]->occlusion)
         return f.error_at("occlusion", "an entity has an 'occlusion' of its own, and the scene file's bake covers "
                                        "every draw: give one or the other");
     read_bake(f, v, drawn, "this scene file");
@@ -297,7 +297,7 @@ class SceneFileReader {
       if (d.mesh < 0) return;  // the shape or model already reported its error
       if (!seen.insert(d.mesh).second)
         return f.error_at("occlusion", "a mesh of " + what + " is drawn twice; a bake belongs to one draw of it");
-      meshes.push_back(&world_.meshes()[size_t(d.mesh)]);
+      meshes.push_back(world_.meshes()[size_t(d.mesh)].get());
       transforms.push_back(d.world);
     }
     std::vector<std::shared_ptr<const MeshOcclusion>> baked;

@@ -128,7 +128,7 @@ struct DrawOfPrimitive {
     uint32_t triangles = 0;
     for (const DrawItem& d : view.draws) {
       first_triangle.push_back(triangles);
-      triangles += uint32_t(view.meshes[size_t(d.mesh)].indices.size() / 3);
+      triangles += uint32_t(view.mesh_of(d).indices.size() / 3);
     }
   }
   size_t operator()(uint32_t primitive) const {
@@ -151,7 +151,7 @@ double bunny_pixels_mae(const AoRender& r, const AoImage& reference, size_t* pix
       const auto hit = scene.intersect(glm::vec3(camera.eye()), glm::vec3(camera.ray_direction(x, y)),
                                        std::numeric_limits<float>::infinity());
       if (!hit || std::isnan(reference.visibility[i])) continue;
-      if (r.view.meshes[size_t(r.view.draws[draw_of(hit->primitive)].mesh)].name != "bunny") continue;
+      if (r.view.mesh_of(r.view.draws[draw_of(hit->primitive)]).name != "bunny") continue;
       sum += std::abs(r.last_ao[4 * i] - reference.visibility[i]);
       ++n;
     }
@@ -193,7 +193,7 @@ Comparison compare_with_cpu(const AoRender& r, double edge_margin) {
           glm::dvec3(camera.world_from_view() * glm::dvec4(camera.view_position(x + 0.5, y + 0.5, depth), 1.0));
       if (glm::length(seen - point) > 1e-3 * hit->distance) continue;  // a silhouette: another surface
       const size_t draw = draw_of(hit->primitive);
-      const MeshData& mesh = view.meshes[size_t(view.draws[draw].mesh)];
+      const MeshData& mesh = view.mesh_of(view.draws[draw]);
       if (!mesh.occlusion) continue;
       const auto corners = scene.triangle(hit->primitive);
       const glm::dvec3 bary =
@@ -260,7 +260,7 @@ TEST(BakedOcclusion, VertexBakeMatchesItsInterpolationAndRayTracing) {
   // triangles and 64-ray Monte Carlo noise.
   SceneView bunny_only = r.view;
   bunny_only.draws.erase(std::remove_if(bunny_only.draws.begin(), bunny_only.draws.end(),
-                                        [&](const DrawItem& d) { return !r.view.meshes[size_t(d.mesh)].occlusion; }),
+                                        [&](const DrawItem& d) { return !r.view.mesh_of(d).occlusion; }),
                          bunny_only.draws.end());
   const AoImage own = trace_scene_reference(bunny_only, RayScene(bunny_only), {kWidth, kHeight},
                                             AoSettings{.rays = 128, .max_distance = 0.5, .falloff_from = 1.0});
@@ -465,10 +465,10 @@ TEST(BakedOcclusion, ExampleWorldLoadsWithItsBake) {
   const SceneView view = make_scene_view(world, 16.0f / 9.0f);
   EXPECT_TRUE(view.summary().baked_occlusion);
   size_t baked = 0;
-  for (const MeshData& mesh : view.meshes)
-    if (mesh.occlusion) {
-      EXPECT_EQ(mesh.occlusion->kind, MeshOcclusion::Kind::vertex);
-      EXPECT_EQ(mesh.occlusion->vertices.size(), mesh.positions.size());
+  for (const auto& mesh : view.meshes)
+    if (mesh->occlusion) {
+      EXPECT_EQ(mesh->occlusion->kind, MeshOcclusion::Kind::vertex);
+      EXPECT_EQ(mesh->occlusion->vertices.size(), mesh->positions.size());
       ++baked;
     }
   EXPECT_EQ(baked, 1u);

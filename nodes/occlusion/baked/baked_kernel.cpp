@@ -68,8 +68,8 @@ class BakedKernel final : public NodeKernel {
     meshes_.clear();
     meshes_.resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
-      const MeshData& mesh = scene.meshes[m];
-      if (!mesh.occlusion) continue;
+      if (!scene.meshes[m] || !scene.meshes[m]->occlusion) continue;
+      const MeshData& mesh = *scene.meshes[m];
       const MeshOcclusion& bake = *mesh.occlusion;
       MeshBake& out = meshes_[m];
       if (bake.kind == MeshOcclusion::Kind::vertex) {
@@ -134,7 +134,7 @@ class BakedKernel final : public NodeKernel {
       b = meshes_[size_t(mesh)].draw;
       if (b.kind == texel_bake)
         b.lightmap_to_world =
-            glm::mat4(glm::mat3(draws[i].normal_matrix) * scene.meshes[size_t(mesh)].occlusion->lightmap_to_mesh);
+            glm::mat4(glm::mat3(draws[i].normal_matrix) * scene.meshes[size_t(mesh)]->occlusion->lightmap_to_mesh);
     }
     baked_draws_->write(baked_draws);
 

@@ -20,7 +20,7 @@ WorldMesh baked_geometry(std::span<const MeshData* const> meshes, std::span<cons
   SceneView view;
   for (size_t m = 0; m < meshes.size(); ++m) {
     view.draws.push_back({.mesh = int(view.meshes.size()), .world = transforms[m]});
-    view.meshes.push_back(*meshes[m]);
+    view.meshes.emplace_back(std::shared_ptr<void>(), meshes[m]);  // aliased: the caller keeps them
   }
   return make_world_mesh(view);
 }
