@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <limits>
 
 #include "cli/args.h"
@@ -45,6 +46,8 @@ options:
   --chunk I/N           bake only chunk I of N (0 <= I < N): a contiguous range of the points;
                         merge the N part files with `lumagraph bake merge`
   --out PATH            the output file (required)
+  --asset-root DIR      allow the scene file's paths under DIR (repeatable); the bakes a scene
+                        file already names ("occlusion") are not read: a bake traces geometry
 
 `bake merge PART... --out PATH` checks that the parts are all the chunks of one bake, each
 once, and writes the whole bake, byte-identical to a single run with the same options.
@@ -55,9 +58,10 @@ exit status: 0 baked, 1 usage error, 2 invalid input (mesh, scene or part files)
 constexpr int exit_write = 3;
 
 ArgSpec bake_arg_spec() {
-  return {{"--help"},
-          {"--mode", "--rays", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out"},
-          {}};
+  return {
+      {"--help"},
+      {"--mode", "--rays", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out", "--asset-root"},
+      {"--asset-root"}};
 }
 
 bool parse_unsigned(const std::string& text, uint64_t max, uint64_t& value) {
@@ -179,6 +183,19 @@ int merge_command(const std::vector<std::string>& parts, const std::string& out)
   return exit_ok;
 }
 
+// A scene file's paths may point into its folder and every --asset-root. Its "occlusion" keys are
+// accepted unread: baking traces geometry, and baking a scene again must not need its old bakes.
+WorldLoadOptions world_load_options(const Args& args, const std::string& input) {
+  WorldLoadOptions options;
+  options.asset_roots.roots = args.values("--asset-root");
+  if (!options.asset_roots.roots.empty())
+    options.asset_roots.roots.push_back(std::filesystem::absolute(input).parent_path().string());
+  options.read_occlusion = [](const std::string&, std::span<const MeshData* const>, std::span<const glm::mat4>) {
+    return std::vector<std::shared_ptr<const MeshOcclusion>>{};
+  };
+  return options;
+}
+
 }  // namespace
 
 int bake_command(const std::vector<std::string>& argv) {
@@ -203,7 +220,7 @@ int bake_command(const std::vector<std::string>& argv) {
   std::optional<BakeDomain> domain;
   std::optional<RayScene> scene;
   try {
-    mesh = make_world_mesh(make_scene_view(load_world(input), 1.0f));
+    mesh = make_world_mesh(make_scene_view(load_world(input, world_load_options(*args, input)), 1.0f));
     if (options.mode == BakeMode::vertex) domain = BakeDomain::vertices(mesh);
     if (options.mode == BakeMode::texel) domain = BakeDomain::lightmap(mesh, options.resolution[0]);
     if (options.mode == BakeMode::volume) domain = BakeDomain::volume(mesh, options.resolution);

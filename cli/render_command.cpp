@@ -9,6 +9,7 @@
 #include "cli/dump_outputs.h"
 #include "cli/graph_input.h"
 #include "graph/json_writer.h"
+#include "nodes/occlusion/baked/occlusion_bake_reader.h"
 #include "runtime/image/image_file.h"
 #include "runtime/scene/default_world.h"
 #include "runtime/scene/load_world.h"
@@ -49,9 +50,11 @@ ArgSpec render_arg_spec() {
           {"--asset-root"}};
 }
 
-// A scene file's paths may point into its own folder and into every --asset-root.
+// A scene file's paths may point into its own folder and into every --asset-root; its meshes'
+// "occlusion" bakes are read and checked against them.
 WorldLoadOptions scene_load_options(const Args& args) {
   WorldLoadOptions options;
+  options.read_occlusion = read_occlusion_bake;
   options.asset_roots.roots = args.values("--asset-root");
   if (!options.asset_roots.roots.empty())
     options.asset_roots.roots.push_back(std::filesystem::absolute(*args.value("--scene")).parent_path().string());

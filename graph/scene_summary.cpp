@@ -12,7 +12,8 @@ namespace {
 constexpr std::array<std::string_view, static_cast<size_t>(SceneFeature::count)> feature_names = {
     "directional_lights", "point_lights",       "sphere_lights",     "tube_lights",
     "rectangle_lights",   "area_lights",        "shadow_casting_lights", "environment_light",
-    "irradiance_volumes", "reflection_probes",  "glossy_materials",  "thin_lens_camera"};
+    "irradiance_volumes", "reflection_probes",  "glossy_materials",  "thin_lens_camera",
+    "baked_occlusion"};
 
 // One field of the summary file: where it lives and how it is read.
 struct Field {
@@ -65,6 +66,7 @@ const std::vector<Field>& fields() {
       {"probes", "irradiance_volumes", count_field(&SceneSummary::irradiance_volumes)},
       {"probes", "reflection_probes", count_field(&SceneSummary::reflection_probes)},
       {"materials", "glossy", bool_field(&SceneSummary::glossy_materials)},
+      {"occlusion", "baked", bool_field(&SceneSummary::baked_occlusion)},
       {"camera", "aperture", length_field(&SceneSummary::aperture)},
       {"camera", "focus_distance", length_field(&SceneSummary::focus_distance)},
   };
@@ -93,6 +95,7 @@ std::string scene_lacks_reason(SceneFeature f) {
     case SceneFeature::reflection_probes: return "the scene has no reflection probes";
     case SceneFeature::glossy_materials: return "the scene has no glossy materials";
     case SceneFeature::thin_lens_camera: return "the camera is a pinhole (aperture 0): nothing is out of focus";
+    case SceneFeature::baked_occlusion: return "no mesh in the scene carries baked occlusion";
     case SceneFeature::count: break;
   }
   return "the scene lacks what this node needs";
@@ -112,6 +115,7 @@ bool SceneSummary::has(SceneFeature f) const {
     case SceneFeature::reflection_probes: return reflection_probes > 0;
     case SceneFeature::glossy_materials: return glossy_materials;
     case SceneFeature::thin_lens_camera: return aperture > 0;
+    case SceneFeature::baked_occlusion: return baked_occlusion;
     case SceneFeature::count: break;
   }
   return false;
@@ -144,7 +148,7 @@ std::optional<SceneSummary> scene_summary_from_json(const JsonValue& root, Diagn
     for (const auto& f : fields()) is_section |= f.section == key;
     if (!is_section) {
       diagnostics.error(value.pos(), pointer,
-                        "unknown key '" + key + "'; expected format, name, lights, environment, probes, materials or camera");
+                        "unknown key '" + key + "'; expected format, name, lights, environment, probes, materials, occlusion or camera");
       continue;
     }
     if (!value.is_object()) {

@@ -26,6 +26,7 @@ enum class SceneFeature : uint8_t {
   reflection_probes,
   glossy_materials,
   thin_lens_camera,
+  baked_occlusion,  // a drawn mesh carries occlusion baked offline (a scene file's "occlusion")
   count
 };
 
@@ -45,6 +46,7 @@ struct SceneSummary {
   int irradiance_volumes = 0;
   int reflection_probes = 0;
   bool glossy_materials = true;
+  bool baked_occlusion = false;
   double aperture = 0;  // lens aperture diameter in metres; 0 is a pinhole camera
   double focus_distance = 5;
 

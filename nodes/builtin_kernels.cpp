@@ -9,6 +9,7 @@
 #include "nodes/lighting/deferred/deferred_kernel.h"
 #include "nodes/lighting/ibl/ibl_kernel.h"
 #include "nodes/occlusion/bake/bake_kernel.h"
+#include "nodes/occlusion/baked/baked_kernel.h"
 #include "nodes/occlusion/gtao/gtao_kernel.h"
 #include "nodes/occlusion/ssao/ssao_kernel.h"
 #include "nodes/post/bloom/bloom_kernel.h"
@@ -31,6 +32,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("lighting.deferred", make_deferred_kernel);
     r.add("lighting.ibl", make_ibl_kernel);
     r.add("occlusion.bake", make_bake_kernel);
+    r.add("occlusion.baked", make_baked_kernel);
     r.add("occlusion.gtao", make_gtao_kernel);
     r.add("occlusion.ssao", make_ssao_kernel);
     r.add("post.bloom", make_bloom_kernel);

@@ -59,7 +59,7 @@ void add_viewing_defaults(World& world) {
 
 World load_world(const std::string& path, const WorldLoadOptions& options) {
   std::string ext = lower_extension(path);
-  if (ext == ".json") return load_scene_file(path, options.asset_roots);
+  if (ext == ".json") return load_scene_file(path, options.asset_roots, options.read_occlusion);
   if (ext != ".gltf" && ext != ".glb" && ext != ".obj")
     throw SceneError(path, "unknown kind of world file '" + ext + "'; expected .json, .gltf, .glb or .obj");
   World world;

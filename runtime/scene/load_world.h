@@ -7,12 +7,16 @@
 #include <string>
 
 #include "graph/asset_paths.h"
+#include "runtime/scene/mesh_occlusion.h"
 #include "runtime/scene/world.h"
 
 namespace lg {
 
 struct WorldLoadOptions {
   AssetRoots asset_roots;  // where a scene file's paths may point; empty: the scene file's folder
+  // Reads the .lgbake files a scene file's "occlusion" keys name; unset, such a key is an error.
+  // The nodes provide one: lg::read_occlusion_bake (nodes/occlusion/baked/occlusion_bake_reader.h).
+  OcclusionBakeReader read_occlusion;
 };
 
 World load_world(const std::string& path, const WorldLoadOptions& options = {});

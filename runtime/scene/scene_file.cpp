@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "graph/json_reader.h"
 #include "graph/spelling.h"
@@ -22,16 +23,18 @@ constexpr double max_length = 1e6, max_power = 1e9;
 
 const std::vector<std::string> entity_keys = {
     "name",       "parent",     "transform",         "model",           "shape",
-    "material",   "camera",     "directional_light", "point_light",     "sphere_light",
-    "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
+    "material",   "occlusion",  "camera",            "directional_light", "point_light",
+    "sphere_light", "tube_light", "rect_light",      "irradiance_volume", "reflection_probe"};
 
 class SceneFileReader {
  public:
-  SceneFileReader(World& world, const std::string& path, const AssetRoots& roots, Diagnostics& d)
-      : world_(world), path_(path), roots_(roots), d_(d) {}
+  SceneFileReader(World& world, const std::string& path, const AssetRoots& roots,
+                  const OcclusionBakeReader& read_occlusion, Diagnostics& d)
+      : world_(world), path_(path), roots_(roots), read_occlusion_(read_occlusion), d_(d) {}
 
   void read(const JsonValue& root) {
-    JsonFields top(root, "", "a scene file", {"format", "name", "materials", "environment", "post", "entities"}, d_);
+    JsonFields top(root, "", "a scene file",
+                   {"format", "name", "materials", "environment", "post", "entities", "occlusion"}, d_);
     if (!top.is_object()) return;
     if (const JsonValue* f = top.get("format"); !f || !f->is_string() || f->as_string() != world_format)
       top.error_at("format", std::string("expected \"format\": \"") + world_format + "\"");
@@ -44,12 +47,14 @@ class SceneFileReader {
       if (!list->is_array()) return top.error_at("entities", "'entities' must be an array of objects");
       for (size_t i = 0; i < list->items().size(); ++i) entity(list->items()[i], json_pointer_append("/entities", i));
     }
+    if (const JsonValue* bake = top.get("occlusion")) attach_scene_occlusion(top, *bake);
   }
 
  private:
   World& world_;
   const std::string& path_;
   const AssetRoots& roots_;
+  const OcclusionBakeReader& read_occlusion_;
   Diagnostics& d_;
   std::map<std::string, int> materials_;    // name -> world material
   std::map<std::string, Entity> entities_;  // name -> entity, for "parent"
@@ -124,6 +129,7 @@ class SceneFileReader {
       world_.add<MeshRenderer>(e, {make_shape(*shape, f.pointer("shape")), material});
     else if (f.get("material"))
       f.error_at("material", "a material needs a 'model' or a 'shape' to apply to");
+    if (const JsonValue* bake = f.get("occlusion")) attach_occlusion(f, *bake, e);
     components(f, e);
   }
 
@@ -226,6 +232,81 @@ class SceneFileReader {
           return;
         }
     });
+  }
+
+  // An entity's "occlusion": a bake of its model (or shape) alone, for the meshes it draws (its
+  // own and its model's) in their own space.
+  void attach_occlusion(const JsonFields& f, const JsonValue& v, Entity e) {
+    const JsonValue* source = f.get("model") ? f.get("model") : f.get("shape");
+    if (!source) return f.error_at("occlusion", "'occlusion' needs a 'model' or a 'shape' to apply to");
+    std::vector<Drawn> drawn = drawn_by([&](Entity d) {
+      for (Entity a = d; !a.is_null(); a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
+        if (a == e) return true;
+      return false;
+    });
+    for (Drawn& d : drawn) d.world = glm::mat4(1.0f);
+    read_bake(f, v, drawn, source->is_string() ? "model '" + source->as_string() + "'" : "this entity's shape");
+  }
+
+  // The file's own "occlusion": a bake of this scene file, every draw where it stands.
+  void attach_scene_occlusion(const JsonFields& f, const JsonValue& v) {
+    if (d_.has_errors()) return;  // the geometry it is checked against must be whole
+    std::vector<Drawn> drawn = drawn_by([](Entity) { return true; });
+    for (const Drawn& d : drawn)
+      if (world_.meshes()[size_t(d.mesh)]->occlusion)
+        return f.error_at("occlusion", "an entity has an 'occlusion' of its own, and the scene file's bake covers "
+                                       "every draw: give one or the other");
+    read_bake(f, v, drawn, "this scene file");
+  }
+
+  struct Drawn {
+    uint32_t entity_index;
+    int mesh;
+    glm::mat4 world;
+  };
+
+  // The draws whose entity passes `wanted`, in draw order (entity order, as make_scene_view()
+  // sorts them), with their world matrices.
+  template <class Wanted>
+  std::vector<Drawn> drawn_by(Wanted wanted) {
+    std::vector<Drawn> drawn;
+    world_.each<MeshRenderer>([&](Entity d, const MeshRenderer& r) {
+      if (wanted(d)) drawn.push_back({d.index, r.mesh, world_.world_matrix(d)});
+    });
+    std::sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) { return a.entity_index < b.entity_index; });
+    return drawn;
+  }
+
+  // Reads the bake `v` names for the draws `drawn` (their meshes with these transforms) and
+  // attaches it to their meshes; `what` names them in errors.
+  void read_bake(const JsonFields& f, const JsonValue& v, const std::vector<Drawn>& drawn, const std::string& what) {
+    const std::string bake = asset(f, "occlusion", v, {".lgbake"});
+    if (bake.empty()) return;
+    if (!read_occlusion_)
+      return f.error_at("occlusion", "'" + v.as_string() +
+                                         "' cannot be read here: this program loads worlds "
+                                         "without an occlusion bake reader (WorldLoadOptions::read_occlusion)");
+    if (drawn.empty()) {  // a model that failed to load has said so already
+      if (!d_.has_errors()) f.error_at("occlusion", "'occlusion' needs meshes to apply to; " + what + " draws none");
+      return;
+    }
+    std::vector<const MeshData*> meshes;
+    std::vector<glm::mat4> transforms;
+    std::set<int> seen;
+    for (const Drawn& d : drawn) {
+      if (d.mesh < 0) return;  // the shape or model already reported its error
+      if (!seen.insert(d.mesh).second)
+        return f.error_at("occlusion", "a mesh of " + what + " is drawn twice; a bake belongs to one draw of it");
+      meshes.push_back(world_.meshes()[size_t(d.mesh)].get());
+      transforms.push_back(d.world);
+    }
+    std::vector<std::shared_ptr<const MeshOcclusion>> baked;
+    try {
+      baked = read_occlusion_(bake, meshes, transforms);
+    } catch (const std::exception& error) {
+      return f.error_at("occlusion", "'" + v.as_string() + "' for " + what + ": " + error.what());
+    }
+    for (size_t m = 0; m < drawn.size() && m < baked.size(); ++m) world_.edit_mesh(drawn[m].mesh).occlusion = baked[m];
   }
 
   int make_shape(const JsonValue& v, const std::string& p) {
@@ -363,10 +444,10 @@ class SceneFileReader {
 };
 
 World read_world(const std::optional<JsonValue>& root, const std::string& path, const AssetRoots& roots,
-                 Diagnostics& d) {
+                 const OcclusionBakeReader& read_occlusion, Diagnostics& d) {
   World world;
   world.name = std::filesystem::path(path).stem().string();
-  if (root) SceneFileReader(world, path, roots, d).read(*root);
+  if (root) SceneFileReader(world, path, roots, read_occlusion, d).read(*root);
   if (d.has_errors()) {
     d.sort_by_position();
     throw SceneError(std::move(d));
@@ -376,16 +457,17 @@ World read_world(const std::optional<JsonValue>& root, const std::string& path, 
 
 }  // namespace
 
-World load_scene_file(const std::string& path, const AssetRoots& roots) {
+World load_scene_file(const std::string& path, const AssetRoots& roots, const OcclusionBakeReader& read_occlusion) {
   Diagnostics d(path);
   auto root = read_json_file(path, d);
-  return read_world(root, path, roots, d);
+  return read_world(root, path, roots, read_occlusion, d);
 }
 
-World parse_scene_file(std::string_view text, const std::string& path, const AssetRoots& roots) {
+World parse_scene_file(std::string_view text, const std::string& path, const AssetRoots& roots,
+                       const OcclusionBakeReader& read_occlusion) {
   Diagnostics d(path);
   auto root = read_json(text, d);
-  return read_world(root, path, roots, d);
+  return read_world(root, path, roots, read_occlusion, d);
 }
 
 }  // namespace lg

@@ -37,6 +37,8 @@ SceneSummary SceneView::summary() const {
   for (const auto& d : draws) {
     const PbrMaterial& m = material_of(d);
     s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f;
+    s.baked_occlusion |= d.mesh >= 0 && size_t(d.mesh) < meshes.size() && meshes[size_t(d.mesh)] &&
+                         meshes[size_t(d.mesh)]->occlusion;
   }
   s.aperture = camera.aperture;
   s.focus_distance = camera.focus_distance;

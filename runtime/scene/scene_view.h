@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "graph/scene_summary.h"
+#include "runtime/scene/mesh_occlusion.h"
 
 namespace lg {
 
@@ -30,9 +31,10 @@ namespace lg {
 struct MeshData {
   std::string name;
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;  // one per position, unit length
-  std::vector<glm::vec2> uvs;      // empty, or one per position
-  std::vector<uint32_t> indices;   // three per triangle
+  std::vector<glm::vec3> normals;                  // one per position, unit length
+  std::vector<glm::vec2> uvs;                      // empty, or one per position
+  std::vector<uint32_t> indices;                   // three per triangle
+  std::shared_ptr<const MeshOcclusion> occlusion;  // baked offline, or null (mesh_occlusion.h)
 };
 
 // An RGBA8 texture in sRGB (base colour) as decoded from a file, rows top to bottom.
@@ -138,7 +140,8 @@ struct SceneView {
 
   // What the compiler specializes on: counts of each light kind, probes, glossy materials
   // (any drawn with roughness below 0.9 or any metal; a draw without a material counts as the
-  // default PbrMaterial), the camera's aperture and focus.
+  // default PbrMaterial), whether any drawn mesh carries baked occlusion, the camera's aperture
+  // and focus.
   SceneSummary summary() const;
 };
 

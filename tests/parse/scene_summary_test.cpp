@@ -138,7 +138,7 @@ TEST(ParseSceneSummary, EveryWrongKeyAndValueIsReportedWithItsPlace) {
                           "scene.json:6:28: error: expected true or false (/materials/glossy)",
                           "scene.json:7:37: error: " + count + " (/probes/irradiance_volumes)",
                           "scene.json:8:10: error: unknown key 'sky'; expected format, name, lights, environment, probes, "
-                          "materials or camera (/sky)",
+                          "materials, occlusion or camera (/sky)",
                           "scene.json:9:11: error: expected a string (/name)",
                       }));
 }

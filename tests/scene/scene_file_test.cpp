@@ -266,7 +266,7 @@ TEST(SceneFile, AssetRootsAllowPathsOutsideTheScenesFolder) {
   std::string model = fs::relative(fs::path(data_dir()) / "cube.obj", dir).string();
   std::ofstream(scene) << R"({"format": "lumagraph-world/1", "entities": [{"model": ")" << model << R"("}]})";
   EXPECT_THROW(load_world(scene), SceneError);
-  World w = load_world(scene, {AssetRoots{{dir.string(), data_dir()}}});
+  World w = load_world(scene, {AssetRoots{{dir.string(), data_dir()}}, {}});
   EXPECT_EQ(w.count<MeshRenderer>(), 2u);
 }
 
@@ -277,6 +277,11 @@ TEST(SceneFile, ExampleWorldsLoad) {
   size_t loaded = 0;
   for (const auto& entry : fs::directory_iterator(examples)) {
     if (entry.path().extension() != ".json") continue;
+    if (entry.path().stem().string().ends_with("-baked")) {
+      // Its "occlusion" bakes need the nodes' reader: tests/occlusion/baked_test.cpp loads it.
+      std::cout << "skipping " << entry.path() << ": it carries occlusion bakes\n";
+      continue;
+    }
     bool needs_shared = entry.path().stem() == "stanford-bunny";
     if (needs_shared && !fs::exists(shared / "mesh" / "bunny.obj")) {
       std::cout << "skipping " << entry.path() << ": no " << shared << "\n";

@@ -1,12 +1,12 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
-#include <glm/matrix.hpp>
 #include <optional>
 #include <vector>
 
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
@@ -17,22 +17,6 @@
 
 namespace lg {
 namespace {
-
-struct DrawConstants {  // nodes/scene/gbuffer/shaders/draw.glsl
-  glm::mat4 world, previous_world, normal_matrix;
-  glm::vec4 base_color, material;
-};
-
-std::vector<DrawConstants> draw_constants(const SceneView& scene) {
-  std::vector<DrawConstants> out;
-  out.reserve(scene.draws.size());
-  for (const DrawItem& d : scene.draws) {
-    const PbrMaterial& m = scene.material_of(d);
-    out.push_back({d.world, d.previous_world, glm::mat4(glm::transpose(glm::inverse(glm::mat3(d.world)))), m.base_color,
-                   glm::vec4(m.roughness, m.metalness, 0.0f, 0.0f)});
-  }
-  return out;
-}
 
 class GbufferKernel final : public NodeKernel {
  public:
