@@ -6,7 +6,7 @@
 //
 //   lg::Renderer renderer;                          // its own Vulkan device (or the host's)
 //   renderer.load_graph("graphs/deferred.json");    // throws GraphError with every error
-//   lg::World world = lg::load_world("level.json");
+//   lg::World world = lg::load_world("level.json", lg::renderer_world_options("level.json"));
 //   for (;;) {
 //     renderer.render(world, {1920, 1080});         // one frame; returns its stats
 //     VkImage image = renderer.output_image().handle();  // in output_layout()

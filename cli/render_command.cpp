@@ -5,11 +5,11 @@
 #include <filesystem>
 
 #include "api/renderer.h"
+#include "api/world_loading.h"
 #include "cli/commands.h"
 #include "cli/dump_outputs.h"
 #include "cli/graph_input.h"
 #include "graph/json_writer.h"
-#include "nodes/occlusion/baked/occlusion_bake_reader.h"
 #include "runtime/image/image_file.h"
 #include "runtime/scene/default_world.h"
 #include "runtime/scene/load_world.h"
@@ -48,17 +48,6 @@ ArgSpec render_arg_spec() {
   return {{"--help", "--validate", "--no-alias"},
           {"--scene", "--env", "--size", "--frames", "--out", "--dump", "--stats", "--device", "--asset-root"},
           {"--asset-root"}};
-}
-
-// A scene file's paths may point into its own folder and into every --asset-root; its meshes'
-// "occlusion" bakes are read and checked against them.
-WorldLoadOptions scene_load_options(const Args& args) {
-  WorldLoadOptions options;
-  options.read_occlusion = read_occlusion_bake;
-  options.asset_roots.roots = args.values("--asset-root");
-  if (!options.asset_roots.roots.empty())
-    options.asset_roots.roots.push_back(std::filesystem::absolute(*args.value("--scene")).parent_path().string());
-  return options;
 }
 
 // Points every env.load node at `path`, and allows its folder as an asset root.
@@ -114,7 +103,10 @@ int render_command(const std::vector<std::string>& argv) {
 
   World world;
   try {
-    world = args->value("--scene") ? load_world(*args->value("--scene"), scene_load_options(*args)) : default_world();
+    world = args->value("--scene")
+                ? load_world(*args->value("--scene"),
+                             renderer_world_options(*args->value("--scene"), args->values("--asset-root")))
+                : default_world();
   } catch (const SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid;

@@ -34,10 +34,15 @@ int main(int argc, char** argv) {
   args.addOption(select);
   const QCommandLineOption no_preview(QStringLiteral("no-preview"), QStringLiteral("Do not render a live preview."));
   args.addOption(no_preview);
-  const QCommandLineOption scene(QStringLiteral("scene"),
-                                 QStringLiteral("Preview on this scene file, glTF or OBJ (default: the built-in world)."),
-                                 QStringLiteral("FILE"));
+  const QCommandLineOption scene(
+      QStringLiteral("scene"), QStringLiteral("Preview on this scene file, glTF or OBJ (default: the built-in world)."),
+      QStringLiteral("FILE"));
   args.addOption(scene);
+  const QCommandLineOption asset_root(QStringLiteral("asset-root"),
+                                      QStringLiteral("A folder the scene file's paths may point into, besides its own "
+                                                     "(repeat for more)."),
+                                      QStringLiteral("DIR"));
+  args.addOption(asset_root);
   args.process(app);
   const QStringList files = args.positionalArguments();
   const bool shoot = args.isSet(screenshot);
@@ -48,7 +53,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   window.show();
-  if (!args.isSet(no_preview)) window.set_preview(std::make_unique<lg::editor::RuntimePreview>(args.value(scene).toStdString()));
+  if (!args.isSet(no_preview)) {
+    std::vector<std::string> roots;
+    for (const QString& root : args.values(asset_root)) roots.push_back(root.toStdString());
+    window.set_preview(std::make_unique<lg::editor::RuntimePreview>(args.value(scene).toStdString(), roots));
+  }
   if (!shoot) {
     if (files.isEmpty()) window.offer_recovery({});
     return app.exec();

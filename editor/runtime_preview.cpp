@@ -4,9 +4,9 @@
 #include <exception>
 
 #include "api/renderer.h"
+#include "api/world_loading.h"
 #include "runtime/gpu/format.h"
 #include "runtime/scene/default_world.h"
-#include "runtime/scene/load_world.h"
 
 namespace lg::editor {
 namespace {
@@ -39,14 +39,16 @@ Graph graph_showing(Graph graph, const PreviewPort& port) {
   return graph;
 }
 
-RuntimePreview::RuntimePreview(std::string scene) : scene_(std::move(scene)) {}
+RuntimePreview::RuntimePreview(std::string scene, std::vector<std::string> asset_roots)
+    : scene_(std::move(scene)), asset_roots_(std::move(asset_roots)) {}
 RuntimePreview::~RuntimePreview() = default;
 
 PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) {
   try {
     if (!renderer_) {
       renderer_ = std::make_unique<Renderer>();
-      world_ = std::make_unique<World>(scene_.empty() ? default_world() : load_world(scene_));
+      world_ = std::make_unique<World>(
+          scene_.empty() ? default_world() : load_world(scene_, renderer_world_options(scene_, asset_roots_)));
     }
     renderer_->set_graph(graph_showing(graph, port));
     const FrameSize frame{uint32_t(std::max(size.width(), 16)), uint32_t(std::max(size.height(), 16))};

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "editor/preview.h"
 
@@ -21,14 +22,16 @@ namespace lg::editor {
 
 class RuntimePreview : public PreviewRenderer {
  public:
-  // `scene`: a file for runtime/scene/load_world.h; empty: the embedded default world.
-  explicit RuntimePreview(std::string scene = {});
+  // `scene`: a file for runtime/scene/load_world.h, whose paths may point into its own folder
+  // and into `asset_roots`; empty: the embedded default world.
+  explicit RuntimePreview(std::string scene = {}, std::vector<std::string> asset_roots = {});
   ~RuntimePreview() override;
   PreviewImage render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) override;
 
  private:
   std::unique_ptr<Renderer> renderer_;  // made on first use, on the thread that renders
   std::string scene_;
+  std::vector<std::string> asset_roots_;
   std::unique_ptr<World> world_;
 };
 

@@ -15,7 +15,8 @@ namespace lg {
 struct WorldLoadOptions {
   AssetRoots asset_roots;  // where a scene file's paths may point; empty: the scene file's folder
   // Reads the .lgbake files a scene file's "occlusion" keys name; unset, such a key is an error.
-  // The nodes provide one: lg::read_occlusion_bake (nodes/occlusion/baked/occlusion_bake_reader.h).
+  // The nodes provide one: lg::read_occlusion_bake (nodes/occlusion/baked/occlusion_bake_reader.h),
+  // which lg::renderer_world_options (api/world_loading.h) sets.
   OcclusionBakeReader read_occlusion;
 };
 
