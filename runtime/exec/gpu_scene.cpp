@@ -1,15 +1,24 @@
 #include "runtime/exec/gpu_scene.h"
 
+#include <cstddef>
 #include <span>
 #include <stdexcept>
 #include <string>
 
 #include "runtime/gpu/format.h"
+#include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/texel_codec.h"
 #include "runtime/gpu/transfer.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
+
+void use_gpu_vertices(GraphicsPipelineDesc& desc) {
+  desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
+                            {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
+                            {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
+}
 namespace {
 
 constexpr VkFormat texture_format = VK_FORMAT_R8G8B8A8_SRGB;

@@ -17,6 +17,7 @@ namespace lg {
 
 class Context;
 class Submitter;
+struct GraphicsPipelineDesc;
 struct MeshData;
 struct SceneView;
 struct TextureData;
@@ -28,6 +29,10 @@ struct GpuVertex {
   float uv[2];
 };
 static_assert(sizeof(GpuVertex) == 32);
+
+// Sets a pipeline's vertex input to GpuVertex buffers: position, normal and uv at locations 0,
+// 1 and 2 of binding 0.
+void use_gpu_vertices(GraphicsPipelineDesc& desc);
 
 // A mesh without vertices has no buffers (null handles) and counts of 0.
 struct GpuMesh {

@@ -154,10 +154,7 @@ class RasterKernel final : public NodeKernel {
     desc.name = "exec_mesh";
     desc.vertex_shader = test_shader("exec_mesh.vert");
     desc.fragment_shader = test_shader("exec_mesh.frag");
-    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
-                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
-                              {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
+    use_gpu_vertices(desc);
     desc.color_formats = {target.desc().format};
     const Pipeline& p = pc.pipelines().graphics(desc);
     VkRenderingAttachmentInfo color = cleared_attachment(target.view());

@@ -199,10 +199,7 @@ class BakedKernel final : public NodeKernel {
                      {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                      {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     desc.push_constant_bytes = sizeof(uint32_t);
-    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
-                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
-                              {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
+    use_gpu_vertices(desc);
     desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
     desc.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // as the G-buffer pass
     desc.color_formats.push_back(baked.desc().format);

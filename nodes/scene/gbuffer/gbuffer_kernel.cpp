@@ -73,10 +73,7 @@ class GbufferKernel final : public NodeKernel {
                      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                      {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
     desc.push_constant_bytes = sizeof(uint32_t);
-    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
-                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
-                              {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)}};
+    use_gpu_vertices(desc);
     // Meshes wind counter-clockwise seen from outside; the projection flips y for Vulkan, which
     // keeps that winding counter-clockwise in framebuffer terms.
     desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
