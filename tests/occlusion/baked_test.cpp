@@ -159,6 +159,27 @@ double bunny_pixels_mae(const AoRender& r, const AoImage& reference, size_t* pix
   return n ? sum / n : 0.0;
 }
 
+struct RayTracedError {
+  AoError all;
+  double bunny_mae = 0;
+};
+
+// The rendered ao against 128-ray ray-traced AO of the whole scene (rays end at 0.5 m), over
+// every pixel and over the bunny's alone, printed as `what`'s.
+RayTracedError against_ray_tracing(const AoRender& r, const std::string& what) {
+  const AoImage reference = trace_scene_reference(r.view, RayScene(r.view), {kWidth, kHeight},
+                                                  AoSettings{.rays = 128, .max_distance = 0.5, .falloff_from = 1.0});
+  RayTracedError out{error_against(reference, r.last_ao)};
+  size_t bunny_pixels = 0;
+  out.bunny_mae = bunny_pixels_mae(r, reference, &bunny_pixels);
+  std::printf(
+      "%s against ray tracing: MAE %.4f  p95 %.4f  max %.3f  bias %+.4f  (%zu pixels); on the bunny's pixels MAE "
+      "%.4f (%zu pixels)\n",
+      what.c_str(), out.all.mean_absolute, out.all.p95, out.all.max, out.all.mean_signed, out.all.pixels, out.bunny_mae,
+      bunny_pixels);
+  return out;
+}
+
 struct Comparison {
   size_t compared = 0, sky = 0;
   double ao_max = 0, bent_max = 0, cone_max = 0;
@@ -232,8 +253,9 @@ void expect_matches_cpu(const Comparison& c, const char* what) {
 // as GTAO's radius in its accuracy test) matches its CPU interpolation, and against the
 // ray-traced reference (128 rays, the same 0.5 m, a hit within it occluding fully) its error is
 // printed for every pixel and for the bunny's alone. The bake does not see the floor (it is of
-// the bunny alone), so the contact between them is where it errs; measured MAE 0.0?? over all
-// pixels; 0.06 bounds it with margin (GTAO "high" measures 0.036 here at 1280x720).
+// the bunny alone), so the contact between them is where it errs: measured MAE 0.082 over all
+// pixels and 0.077 over the bunny's; 0.10 bounds both with margin (GTAO "high" measures 0.036
+// here at 1280x720).
 TEST(BakedOcclusion, VertexBakeMatchesItsInterpolationAndRayTracing) {
   SKIP_WITHOUT_BUNNY();
   bake(bunny_obj(), test_dir() / "bunny-vertex.lgbake", {.mode = BakeMode::vertex, .rays = 64, .max_distance = 0.05f});
@@ -242,17 +264,9 @@ TEST(BakedOcclusion, VertexBakeMatchesItsInterpolationAndRayTracing) {
   EXPECT_EQ(r.validation_messages, 0u);
   expect_matches_cpu(compare_with_cpu(r, 0.0), "vertex bake");
 
-  const AoImage reference = trace_scene_reference(r.view, RayScene(r.view), {kWidth, kHeight},
-                                                  AoSettings{.rays = 128, .max_distance = 0.5, .falloff_from = 1.0});
-  const AoError e = error_against(reference, r.last_ao);
-  size_t bunny_pixels = 0;
-  const double bunny_mae = bunny_pixels_mae(r, reference, &bunny_pixels);
-  std::printf(
-      "vertex bake (64 rays) against ray tracing: MAE %.4f  p95 %.4f  max %.3f  bias %+.4f  (%zu pixels); "
-      "on the bunny's pixels MAE %.4f (%zu pixels)\n",
-      e.mean_absolute, e.p95, e.max, e.mean_signed, e.pixels, bunny_mae, bunny_pixels);
-  EXPECT_LE(e.mean_absolute, 0.10);
-  EXPECT_LE(bunny_mae, 0.10);
+  const RayTracedError e = against_ray_tracing(r, "vertex bake (64 rays)");
+  EXPECT_LE(e.all.mean_absolute, 0.10);
+  EXPECT_LE(e.bunny_mae, 0.10);
 
   // The same against a reference that traces only what the bake traced, the bunny: the primary
   // rays still hit what the frame shows (pixels whose ray misses the bunny stay out), only the
@@ -416,16 +430,7 @@ TEST(BakedOcclusion, SceneBakeMatchesItsLookupAndSeesTheContact) {
     const AoRender r = render_occlusion(world, kWidth, kHeight, kBakedNode);
     EXPECT_EQ(r.validation_messages, 0u);
     expect_matches_cpu(compare_with_cpu(r, mode == BakeMode::texel ? 0.02 : 0.0), name.c_str());
-    const AoImage reference = trace_scene_reference(r.view, RayScene(r.view), {kWidth, kHeight},
-                                                    AoSettings{.rays = 128, .max_distance = 0.5, .falloff_from = 1.0});
-    const AoError e = error_against(reference, r.last_ao);
-    size_t bunny_pixels = 0;
-    const double bunny_mae = bunny_pixels_mae(r, reference, &bunny_pixels);
-    std::printf(
-        "%s against ray tracing: MAE %.4f  p95 %.4f  bias %+.4f  (%zu pixels); on the bunny's pixels MAE %.4f "
-        "(%zu pixels)\n",
-        name.c_str(), e.mean_absolute, e.p95, e.mean_signed, e.pixels, bunny_mae, bunny_pixels);
-    EXPECT_LE(e.mean_absolute, 0.07);
+    EXPECT_LE(against_ray_tracing(r, name).all.mean_absolute, 0.07);
   }
 
   // The bunny moved since the bake: the scene's geometry hash differs. And a world may not have
