@@ -60,8 +60,8 @@ class ShaderModule {
 };
 
 // Set 0 (push descriptors) and the push constant range; the pipeline itself is made by the caller.
-Pipeline make_layout(const Context& context, const std::vector<DescriptorBinding>& bindings, uint32_t push_constant_bytes,
-                     VkShaderStageFlags stages, VkPipelineBindPoint bind_point) {
+Pipeline make_layout(const Context& context, const std::vector<DescriptorBinding>& bindings,
+                     uint32_t push_constant_bytes, VkShaderStageFlags stages, VkPipelineBindPoint bind_point) {
   Pipeline p;
   p.bind_point = bind_point;
   p.stages = stages;
@@ -112,6 +112,17 @@ void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
   const VkRect2D scissor{{0, 0}, {width, height}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+VkRenderingInfo rendering_info(uint32_t width, uint32_t height, std::span<const VkRenderingAttachmentInfo> colors,
+                               const VkRenderingAttachmentInfo* depth) {
+  auto info = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+  info.renderArea = {{0, 0}, {width, height}};
+  info.layerCount = 1;
+  info.colorAttachmentCount = static_cast<uint32_t>(colors.size());
+  info.pColorAttachments = colors.data();
+  info.pDepthAttachment = depth;
+  return info;
 }
 
 VkRenderingAttachmentInfo cleared_attachment(VkImageView view, VkClearValue clear) {
@@ -171,7 +182,8 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
   p = finish(context_, p, desc.name, [&](Pipeline& out) {
     ShaderModule vertex(context_, desc.vertex_shader), fragment(context_, desc.fragment_shader);
     VkPipelineShaderStageCreateInfo shader_stages[2];
-    for (auto& s : shader_stages) s = vk_struct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    for (auto& s : shader_stages)
+      s = vk_struct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     shader_stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     shader_stages[0].module = vertex.handle();
     shader_stages[0].pName = "main";
@@ -179,30 +191,35 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
     shader_stages[1].module = fragment.handle();
     shader_stages[1].pName = "main";
 
-    auto vertex_input = vk_struct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    auto vertex_input =
+        vk_struct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
     vertex_input.vertexBindingDescriptionCount = static_cast<uint32_t>(desc.vertex_bindings.size());
     vertex_input.pVertexBindingDescriptions = desc.vertex_bindings.data();
     vertex_input.vertexAttributeDescriptionCount = static_cast<uint32_t>(desc.vertex_attributes.size());
     vertex_input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
-    auto assembly = vk_struct<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    auto assembly =
+        vk_struct<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
     assembly.topology = desc.topology;
     auto viewport = vk_struct<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
     viewport.viewportCount = viewport.scissorCount = 1;  // both dynamic
-    auto raster = vk_struct<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    auto raster =
+        vk_struct<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = desc.cull;
     raster.frontFace = desc.front_face;
     raster.lineWidth = 1;
-    auto multisample = vk_struct<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    auto multisample =
+        vk_struct<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    auto depth = vk_struct<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+    auto depth =
+        vk_struct<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
     depth.depthTestEnable = desc.depth_test;
     depth.depthWriteEnable = desc.depth_write;
     depth.depthCompareOp = desc.depth_compare;
 
     VkPipelineColorBlendAttachmentState blend{};
-    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                           VK_COLOR_COMPONENT_A_BIT;
+    blend.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     if (desc.blend != Blend::none) {
       blend.blendEnable = VK_TRUE;
       const bool alpha = desc.blend == Blend::alpha;
@@ -213,7 +230,8 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
       blend.colorBlendOp = blend.alphaBlendOp = VK_BLEND_OP_ADD;
     }
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend);
-    auto color = vk_struct<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    auto color =
+        vk_struct<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     color.attachmentCount = static_cast<uint32_t>(blends.size());
     color.pAttachments = blends.data();
     const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};

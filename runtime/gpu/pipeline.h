@@ -64,6 +64,11 @@ void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height);
 // A render target of dynamic rendering, in ATTACHMENT_OPTIMAL, cleared to `clear` and stored.
 VkRenderingAttachmentInfo cleared_attachment(VkImageView view, VkClearValue clear = {});
 
+// Dynamic rendering over the whole width x height target, one layer, into `colors` and an
+// optional depth attachment; the info points at them, so they must outlive it.
+VkRenderingInfo rendering_info(uint32_t width, uint32_t height, std::span<const VkRenderingAttachmentInfo> colors,
+                               const VkRenderingAttachmentInfo* depth = nullptr);
+
 class PipelineCache {
  public:
   explicit PipelineCache(Context& context);

@@ -11,7 +11,6 @@
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/plan_resources.h"
-#include "runtime/gpu/vk_struct.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -159,11 +158,7 @@ class RasterKernel final : public NodeKernel {
     const Pipeline& p = pc.pipelines().graphics(desc);
     VkRenderingAttachmentInfo color = cleared_attachment(target.view());
     const uint32_t w = target.desc().width, h = target.desc().height;
-    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    rendering.renderArea = {{0, 0}, {w, h}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
+    const VkRenderingInfo rendering = rendering_info(w, h, {&color, 1});
     VkCommandBuffer cmd = pc.cmd();
     vkCmdBeginRendering(cmd, &rendering);
     bind_pipeline(pc.gpu(), cmd, p);

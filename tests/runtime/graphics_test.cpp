@@ -8,7 +8,6 @@
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/plan_barriers.h"
 #include "runtime/gpu/transfer.h"
-#include "runtime/gpu/vk_struct.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -38,23 +37,23 @@ TEST_F(GraphicsTest, DrawsAFullScreenPassWithDepth) {
   submitter().run([&](VkCommandBuffer cmd) {
     // The plan's first-use barriers of a colour and a depth attachment.
     BarrierBatch barriers;
-    barriers.add({.before = 0, .dst_stages = stage_color_attachment_output, .dst_access = access_color_attachment_write,
-                  .old_layout = Layout::undefined, .new_layout = Layout::attachment},
+    barriers.add({.before = 0,
+                  .dst_stages = stage_color_attachment_output,
+                  .dst_access = access_color_attachment_write,
+                  .old_layout = Layout::undefined,
+                  .new_layout = Layout::attachment},
                  color);
-    barriers.add({.before = 0, .dst_stages = stage_early_fragment_tests | stage_late_fragment_tests,
+    barriers.add({.before = 0,
+                  .dst_stages = stage_early_fragment_tests | stage_late_fragment_tests,
                   .dst_access = access_depth_stencil_attachment_read | access_depth_stencil_attachment_write,
-                  .old_layout = Layout::undefined, .new_layout = Layout::attachment},
+                  .old_layout = Layout::undefined,
+                  .new_layout = Layout::attachment},
                  depth);
     barriers.record(cmd);
 
     VkRenderingAttachmentInfo color_attachment = cleared_attachment(color.view(), {});
     VkRenderingAttachmentInfo depth_attachment = cleared_attachment(depth.view(), {.depthStencil = {0.0f, 0}});
-    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    rendering.renderArea = {{0, 0}, {w, h}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color_attachment;
-    rendering.pDepthAttachment = &depth_attachment;
+    const VkRenderingInfo rendering = rendering_info(w, h, {&color_attachment, 1}, &depth_attachment);
     vkCmdBeginRendering(cmd, &rendering);
     bind_pipeline(context(), cmd, p);
     set_viewport(cmd, w, h);

@@ -14,7 +14,6 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
-#include "runtime/gpu/vk_struct.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -143,10 +142,7 @@ class DeferredKernel final : public NodeKernel {
 
     // Reversed depth: 0 is farthest from the light.
     VkRenderingAttachmentInfo depth = cleared_attachment(map.view(), {.depthStencil = {0.0f, 0}});
-    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    rendering.renderArea = {{0, 0}, {size, size}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingInfo rendering = rendering_info(size, size, {}, &depth);
 
     GraphicsPipelineDesc desc;
     desc.name = ctx.pass().name;

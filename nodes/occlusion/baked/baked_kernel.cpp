@@ -25,7 +25,6 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
-#include "runtime/gpu/vk_struct.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -141,12 +140,7 @@ class BakedKernel final : public NodeKernel {
     VkRenderingAttachmentInfo color = cleared_attachment(baked.view(), {.color = {{0.0f, 0.0f, 0.0f, -1.0f}}});
     VkRenderingAttachmentInfo depth_attachment =
         cleared_attachment(depth.view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
-    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    rendering.renderArea = {{0, 0}, {w, h}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    rendering.pDepthAttachment = &depth_attachment;
+    const VkRenderingInfo rendering = rendering_info(w, h, {&color, 1}, &depth_attachment);
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);

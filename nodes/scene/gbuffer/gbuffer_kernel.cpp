@@ -12,7 +12,6 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
-#include "runtime/gpu/vk_struct.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -38,12 +37,7 @@ class GbufferKernel final : public NodeKernel {
     for (int c = 0; c < 4; ++c) colors[c] = cleared_attachment(targets[c + 1]->view(), {});
     VkRenderingAttachmentInfo depth =
         cleared_attachment(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
-    auto rendering = vk_struct<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    rendering.renderArea = {{0, 0}, {w, h}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 4;
-    rendering.pColorAttachments = colors;
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingInfo rendering = rendering_info(w, h, colors, &depth);
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
