@@ -76,7 +76,7 @@ void CompileView::show_plan(const Plan* plan) {
   for (size_t i = 0; i < plan->passes.size(); ++i) {
     const PlanPass& pass = plan->passes[i];
     QStringList writes;
-    for (const PlanAccess& a : pass.accesses)
+    for (const PlanAccess& a : plan->accesses_of(pass))
       if (usage_writes(a.usage)) writes << text_of(plan->resources[size_t(a.resource)].desc.name);
     writes.removeDuplicates();
     const QStringList cells = {text_of(pass.name), text_of(plan->nodes[size_t(pass.node)].type),

@@ -36,7 +36,7 @@ struct PlanPass {
   int node = -1;     // index into Plan::nodes
   std::string pass;  // "downsample"
   Queue queue = Queue::compute;
-  std::vector<PlanAccess> accesses;
+  uint32_t first_access = 0, access_count = 0;  // its run of Plan::accesses
   bool is_static = false;
   uint64_t cache_key = 0;  // 0 unless static
 };
@@ -65,6 +65,7 @@ struct Plan {
   FrameSize frame;
   std::vector<PlanNode> nodes;  // in topological order, ties broken by id
   std::vector<PlanPass> passes;
+  std::vector<PlanAccess> accesses;  // every pass's, back to back in pass order: one allocation, not one a pass
   std::vector<PlanResource> resources;
   std::vector<Barrier> barriers;    // sorted by Barrier::before
   std::vector<PlanOutput> outputs;  // the file's outputs, then output nodes' inputs
@@ -76,6 +77,7 @@ struct Plan {
   MemoryTotals memory;
 
   const std::string& slot_of(const PlanAccess& a) const { return slot_names[a.slot]; }
+  std::span<const PlanAccess> accesses_of(const PlanPass& p) const { return {accesses.data() + p.first_access, p.access_count}; }
 
   // The resources that last held resource r's bytes.
   std::span<const int> predecessors_of(int r) const { return predecessors_in(predecessors, resources[r].placement); }

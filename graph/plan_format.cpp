@@ -82,7 +82,7 @@ JsonValue plan_to_json(const Plan& plan) {
     pass.set("queue", std::string(queue_name(p.queue)));
     if (p.is_static) pass.set("cache_key", hex(p.cache_key));
     JsonValue& uses = pass.set("uses", JsonValue::array());
-    for (const auto& a : p.accesses) {
+    for (const auto& a : plan.accesses_of(p)) {
       JsonValue& use = uses.push(JsonValue::object());
       use.set("resource", plan.resources[a.resource].desc.name);
       use.set("slot", plan.slot_of(a));
@@ -168,7 +168,7 @@ std::string plan_to_dot(const Plan& plan) {
            "];\n";
   }
   for (size_t p = 0; p < plan.passes.size(); ++p)
-    for (const auto& a : plan.passes[p].accesses) {
+    for (const auto& a : plan.accesses_of(plan.passes[p])) {
       std::string pass = "p" + std::to_string(p), res = "r" + std::to_string(a.resource);
       if (usage_writes(a.usage)) out += "  " + pass + " -> " + res + ";\n";
       if (usage_reads(a.usage))
@@ -195,7 +195,7 @@ std::string plan_to_text(const Plan& plan) {
   for (size_t p = 0; p < plan.passes.size(); ++p) {
     const PlanPass& pass = plan.passes[p];
     std::string writes;
-    for (const auto& a : pass.accesses)
+    for (const auto& a : plan.accesses_of(pass))
       if (usage_writes(a.usage)) writes += (writes.empty() ? "" : ", ") + plan.resources[a.resource].desc.name;
     out += pad("  " + std::to_string(p), 5) + pad(pass.name, 28) + pad(std::string(queue_name(pass.queue)), 10) +
            pad(pass.is_static ? "static" : "-", 8) + pad(std::to_string(barrier_count[p]), 10) + writes + "\n";

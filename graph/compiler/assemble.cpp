@@ -80,13 +80,16 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }
   SlotNames slot_names(plan.slot_names);
+  size_t accesses = 0;
+  for (const LoweredPass& lp : lowered.passes) accesses += lp.accesses.size();
+  plan.accesses.reserve(accesses);
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    PlanPass& pass = plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
-                                              std::vector<PlanAccess>{}, lp.is_static, lp.cache_key);
-    pass.accesses.reserve(lp.accesses.size());
-    for (const auto& a : lp.accesses) pass.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
+    plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
+                             static_cast<uint32_t>(plan.accesses.size()), static_cast<uint32_t>(lp.accesses.size()),
+                             lp.is_static, lp.cache_key);
+    for (const auto& a : lp.accesses) plan.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
   }
   plan.resources.reserve(lowered.resources.size());
   for (size_t r = 0; r < lowered.resources.size(); ++r) {

@@ -6,7 +6,7 @@
 namespace lg {
 
 const PlanAccess* FramePassContext::find(std::string_view slot, int component) const {
-  for (const PlanAccess& a : pass_.accesses)
+  for (const PlanAccess& a : frame_.plan.accesses_of(pass_))
     if (frame_.plan.slot_of(a) == slot && a.component == component) return &a;
   return nullptr;
 }
@@ -17,7 +17,7 @@ bool FramePassContext::has(std::string_view slot, int component) const {
 
 void FramePassContext::missing(std::string_view slot, int component, std::string_view what) const {
   std::string bound;
-  for (const PlanAccess& a : pass_.accesses)
+  for (const PlanAccess& a : frame_.plan.accesses_of(pass_))
     bound +=
         (bound.empty() ? "" : ", ") + frame_.plan.slot_of(a) + (a.component ? "." + std::to_string(a.component) : "");
   // The executor prefixes the pass's name.

@@ -80,7 +80,7 @@ std::string check_barriers(const Plan& plan) {
   std::vector<std::vector<Use>> uses(count);
   for (int pos = 0; pos < static_cast<int>(plan.passes.size()); ++pos) {
     const PlanPass& pass = plan.passes[pos];
-    for (const auto& a : pass.accesses) {
+    for (const auto& a : plan.accesses_of(pass)) {
       Use u = rule(a.usage, pass.queue, plan.resources[a.resource].desc);
       u.pos = pos;
       auto& list = uses[a.resource];

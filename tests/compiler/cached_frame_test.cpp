@@ -25,7 +25,7 @@ std::vector<Layout> replay(const Plan& plan, int r, Layout start, bool skipping,
       layout = b.new_layout;
     }
     if (skipped) continue;
-    for (const auto& a : plan.passes[pos].accesses)
+    for (const auto& a : plan.accesses_of(plan.passes[pos]))
       if (a.resource == r && !plan.passes[pos].is_static) seen.push_back(layout);
   }
   *end = layout;

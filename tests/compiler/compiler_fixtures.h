@@ -187,7 +187,7 @@ inline const PlanNode* plan_node(const Plan& plan, std::string_view id) {
 inline int resource_in_slot(const Plan& plan, std::string_view pass, std::string_view slot) {
   int p = pass_at(plan, pass);
   if (p < 0) return -1;
-  for (const auto& a : plan.passes[p].accesses)
+  for (const auto& a : plan.accesses_of(plan.passes[p]))
     if (plan.slot_of(a) == slot) return a.resource;
   return -1;
 }

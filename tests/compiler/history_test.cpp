@@ -39,7 +39,7 @@ TEST(CompilerHistory, AoFeedsItselfThroughAPreviousFrameCopy) {
   EXPECT_EQ(test::resource_in_slot(plan, "gtao/denoise", "out.ao"), current);
   EXPECT_EQ(test::resource_in_slot(plan, "ibl/shade", "in.ao"), current);
   for (const auto& p : plan.passes)
-    for (const auto& a : p.accesses)
+    for (const auto& a : plan.accesses_of(p))
       if (a.resource == previous) {
         EXPECT_FALSE(usage_writes(a.usage)) << p.name << " writes last frame's AO";
       }

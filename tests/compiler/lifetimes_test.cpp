@@ -14,7 +14,7 @@ void expect_lifetimes_cover_uses(const Plan& plan, const std::string& what) {
   const int end = static_cast<int>(plan.passes.size()) - 1;
   std::vector<int> first(plan.resources.size(), -1), last(plan.resources.size(), -1);
   for (int p = 0; p <= end; ++p)
-    for (const auto& a : plan.passes[p].accesses) {
+    for (const auto& a : plan.accesses_of(plan.passes[p])) {
       if (first[a.resource] < 0) first[a.resource] = p;
       last[a.resource] = p;
     }

@@ -16,13 +16,13 @@ using test::resource_at;
 void expect_nothing_read_before_written(const Plan& plan) {
   std::vector<char> written(plan.resources.size(), 0);
   for (const auto& p : plan.passes) {
-    for (const auto& a : p.accesses) {
+    for (const auto& a : plan.accesses_of(p)) {
       const LoweredResource& r = plan.resources[a.resource].desc;
       if (usage_reads(a.usage) && r.history_of < 0) {
         EXPECT_TRUE(written[a.resource]) << p.name << " reads " << r.name << " before anything writes it";
       }
     }
-    for (const auto& a : p.accesses)
+    for (const auto& a : plan.accesses_of(p))
       if (usage_writes(a.usage)) written[a.resource] = 1;
   }
 }
@@ -46,7 +46,7 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   ASSERT_GE(color, 0);
   int writers = 0;
   for (const auto& p : plan.passes)
-    for (const auto& a : p.accesses) writers += a.resource == color && usage_writes(a.usage);
+    for (const auto& a : plan.accesses_of(p)) writers += a.resource == color && usage_writes(a.usage);
   EXPECT_EQ(writers, 1);
   EXPECT_NE(
       plan_to_text(plan).find("passes dropped:\n  light/area (lighting.deferred): the scene has no area lights\n"),

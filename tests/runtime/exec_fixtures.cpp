@@ -85,8 +85,8 @@ float param(const PlanNode& node, std::string_view name) {
 }
 
 bool sampled(const Plan& plan, const PlanPass& pass, std::string_view slot) {
-  return std::any_of(pass.accesses.begin(), pass.accesses.end(),
-                     [&](const PlanAccess& a) { return plan.slot_of(a) == slot && a.usage == Usage::sampled; });
+  return std::ranges::any_of(plan.accesses_of(pass),
+                             [&](const PlanAccess& a) { return plan.slot_of(a) == slot && a.usage == Usage::sampled; });
 }
 
 class TestKernel final : public NodeKernel {
@@ -123,7 +123,7 @@ class TestKernel final : public NodeKernel {
 
  private:
   static int resource_of(PassContext& pc, const std::string& slot) {
-    for (const PlanAccess& a : pc.pass().accesses)
+    for (const PlanAccess& a : pc.plan().accesses_of(pc.pass()))
       if (pc.plan().slot_of(a) == slot) return a.resource;
     pc.image(slot);  // throws naming the slot
     return -1;
