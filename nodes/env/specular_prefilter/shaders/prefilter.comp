@@ -3,20 +3,26 @@
 // env.specular_prefilter, one dispatch per output mip: radiance prefiltered by GGX under the
 // split-sum assumption N = V = R, sum of L(l) (n.l) / sum of (n.l) over `samples` half vectors
 // drawn with density D (n.h) (a Hammersley set).
-// `filtered` = 1 (the node) is filtered importance sampling (Krivanek and Colbert) with three
+// `filtered` = 1 (the node) is filtered importance sampling (Krivanek and Colbert) with four
 // corrections, each measured against the brute force (docs/bench/env, pisa.hdr at 256 samples,
-// roughness 0.25 / 0.5 / 1: 2.2% / 1.7% / 3.8% before, 1.2% / 1.3% / 1.3% after):
+// roughness 0.25 / 0.5 / 1: 2.2% / 1.7% / 3.8% with none, 1.2% / 1.3% / 1.3% with the first three,
+// 0.58% / 0.45% / 0.63% with all four):
 // - only half vectors with n.l > 0 are drawn (n.h > 1/sqrt(2): xi.x scaled into [0, 1 / (1 +
 //   alpha^2)), the pdf grown by the same factor), so none is wasted below the horizon: half of
 //   them were at roughness 1;
 // - each sample reads the mip whose texels match its solid angle 1 / (samples pdf), against the
 //   solid angle of the environment's texels where it reads (4 m^3 / size^2, m the largest |l|
 //   component: a face's centre texels subtend 5.2 times its corners'), not their mean;
-// - that mip is capped where its trilinear footprint (1.5 texels either side) would reach below
-//   the horizon, which the integral excludes.
-// No lod bias: +1 (Krivanek and Colbert's) doubled to tripled the error; -0.5 lowers it on pisa.hdr and
-// raises it on grace.hdr and on the random environment. Roughness 0 reads the environment along
-// n at the mip whose texels match the output's. Non-finite radiance counts as 0.
+// - that solid angle is capped near the horizon, which the integral excludes, smoothly: a hard
+//   cap puts a kink in the blur that the last correction cannot see (1.5% / 1.0% / 1.1% with
+//   the former hard cap);
+// - each sample's weight takes out the bias the blur adds to the lobe, to second order
+//   (blur_solid_angle). On pisa.hdr that bias was the error: the bright sky blurred into the
+//   dark ground near the horizon of downward normals, +6% on some texels.
+// No lod bias: +1 (Krivanek and Colbert's) doubled to tripled the error before the weights; with
+// them +0.25 and -0.25 both raise pisa.hdr's error (a double-precision emulation of this shader,
+// within 2% of it). Roughness 0 reads the environment along n at the mip whose texels match the
+// output's. Non-finite radiance counts as 0.
 // `filtered` = 0 is the benchmark's baseline, textbook GGX importance sampling: every sample
 // from the whole distribution (those below the horizon dropped), mip 0 only.
 #include "nodes/common/shaders/brdf.glsl"
@@ -37,14 +43,26 @@ vec3 finite_or_zero(vec3 c) {
   return any(isnan(c)) || any(isinf(c)) ? vec3(0.0) : c;
 }
 
-// The mip of `env` (edge `env_size`) whose texels around direction l match `solid_angle`,
-// capped where the trilinear footprint would cross the horizon of n (n_dot_l = n.l > 0).
-float footprint_lod(vec3 l, float n_dot_l, float solid_angle, float env_size) {
-  float m = max(max(abs(l.x), abs(l.y)), abs(l.z));
-  float texel_solid_angle = 4.0 * m * m * m / (env_size * env_size);
-  float lod = 0.5 * log2(solid_angle / texel_solid_angle);
-  float horizon_lod = log2(n_dot_l * inversesqrt(texel_solid_angle) / 1.5);
-  return max(min(lod, horizon_lod), 0.0);
+// The solid angle a sample blurs over, and the factor on its weight that undoes the blur's bias.
+// mu = n.l, pdf the sample's, d = (n.h)^2 (alpha^2 - 1) + 1 (pdf ~ 1 / d^2), b = dd / dmu.
+// The solid angle is 1 / (samples pdf), capped (2-norm) by (mu / 2)^2, where the mip's footprint
+// (1.5 texels either side) reaches 3/4 of the way to the horizon. A blur of variance k times the
+// solid angle adds (k / 2) lap(g) to the lobe, g = solid angle * pdf * mu (Fokker-Planck), so the
+// weight is scaled by 1 - (k / 2) solid_angle lap(g) / g. k = 0.3 fits the mip chain's box
+// filters plus bilinear (0.25 and 0.35 were worse); g's derivatives along mu are analytic.
+float blur_solid_angle(float mu, float d, float b, float pdf, out float weight_scale) {
+  mu = max(mu, 1e-6);
+  float u = 1.0 / mu, v = b / d;
+  float ratio = min(4.0 / (float(samples) * pdf * mu * mu), 1e15);  // unclamped / horizon solid angle
+  float r = ratio * ratio;
+  float horizon_share = r / (1.0 + r);
+  float solid_angle = 1.0 / (float(samples) * pdf * sqrt(1.0 + r));
+  // G = g^-2 up to a constant: G'/G and G''/G along mu, and lap(g) / g from them.
+  float dG = -2.0 * u * (1.0 + 2.0 * horizon_share) + 4.0 * v * horizon_share;
+  float ddG = 6.0 * u * u + 12.0 * horizon_share * (3.0 * u - v) * (u - v);
+  float lap_over_g = (1.0 - mu * mu) * (0.75 * dG * dG - 0.5 * ddG) + mu * dG;
+  weight_scale = 1.0 - 0.15 * solid_angle * lap_over_g;
+  return solid_angle;
 }
 
 void main() {
@@ -74,9 +92,17 @@ void main() {
       if (n_dot_l <= 0.0) continue;
       // pdf(l) = D (n.h) / (4 v.h) = D / 4 with v = n, over the drawn share of the distribution.
       float pdf = ggx_distribution(h_local.z, alpha) * 0.25 / above_horizon;
-      float lod = filtered != 0u ? footprint_lod(l, n_dot_l, 1.0 / (float(samples) * pdf), env_size) : 0.0;
-      sum += finite_or_zero(textureLod(env, l, lod).rgb) * n_dot_l;
-      weight += n_dot_l;
+      float w = n_dot_l, lod = 0.0;
+      if (filtered != 0u) {
+        float d = h_local.z * h_local.z * (alpha * alpha - 1.0) + 1.0, scale;
+        float solid_angle = blur_solid_angle(n_dot_l, d, 0.5 * (alpha * alpha - 1.0), pdf, scale);
+        // Solid angle of the environment's texels at l: 4 m^3 / size^2, m the largest |l| component.
+        float m = max(max(abs(l.x), abs(l.y)), abs(l.z));
+        lod = max(0.5 * log2(solid_angle * env_size * env_size / (4.0 * m * m * m)), 0.0);
+        w *= scale;
+      }
+      sum += finite_or_zero(textureLod(env, l, lod).rgb) * w;
+      weight += w;
     }
     result = weight > 0.0 ? sum / weight : vec3(0.0);
   }
