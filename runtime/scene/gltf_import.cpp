@@ -11,6 +11,7 @@
 #include <glm/gtx/matrix_decompose.hpp>
 #include <map>
 
+#include "runtime/scene/contained_path.h"
 #include "runtime/scene/mesh_import.h"
 #include "runtime/scene/mesh_tools.h"
 #include "runtime/scene/scene_error.h"
@@ -319,17 +320,7 @@ class GltfImporter {
   std::map<int, int> materials_, images_;
 };
 
-// Files a glTF file refers to (buffers, images) must lie in its folder or below: a downloaded
-// model must not read arbitrary files. tinygltf reads through these callbacks.
-bool inside_folder(const std::string& path, const std::string& folder) {
-  std::error_code ec;
-  std::filesystem::path resolved = std::filesystem::weakly_canonical(path, ec);
-  if (ec) return false;
-  std::filesystem::path root(folder);
-  auto [root_end, unused] = std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
-  return root_end == root.end();
-}
-
+// tinygltf reads the files a glTF file refers to through this (contained_path.h says why).
 bool contained_read(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
   if (inside_folder(path, *static_cast<std::string*>(folder)))
     return tinygltf::ReadWholeFile(out, error, path, nullptr);
@@ -355,8 +346,7 @@ std::vector<Entity> import_gltf(World& world, const std::string& path, Entity pa
   std::string ext = std::filesystem::path(path).extension().string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "the file does not exist");
-  std::string folder =
-      std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec).parent_path().string();
+  std::string folder = folder_of(path);
   // Existence is not checked against the folder, so that reading is tried and refused by name.
   loader.SetFsCallbacks({tinygltf::FileExists, unexpanded, contained_read, no_writes, &folder});
   bool ok = ext == ".glb" || ext == ".GLB" ? loader.LoadBinaryFromFile(&model, &error, &warning, path)

@@ -1,5 +1,6 @@
-// Wavefront OBJ import (see mesh_import.h). obj_syntax.h checks the text strictly, tinyobjloader
-// then parses it, and vertices are shared between faces that use the same position, normal and uv.
+// Wavefront OBJ import (see mesh_import.h). obj_syntax.h checks the text strictly (the MTL
+// libraries' too), tinyobjloader then parses it, and vertices are shared between faces that use
+// the same position, normal and uv.
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "runtime/scene/contained_path.h"
 #include "runtime/scene/mesh_import.h"
 #include "runtime/scene/mesh_tools.h"
 #include "runtime/scene/obj_syntax.h"
@@ -43,6 +45,42 @@ std::string read_text(const std::string& path) {
   return text.str();
 }
 
+// Reads the MTL libraries tinyobjloader asks for: from the OBJ file's folder or below only, each
+// checked by obj_syntax.h before it is parsed. The OBJ check already refuses libraries outside
+// the folder at their line, but tinyobjloader splits `mtllib` lines its own way (spaces only,
+// with escapes), so the names it asks for are checked here again. tinyobjloader only warns when
+// a library fails, so the problems wait in `problems` for import_obj to throw; a missing
+// library leaves the default material, as many OBJ files ship without theirs.
+class ContainedMtlReader final : public tinyobj::MaterialReader {
+ public:
+  explicit ContainedMtlReader(const std::string& obj_path) : folder_(folder_of(obj_path)), problems_(obj_path) {}
+
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* names, std::string* warning, std::string* error) override {
+    const std::string path = folder_ + "/" + name;
+    if (!inside_folder(path, folder_)) {
+      problems_.error({}, "", "the material library '" + name + "' is outside the OBJ file's folder");
+      return false;
+    }
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return false;
+    std::string text = read_text(path);
+    if (Diagnostics mtl = check_mtl_text(path, text); mtl.has_errors()) {
+      for (const Diagnostic& d : mtl.items()) problems_.add(d);
+      return false;
+    }
+    std::istringstream stream(std::move(text));
+    tinyobj::LoadMtl(names, materials, &stream, warning, error);
+    return true;
+  }
+
+  const Diagnostics& problems() const { return problems_; }
+
+ private:
+  std::string folder_;
+  Diagnostics problems_;
+};
+
 // obj_syntax.h has checked every index; this guards the arrays should tinyobjloader ever
 // resolve one differently.
 void check_index(const std::string& path, int index, size_t count, const char* what, const std::string& shape) {
@@ -63,10 +101,9 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
   if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "the file does not exist");
   std::string text = read_text(path);
   if (Diagnostics problems = check_obj_text(path, text); problems.has_errors()) throw SceneError(std::move(problems));
-  // The text checked is the text parsed (the file is read once); MTL files are found next to it.
+  // The text checked is the text parsed (the file is read once).
   std::istringstream stream(std::move(text));
-  std::string folder = std::filesystem::path(path).parent_path().string();
-  tinyobj::MaterialFileReader mtl_reader(folder.empty() ? folder : folder + "/");
+  ContainedMtlReader mtl_reader(path);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> mtl_materials;
@@ -76,6 +113,7 @@ std::vector<Entity> import_obj(World& world, const std::string& path, Entity par
     while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
     throw SceneError(path, "not a valid OBJ file: " + (error.empty() ? std::string("unknown error") : error));
   }
+  if (mtl_reader.problems().has_errors()) throw SceneError(mtl_reader.problems());
   size_t position_count = attrib.vertices.size() / 3, normal_count = attrib.normals.size() / 3,
          uv_count = attrib.texcoords.size() / 2;
   std::vector<int> materials;

@@ -1,14 +1,19 @@
 // Implementation of obj_syntax.h: one pass over the lines that counts positions, texture
 // coordinates and normals as they are defined, so that relative indices resolve as
 // tinyobjloader resolves them; references forward are checked once the file's counts are known.
+// MTL files go through the same pass, with their own statements.
 #include "runtime/scene/obj_syntax.h"
 
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <optional>
 #include <vector>
+
+#include "runtime/scene/contained_path.h"
 
 namespace lg {
 namespace {
@@ -32,23 +37,47 @@ std::string_view without_plus(std::string_view s) {
   return s;
 }
 
-// Whether `s`, all of it, is a decimal number that a float holds finitely. One too small for a
-// double (1e-400) underflows to 0, as tinyobjloader reads it, and is accepted.
-bool is_finite_float(std::string_view s) {
+// `s`, all of it, as a decimal number, if a float holds it finitely. One too small for a double
+// (1e-400) underflows to 0, as tinyobjloader reads it, and is accepted.
+std::optional<double> finite_float(std::string_view s) {
   s = without_plus(s);
   double value = 0.0;
   auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (end != s.data() + s.size()) return false;
+  if (end != s.data() + s.size()) return std::nullopt;
   if (ec == std::errc::result_out_of_range) {
     size_t e = s.find_first_of("eE");
-    return e != std::string_view::npos && e + 1 < s.size() && s[e + 1] == '-';
+    if (e != std::string_view::npos && e + 1 < s.size() && s[e + 1] == '-') return 0.0;
+    return std::nullopt;
   }
-  return ec == std::errc() && std::isfinite(value) && std::abs(value) <= std::numeric_limits<float>::max();
+  if (ec != std::errc() || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max())
+    return std::nullopt;
+  return value;
 }
+
+// The range a number of a statement must lie in, and how a message says it.
+struct Range {
+  double min = -std::numeric_limits<double>::infinity(), max = std::numeric_limits<double>::infinity();
+  std::string text() const {
+    auto number = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", v);
+      return std::string(buf);
+    };
+    if (std::isfinite(min) && std::isfinite(max)) return "a number from " + number(min) + " to " + number(max);
+    if (std::isfinite(min)) return "a finite number of at least " + number(min);
+    return "a finite number";
+  }
+};
+constexpr Range any_number{};
+constexpr Range non_negative{0.0};
+constexpr Range unit_interval{0.0, 1.0};
+
+enum class Format { obj, mtl };
 
 class ObjChecker {
  public:
-  ObjChecker(const std::string& path, std::string_view text) : diagnostics_(path), text_(text) {}
+  ObjChecker(const std::string& path, std::string_view text, Format format)
+      : diagnostics_(path), text_(text), format_(format) {}
 
   Diagnostics run() {
     uint32_t number = 0;
@@ -104,6 +133,7 @@ class ObjChecker {
     split_line();
     if (tokens_.empty()) return;
     std::string_view keyword = tokens_[0].text;
+    if (format_ == Format::mtl) return check_material_line(keyword);
     if (keyword == "v") {
       check_numbers(tokens_.size() - 1 == 3 || tokens_.size() - 1 == 4 || tokens_.size() - 1 == 6,
                     "a vertex needs x y z, optionally followed by w or by an r g b colour");
@@ -116,17 +146,45 @@ class ObjChecker {
       ++defined_[normal];
     } else if (keyword == "f") {
       check_face();
+    } else if (keyword == "mtllib") {
+      check_material_libraries();
     }
   }
 
-  void check_numbers(bool count_is_right, const std::string& expectation) {
+  // The MTL statements whose numbers become the PBR material (mesh_import.h).
+  void check_material_line(std::string_view keyword) {
+    const std::string name(keyword);
+    if (keyword == "Kd" || keyword == "Ke")
+      check_numbers(tokens_.size() - 1 == 3, "'" + name + "' needs r g b", non_negative);
+    else if (keyword == "d" || keyword == "Tr" || keyword == "Pm")
+      check_numbers(tokens_.size() - 1 == 1, "'" + name + "' needs one number", unit_interval);
+    else if (keyword == "Ns")
+      check_numbers(tokens_.size() - 1 == 1, "'Ns' needs one number", non_negative);
+  }
+
+  // tinyobjloader reads every word after `mtllib` as a file name, a comment's words too.
+  void check_material_libraries() {
+    if (folder_.empty()) folder_ = folder_of(diagnostics_.file());
+    for (size_t i = 1; i < tokens_.size(); ++i)
+      if (!inside_folder(folder_ + "/" + std::string(tokens_[i].text), folder_))
+        error(tokens_[i].offset,
+              "the material library '" + std::string(tokens_[i].text) + "' is outside the OBJ file's folder");
+    if (comment_ != std::string_view::npos)
+      error(comment_,
+            "a comment may not follow mtllib's file names (tinyobjloader reads its words as file names); "
+            "put it on a line of its own");
+  }
+
+  void check_numbers(bool count_is_right, const std::string& expectation, Range range = any_number) {
     size_t numbers = tokens_.size() - 1;
     if (!count_is_right)
       error(tokens_[0].offset,
             expectation + "; got " + std::to_string(numbers) + (numbers == 1 ? " number" : " numbers"));
-    for (size_t i = 1; i < tokens_.size(); ++i)
-      if (!is_finite_float(tokens_[i].text))
-        error(tokens_[i].offset, "expected a finite number, got '" + std::string(tokens_[i].text) + "'");
+    for (size_t i = 1; i < tokens_.size(); ++i) {
+      std::optional<double> value = finite_float(tokens_[i].text);
+      if (!value || *value < range.min || *value > range.max)
+        error(tokens_[i].offset, "expected " + range.text() + ", got '" + std::string(tokens_[i].text) + "'");
+    }
   }
 
   void check_face() {
@@ -207,6 +265,8 @@ class ObjChecker {
 
   Diagnostics diagnostics_;
   std::string_view text_;
+  Format format_;
+  std::string folder_;  // of the OBJ file, found at its first mtllib
   std::string_view line_;
   uint32_t line_number_ = 0;
   std::vector<Token> tokens_;
@@ -219,7 +279,11 @@ class ObjChecker {
 }  // namespace
 
 Diagnostics check_obj_text(const std::string& path, std::string_view text) {
-  return ObjChecker(path, text).run();
+  return ObjChecker(path, text, Format::obj).run();
+}
+
+Diagnostics check_mtl_text(const std::string& path, std::string_view text) {
+  return ObjChecker(path, text, Format::mtl).run();
 }
 
 }  // namespace lg

@@ -2,8 +2,8 @@
 // reads it (obj_import.cpp): tinyobjloader reads a malformed number ("nan", "1.0abc", a missing
 // coordinate) as 0, atoi()s indices ("2x" is 2, an overflowing one is undefined), skips faces
 // with fewer than 3 corners or out-of-range corners with only a warning, and clips polygons in
-// time quadratic in their corners. OBJ files are untrusted input (games load mods), so each of
-// these is an error here, at its line and column.
+// time quadratic in their corners, and it reads `mtllib ../../anything`. OBJ and MTL files are
+// untrusted input (games load mods), so each of these is an error here, at its line and column.
 #pragma once
 
 #include <cstddef>
@@ -33,8 +33,16 @@ constexpr size_t max_obj_errors = 20;
 // index counts back from the last element of its kind defined before its line and may not reach
 // before the first; a positive one may refer to an element defined later in the file (as
 // tinyobjloader allows) but not beyond the last. A `# comment` may end a v, vn or vt line, not
-// an f line (tinyobjloader would read it as a corner). Other statements (o, g, s, usemtl, mtllib, l, p,
-// free-form geometry) are left to tinyobjloader, which ignores the ones it does not know.
+// an f or mtllib line (tinyobjloader would read it as a corner or a file name). The files
+// `mtllib` names must lie in the OBJ file's folder or below (contained_path.h). Other statements
+// (o, g, s, usemtl, l, p, free-form geometry) are left to tinyobjloader, which ignores the ones
+// it does not know.
 Diagnostics check_obj_text(const std::string& path, std::string_view text);
+
+// The problems of MTL `text`, with the same conventions. Checked, as they become the PBR
+// material (mesh_import.h): Kd and Ke need r g b, each a finite number of at least 0 (tinyobjloader
+// reads a lone `Kd 0.5` as red); d, Tr and Pm one number from 0 to 1; Ns one of at least 0.
+// Other statements (Ka, Ks, Ni, illum, texture maps...) are left to tinyobjloader.
+Diagnostics check_mtl_text(const std::string& path, std::string_view text);
 
 }  // namespace lg

@@ -2,7 +2,9 @@
 // non-finite and malformed numbers, missing coordinates, faces with too few or too many
 // corners, and indices that are zero, out of range or malformed; and the lenient forms the
 // format allows (relative and forward indices, comments, CRLF, underflowing numbers) still load;
-// random edits of the cube load or fail with a SceneError.
+// random edits of the cube load or fail with a SceneError. MTL libraries: outside the OBJ file's
+// folder they are refused, and so are the malformed numbers of the statements that make the
+// material.
 #include "runtime/scene/obj_syntax.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +13,7 @@
 #include <random>
 
 #include "import_test_support.h"
+#include "runtime/scene/contained_path.h"
 #include "runtime/scene/mesh_import.h"
 
 namespace lg {
@@ -161,6 +164,47 @@ TEST(ObjSyntax, LenientFormsOfTheFormatLoad) {
   ASSERT_EQ(m.positions.size(), 3u);
   EXPECT_EQ(m.positions[1], glm::vec3(1, 0, 0));
   EXPECT_EQ(m.uvs[0], glm::vec2(0.25f, 1.0f));  // v defaults to 0, flipped to a top-left origin
+}
+
+TEST(ObjSyntax, MaterialLibrariesOutsideTheFolderAreRefused) {
+  write_variant("../outside.mtl", "newmtl stolen\nKd 1 0 0\n");
+  EXPECT_EQ(refusal("up.obj", "mtllib ../outside.mtl\n" + triangle + "f 1 2 3\n"),
+            ":1:8: error: the material library '../outside.mtl' is outside the OBJ file's folder");
+  EXPECT_EQ(refusal("commented.obj", "mtllib cube.mtl # ../outside.mtl\n" + triangle + "f 1 2 3\n"),
+            ":1:17: error: a comment may not follow mtllib's file names (tinyobjloader reads its words as file "
+            "names); put it on a line of its own");
+  // tinyobjloader drops the backslashes that this check keeps: its reader refuses the name.
+  EXPECT_EQ(refusal("escaped.obj", "mtllib \\.\\./outside.mtl\n" + triangle + "f 1 2 3\n"),
+            ": error: the material library '../outside.mtl' is outside the OBJ file's folder");
+  // A name that stays inside is read from the folder.
+  write_variant("cube.mtl", read_bytes(fixture("cube.mtl")));
+  EXPECT_EQ(imported("inside.obj", "mtllib ./cube.mtl\n" + triangle + "f 1 2 3\n").materials().size(), 2u);
+}
+
+// The error of importing a triangle whose MTL library holds `mtl`, after the library's name.
+std::string mtl_refusal(const std::string& mtl) {
+  std::string library = write_variant("checked.mtl", mtl);
+  std::string obj = write_variant("uses_checked.obj", "mtllib checked.mtl\nusemtl m\n" + triangle + "f 1 2 3\n");
+  World w;
+  std::string message = error_of([&] { import_obj(w, obj); });
+  std::string name = folder_of(library) + "/checked.mtl";
+  EXPECT_EQ(message.rfind(name, 0), 0u) << message;
+  return message.substr(std::min(message.size(), name.size()));
+}
+
+TEST(ObjSyntax, MalformedMaterialNumbersAreRefused) {
+  EXPECT_EQ(mtl_refusal("newmtl m\nKd 0.5\n"), ":2:1: error: 'Kd' needs r g b; got 1 number");
+  EXPECT_EQ(mtl_refusal("newmtl m\nKd nan 0 0\n"), ":2:4: error: expected a finite number of at least 0, got 'nan'");
+  EXPECT_EQ(mtl_refusal("newmtl m\nKe 1 -2 0\n"), ":2:6: error: expected a finite number of at least 0, got '-2'");
+  EXPECT_EQ(mtl_refusal("newmtl m\nd 1.5\n"), ":2:3: error: expected a number from 0 to 1, got '1.5'");
+  EXPECT_EQ(mtl_refusal("newmtl m\n  Ns inf\n"), ":2:6: error: expected a finite number of at least 0, got 'inf'");
+  // The same statements well formed, with a comment and a tab, load.
+  write_variant("good.mtl", "newmtl m\nKd 0.25 0.5 1 # blue\nKe\t0 0 2\nd 0.5\nNs 10\nPm 1\n");
+  World w = imported("good_mtl.obj", "mtllib good.mtl\nusemtl m\n" + triangle + "f 1 2 3\n");
+  ASSERT_EQ(w.materials().size(), 1u);
+  EXPECT_EQ(w.materials()[0].base_color, glm::vec4(0.25f, 0.5f, 1.0f, 0.5f));
+  EXPECT_EQ(w.materials()[0].emissive, glm::vec3(0, 0, 2));
+  EXPECT_FLOAT_EQ(w.materials()[0].metalness, 1.0f);
 }
 
 // Random edits of the cube (characters replaced by ones that matter to OBJ, inserted or
