@@ -129,6 +129,8 @@ FrameStats Executor::run_frame(const SceneView& scene, GpuScene& gpu_scene) {
     if (pass.is_static) ran_keys_[p] = pass.cache_key;
   }
   stats.device_memory_used = context_.device_memory_used();
+  for (auto& kernel : kernels_)
+    if (kernel) kernel->frame_finished();
   ++frames_;
   return stats;
 }

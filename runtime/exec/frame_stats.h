@@ -30,11 +30,13 @@ struct DroppedPass {
 };
 
 struct FrameStats {
-  uint64_t frame = 0;               // 0 for the first frame
-  std::vector<PassStats> passes;    // in schedule order
-  double gpu_ms = 0;                // the whole command buffer, barriers included
-  double cpu_ms = 0;                // recording, submission and the wait for the GPU
-  uint64_t device_memory_used = 0;  // Context::device_memory_used() after the frame
+  uint64_t frame = 0;             // 0 for the first frame
+  std::vector<PassStats> passes;  // in schedule order
+  double gpu_ms = 0;              // the whole command buffer, barriers included
+  double cpu_ms = 0;              // recording, submission and the wait for the GPU
+  // Context::device_memory_used() at the frame's end, before kernels free what only recording
+  // needed (NodeKernel::frame_finished).
+  uint64_t device_memory_used = 0;
   MemoryTotals plan_memory;
   std::vector<SkippedNode> skipped_nodes;
   std::vector<DroppedPass> dropped_passes;

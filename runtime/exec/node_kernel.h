@@ -61,6 +61,10 @@ class NodeKernel {
   // Records `pass.pass().pass` (a pass name of the node's schema). Throws on failure; the
   // executor adds the pass's name to the message.
   virtual void record(PassContext& pass) = 0;
+  // Called when a frame has finished on the device: a kernel may free what only its recording
+  // needed (env.load its file's copies once the cube they fill is a cached result). A static
+  // pass recorded again later, its cache invalidated, must then rebuild what it freed.
+  virtual void frame_finished() {}
 };
 
 // Makes the kernel of one plan node; the kernel lives as long as the executor's plan.

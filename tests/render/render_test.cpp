@@ -1,8 +1,8 @@
 // Whole frames through the library API on lavapipe with validation and synchronization
 // validation on: the example graphs whose nodes all have kernels render the default world
 // with zero validation messages, to finite, lit, plausible images; the first frame matches a
-// committed reference image; history and cached passes behave over several frames; and device
-// memory stays within 10% of the plan's figure.
+// committed reference image; history and cached passes behave over several frames; device
+// memory stays within 10% of the plan's figure; and env.load frees its file's copies.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -127,6 +127,24 @@ TEST(Render, ARecompiledPlanKeepsStaticResultsWhoseKeysHold) {
   fresh.render(world, kFrame);
   EXPECT_EQ(carried, fresh.read_output());
   expect_no_validation(fresh);
+}
+
+// env.load's two float copies of its file (the staging buffer and the equirect image) serve
+// only the pass that builds the cube, a cached result afterwards: they are freed once the first
+// frame has finished, and the file is read again when the cache is invalidated, to the same frame.
+TEST(Render, EnvLoadFreesItsFileCopiesAfterTheFrame) {
+  Renderer renderer = make_renderer();
+  renderer.load_graph("examples/environment.json");  // studio.hdr, 128x64
+  World world = default_world();
+  const int64_t during = int64_t(renderer.render(world, kFrame).device_memory_used);  // before the frame ended
+  const int64_t after = int64_t(renderer.context().device_memory_used());
+  EXPECT_GE(during - after, int64_t{2} * 128 * 64 * 4 * sizeof(float));
+  std::vector<float> first = renderer.read_output();
+  renderer.executor().invalidate_cache();
+  renderer.render(world, kFrame);
+  EXPECT_EQ(renderer.read_output(), first);
+  EXPECT_EQ(int64_t(renderer.context().device_memory_used()), after);
+  expect_no_validation(renderer);
 }
 
 }  // namespace

@@ -43,6 +43,7 @@ class EnvLoadKernel final : public NodeKernel {
 
   void record(PassContext& ctx) override {
     if (!source_) {
+      if (!file_) file_.emplace(path_);  // recorded again after frame_finished(): read the file again
       uint64_t non_finite = 0;
       EquirectSource source = read_equirect(ctx.gpu(), *file_, intensity_, non_finite);
       if (non_finite)
@@ -55,11 +56,15 @@ class EnvLoadKernel final : public NodeKernel {
                     ctx.image("out.cube"));
   }
 
+  // The source holds two float copies of the file (the staging buffer and the equirect image,
+  // 1 GiB for an 8192x4096 one) that only this pass reads, and its result is cached.
+  void frame_finished() override { source_.reset(); }
+
  private:
   std::string id_, path_;
   double intensity_;
-  std::optional<ImageReader> file_;  // until its pixels are in the staging buffer
-  std::optional<EquirectSource> source_;
+  std::optional<ImageReader> file_;       // until its pixels are in the staging buffer
+  std::optional<EquirectSource> source_;  // from a record to the end of its frame
 };
 
 }  // namespace
@@ -100,8 +105,6 @@ EquirectSource read_equirect(Context& gpu, ImageReader& file, double intensity, 
 }
 
 void EquirectSource::upload(VkCommandBuffer cmd) {
-  if (uploaded_) return;
-  uploaded_ = true;
   barrier(cmd, &image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
   VkBufferImageCopy region{};

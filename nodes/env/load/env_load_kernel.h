@@ -2,7 +2,8 @@
 // equirectangular HDR or EXR file (nodes/env/common/equirect.h states the mapping) resampled
 // to a cube map, then every mip by solid-angle-weighted box filtering. Non-finite texels of
 // the file are replaced by 0, counted, and reported on stderr. The file is read straight into
-// the upload's staging buffer at the first record.
+// the upload's staging buffer at the first record, and both float copies of it are freed when
+// that frame has finished (NodeKernel::frame_finished).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -35,13 +36,14 @@ class EquirectSource {
   EquirectSource(Context& gpu, uint32_t width, uint32_t height);
   // The staging buffer as RGBA floats, rows top to bottom: fill it before upload().
   std::span<float> texels();
-  void upload(VkCommandBuffer cmd);  // once; leaves the image in READ_ONLY_OPTIMAL
+  // Records the copy into the image (every time: a frame that failed after recording it never
+  // ran the copy); leaves the image in READ_ONLY_OPTIMAL.
+  void upload(VkCommandBuffer cmd);
 
   Image image;
 
  private:
   Buffer staging_;
-  bool uploaded_ = false;
 };
 
 // What env.load does at its first record: a source of `file`'s size, the file read straight into
