@@ -273,7 +273,7 @@ void MainWindow::refresh() {
   const Graph& graph = doc_->graph();
   canvas_->show_graph(graph);
   const bool had_errors = validation_.has_errors();
-  validation_ = validate_graph(graph);
+  validation_ = validate_graph(graph, scene_);
   show_problems();
   // The compile view is empty while the graph has errors: show what is wrong instead, and the
   // plan again once they are gone.
@@ -427,6 +427,7 @@ void MainWindow::show_menu(Position at, QPoint global) {
 }
 
 void MainWindow::set_preview(std::unique_ptr<PreviewRenderer> renderer) {
+  scene_ = renderer->scene_summary();
   delete preview_runner_;
   preview_runner_ = new AsyncPreview(std::move(renderer), this);
   connect(preview_runner_, &AsyncPreview::finished, this, &MainWindow::show_preview);

@@ -99,6 +99,7 @@ class MainWindow : public QMainWindow {
   PreviewPanel* preview_ = nullptr;
   AsyncPreview* preview_runner_ = nullptr;
   int previews_shown_ = 0;
+  SceneSummary scene_ = default_scene_summary();  // the preview's, which validation compiles for
   Validation validation_;
   std::vector<Diagnostic> disk_problems_;  // the file on disk is broken: why
 };

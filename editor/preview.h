@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "graph/graph.h"
+#include "graph/scene_summary.h"
 
 namespace lg::editor {
 
@@ -49,6 +50,9 @@ class PreviewRenderer {
   // `port` of the graph, rendered on a frame of about `size`; an empty image with `error` set
   // when it cannot (the graph fails, the port is a buffer).
   virtual PreviewImage render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) = 0;
+  // The scene it renders, which live validation and the compile view then compile for too, so
+  // that what they say is skipped is what the preview skips. Asked on the UI thread.
+  virtual SceneSummary scene_summary() const { return default_scene_summary(); }
 };
 
 }  // namespace lg::editor

@@ -7,6 +7,7 @@
 #include "api/world_loading.h"
 #include "runtime/gpu/format.h"
 #include "runtime/scene/default_world.h"
+#include "runtime/scene/make_scene_view.h"
 
 namespace lg::editor {
 namespace {
@@ -39,17 +40,27 @@ Graph graph_showing(Graph graph, const PreviewPort& port) {
   return graph;
 }
 
-RuntimePreview::RuntimePreview(std::string scene, std::vector<std::string> asset_roots)
-    : scene_(std::move(scene)), asset_roots_(std::move(asset_roots)) {}
+RuntimePreview::RuntimePreview(const std::string& scene, const std::vector<std::string>& asset_roots) {
+  try {
+    world_ = std::make_unique<World>(scene.empty() ? default_world()
+                                                   : load_world(scene, renderer_world_options(scene, asset_roots)));
+  } catch (const std::exception& e) {
+    load_error_ = e.what();
+  }
+}
 RuntimePreview::~RuntimePreview() = default;
 
+SceneSummary RuntimePreview::scene_summary() const {
+  return world_ ? make_scene_view(*world_, 16.0f / 9.0f).summary() : default_scene_summary();
+}
+
 PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) {
+  if (!world_) {
+    *error = QString::fromStdString(load_error_);
+    return {};
+  }
   try {
-    if (!renderer_) {
-      renderer_ = std::make_unique<Renderer>();
-      world_ = std::make_unique<World>(
-          scene_.empty() ? default_world() : load_world(scene_, renderer_world_options(scene_, asset_roots_)));
-    }
+    if (!renderer_) renderer_ = std::make_unique<Renderer>();
     renderer_->set_graph(graph_showing(graph, port));
     const FrameSize frame{uint32_t(std::max(size.width(), 16)), uint32_t(std::max(size.height(), 16))};
     const FrameStats& stats = renderer_->render(*world_, frame);

@@ -24,15 +24,17 @@ class RuntimePreview : public PreviewRenderer {
  public:
   // `scene`: a file for runtime/scene/load_world.h, whose paths may point into its own folder
   // and into `asset_roots`; empty: the embedded default world.
-  explicit RuntimePreview(std::string scene = {}, std::vector<std::string> asset_roots = {});
+  // The world is loaded here, so that scene_summary() answers before the first render; one that
+  // fails to load is render()'s error.
+  explicit RuntimePreview(const std::string& scene = {}, const std::vector<std::string>& asset_roots = {});
   ~RuntimePreview() override;
   PreviewImage render(const Graph& graph, QSize size, const PreviewPort& port, QString* error) override;
+  SceneSummary scene_summary() const override;
 
  private:
   std::unique_ptr<Renderer> renderer_;  // made on first use, on the thread that renders
-  std::string scene_;
-  std::vector<std::string> asset_roots_;
-  std::unique_ptr<World> world_;
+  std::unique_ptr<World> world_;        // null when it failed to load
+  std::string load_error_;
 };
 
 // The graph as the preview renders it: `port` (when not the main output) among its outputs.

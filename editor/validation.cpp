@@ -46,13 +46,15 @@ std::string param_of_pointer(const std::string& pointer) {
   return name.substr(0, name.find('/'));
 }
 
-Validation validate_graph(const Graph& graph) {
+Validation validate_graph(const Graph& graph, const SceneSummary& scene) {
   Validation result;
   Diagnostics diagnostics(graph.file);
   std::optional<Graph> reread = parse_graph(graph_to_json(graph), diagnostics);
   if (reread) {
     reread->file = graph.file;
-    CompileResult compiled = compile(*reread, builtin_registry(), CompileOptions{}, diagnostics);
+    CompileOptions options;
+    options.scene = scene;
+    CompileResult compiled = compile(*reread, builtin_registry(), options, diagnostics);
     result.plan = std::move(compiled.plan);
   }
   for (const Diagnostic& d : diagnostics.items()) result.problems.push_back({d, node_of_pointer(graph, d.pointer)});

@@ -1,6 +1,7 @@
 // Live validation: compiles the graph exactly as the runtime would load it (written out and
-// parsed back, so structural mistakes show too) against the built-in schemas and the default
-// scene, and ties every diagnostic to the node it is about.
+// parsed back, so structural mistakes show too) against the built-in schemas and the scene the
+// preview renders (the default one without a preview), and ties every diagnostic to the node
+// it is about.
 #pragma once
 
 #include <optional>
@@ -10,6 +11,7 @@
 #include "graph/diagnostics.h"
 #include "graph/graph.h"
 #include "graph/plan.h"
+#include "graph/scene_summary.h"
 
 namespace lg::editor {
 
@@ -24,7 +26,7 @@ struct Validation {
   bool has_errors() const;
 };
 
-Validation validate_graph(const Graph& graph);
+Validation validate_graph(const Graph& graph, const SceneSummary& scene = default_scene_summary());
 
 // The node a JSON pointer is about: /nodes/N/..., a link's target (/links/N/to) or source
 // (/links/N/from), or a requested output (/outputs/N); empty when none.

@@ -23,6 +23,7 @@
 #include <nodes/FlowScene>
 #include <nodes/FlowView>
 #include <nodes/Node>
+#include <algorithm>
 #include <atomic>
 #include <set>
 #include <thread>
@@ -276,6 +277,27 @@ TEST_F(EditorTest, TheRuntimePreviewRendersAChosenScene) {
   const QImage gallery = window->preview_image()->pixmap(Qt::ReturnByValue).toImage();
   ASSERT_FALSE(gallery.isNull()) << window->preview_image()->text().toStdString();
   EXPECT_NE(gallery, built_in);
+}
+
+// Validation and the compile view compile for the scene the preview renders: post.json's depth
+// of field is bypassed for the built-in world's pinhole camera and runs for the gallery's thin
+// lens, as the preview does.
+TEST_F(EditorTest, ValidationCompilesForThePreviewsScene) {
+  ASSERT_TRUE(window->open_file(QStringLiteral(LUMAGRAPH_SOURCE_DIR "/examples/post.json")));
+  const auto dof_state = [&] {
+    const Plan& plan = *window->validation().plan;
+    const auto dof =
+        std::find_if(plan.nodes.begin(), plan.nodes.end(), [](const PlanNode& n) { return n.id == "dof"; });
+    return dof == plan.nodes.end() ? "missing" : node_state_name(dof->state);
+  };
+  ASSERT_TRUE(window->validation().plan);
+  EXPECT_EQ(dof_state(), "bypassed");
+  window->set_preview(std::make_unique<RuntimePreview>(LUMAGRAPH_SOURCE_DIR "/examples/worlds/gallery.json"));
+  ASSERT_TRUE(window->validation().plan);
+  EXPECT_EQ(window->validation().plan->scene, "gallery");
+  EXPECT_EQ(dof_state(), "active");
+  window->set_preview(std::make_unique<RuntimePreview>());
+  EXPECT_EQ(dof_state(), "bypassed");
 }
 
 // The real preview of ports other than the main output (tests below share it).
