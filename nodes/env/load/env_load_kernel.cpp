@@ -57,13 +57,17 @@ class EnvLoadKernel final : public NodeKernel {
   }
 
   // The source holds two float copies of the file (the staging buffer and the equirect image,
-  // 1 GiB for an 8192x4096 one) that only this pass reads, and its result is cached.
-  void frame_finished() override { source_.reset(); }
+  // 1 GiB for an 8192x4096 one) that only this pass reads, and its result is cached. The file
+  // is still open when the pass never recorded (its result adopted from an earlier executor).
+  void frame_finished() override {
+    source_.reset();
+    file_.reset();
+  }
 
  private:
   std::string id_, path_;
   double intensity_;
-  std::optional<ImageReader> file_;       // until its pixels are in the staging buffer
+  std::optional<ImageReader> file_;       // until its pixels are in the staging buffer, or the frame ends
   std::optional<EquirectSource> source_;  // from a record to the end of its frame
 };
 
