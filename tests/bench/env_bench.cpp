@@ -3,9 +3,10 @@
 // the median of --runs runs after one discarded run that JIT-compiles the pipeline) next to its error against the
 // double-precision references, on a 128^2 random environment and the probes of
 // ../shared/data/env when present.
-//   Prefilter: samples 16 to 4096, filtered importance sampling (the node) and plain GGX
-//   importance sampling (mip 0 only), RMS relative error at roughness 0.25, 0.5 and 1 over
-//   kErrorTexels fixed random output texels; then the time ratio at equal error.
+//   Prefilter: samples 16 to 4096, filtered importance sampling (the node, its own mip chain
+//   built inside the timed commands) and plain GGX importance sampling (mip 0 only), RMS
+//   relative error at roughness 0.25, 0.5 and 1 over kErrorTexels fixed random output texels;
+//   then the time ratio at equal error.
 //   SH: orders 1 to 4 of cosine-convolved SH (irradiance): the truncation error (SH irradiance
 //   against brute-force irradiance) and the implementation's own (GPU coefficients against the
 //   double-precision projection, both reconstructed), over kErrorDirections random directions.
@@ -180,12 +181,16 @@ void bench_prefilter(benchmark::State& state, Probe& probe, PrefilterPoint& poin
   Image source = test::make_cube(gpu().context, "env", kFace, uint32_t(chain.size()));
   test::upload_cube(gpu().submitter, source, chain, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
   Image out = test::make_cube(gpu().context, "specular", kFace, kPrefilterMips);
+  // Filtered sampling builds its own mip chain in the timed commands, as the node's pass does.
+  Image own_chain = test::make_cube(gpu().context, "chain", kFace, uint32_t(chain.size()));
+  const bool filtered = point.sampling == PrefilterSampling::filtered;
   time_runs(
       state,
       [&](VkCommandBuffer cmd) {
         image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+        if (filtered) image_barrier(cmd, own_chain, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
         record_specular_prefilter(gpu().context, gpu().pipelines, cmd, "bench/prefilter", point.samples, source,
-                                  gpu().trilinear.handle(), out, point.sampling);
+                                  filtered ? &own_chain : nullptr, gpu().trilinear.handle(), out, point.sampling);
         memory_barrier(cmd);
       },
       point.times_ms);

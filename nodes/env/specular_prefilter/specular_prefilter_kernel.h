@@ -26,9 +26,12 @@ inline double prefilter_roughness(uint32_t mip, uint32_t mips) {
 enum class PrefilterSampling { filtered, plain_mip0 };
 
 // Records every mip of `prefiltered` (rgba16f cube, in GENERAL) from `env` (a cube map with its
-// mips, in READ_ONLY_OPTIMAL), read through `trilinear`.
+// mips, in READ_ONLY_OPTIMAL), read through `trilinear`. Filtered sampling first builds its own
+// mip chain of env's mip 0 in `chain` (rgba16f cube, env's face size, every mip down to 1x1, in
+// GENERAL; the node's tmp.chain), smoother than env's box chain, and reads that; plain sampling
+// reads env's mip 0 and takes no chain (nullptr).
 void record_specular_prefilter(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
-                               uint32_t samples, Image& env, VkSampler trilinear, Image& prefiltered,
+                               uint32_t samples, Image& env, Image* chain, VkSampler trilinear, Image& prefiltered,
                                PrefilterSampling sampling);
 
 std::unique_ptr<NodeKernel> make_specular_prefilter_kernel(const PlanNode& node);
