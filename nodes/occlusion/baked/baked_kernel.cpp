@@ -194,8 +194,7 @@ class BakedKernel final : public NodeKernel {
                      {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     desc.push_constant_bytes = sizeof(uint32_t);
     use_gpu_vertices(desc);
-    desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-    desc.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;  // as the G-buffer pass
+    desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;  // winding as the G-buffer pass's
     desc.color_formats.push_back(baked.desc().format);
     desc.depth_format = depth.desc().format;
     desc.depth_test = desc.depth_write = true;

@@ -69,9 +69,8 @@ class GbufferKernel final : public NodeKernel {
     desc.push_constant_bytes = sizeof(uint32_t);
     use_gpu_vertices(desc);
     // Meshes wind counter-clockwise seen from outside; the projection flips y for Vulkan, which
-    // keeps that winding counter-clockwise in framebuffer terms.
+    // keeps that winding counter-clockwise in framebuffer terms: the pipeline's default front face.
     desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-    desc.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     for (int c = 1; c < 5; ++c) desc.color_formats.push_back(targets[c]->desc().format);
     desc.depth_format = targets[0]->desc().format;
     desc.depth_test = desc.depth_write = true;
