@@ -15,16 +15,6 @@ JsonValue::JsonValue(const JsonValue& other)
     new (&text_) std::string(other.text_);
 }
 
-JsonValue::JsonValue(JsonValue&& other) noexcept
-    : kind_(other.kind_), bool_(other.bool_), pos_(other.pos_), number_(other.number_) {
-  if (is_array())
-    new (&items_) std::vector<JsonValue>(std::move(other.items_));
-  else if (is_object())
-    new (&members_) std::vector<Member>(std::move(other.members_));
-  else
-    new (&text_) std::string(std::move(other.text_));
-}
-
 JsonValue& JsonValue::operator=(const JsonValue& other) {
   if (this != &other) *this = JsonValue(other);
   return *this;
@@ -38,26 +28,12 @@ JsonValue& JsonValue::operator=(JsonValue&& other) noexcept {
   return *this;
 }
 
-void JsonValue::destroy() {
-  if (is_array())
-    items_.~vector();
-  else if (is_object())
-    members_.~vector();
-  else
-    text_.~basic_string();
-}
-
 void JsonValue::become(Kind kind) {
   destroy();
   kind_ = kind;
   bool_ = false;
   number_ = 0;
-  if (is_array())
-    new (&items_) std::vector<JsonValue>();
-  else if (is_object())
-    new (&members_) std::vector<Member>();
-  else
-    new (&text_) std::string();
+  construct_empty();
 }
 
 const std::string& JsonValue::no_text() {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <new>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -30,20 +31,20 @@ class JsonValue {
   JsonValue(std::string s) : kind_(Kind::string), text_(std::move(s)) {}
   JsonValue(const char* s) : kind_(Kind::string), text_(s) {}
   JsonValue(const JsonValue& other);
-  JsonValue(JsonValue&& other) noexcept;
+  JsonValue(JsonValue&& other) noexcept
+      : kind_(other.kind_), bool_(other.bool_), pos_(other.pos_), number_(other.number_) {
+    if (is_array())
+      new (&items_) std::vector<JsonValue>(std::move(other.items_));
+    else if (is_object())
+      new (&members_) std::vector<Member>(std::move(other.members_));
+    else
+      new (&text_) std::string(std::move(other.text_));
+  }
   JsonValue& operator=(const JsonValue& other);
   JsonValue& operator=(JsonValue&& other) noexcept;
   ~JsonValue() { destroy(); }
-  static JsonValue array() {
-    JsonValue v;
-    v.become(Kind::array);
-    return v;
-  }
-  static JsonValue object() {
-    JsonValue v;
-    v.become(Kind::object);
-    return v;
-  }
+  static JsonValue array() { return JsonValue(Kind::array); }
+  static JsonValue object() { return JsonValue(Kind::object); }
   // A number together with the exact text it was written as (kept for lossless output).
   static JsonValue number_with_text(double n, std::string text);
 
@@ -97,8 +98,27 @@ class JsonValue {
     std::vector<Member> members_;
   };
 
+  // An empty value of `kind`. Inline, with destroy(): plans and graphs make and drop
+  // thousands of values, most of them empty objects (nodes without params).
+  explicit JsonValue(Kind kind) : kind_(kind) { construct_empty(); }
+  void construct_empty() {
+    if (is_array())
+      new (&items_) std::vector<JsonValue>();
+    else if (is_object())
+      new (&members_) std::vector<Member>();
+    else
+      new (&text_) std::string();
+  }
+  void destroy() {
+    if (is_array())
+      items_.~vector();
+    else if (is_object())
+      members_.~vector();
+    else
+      text_.~basic_string();
+  }
+
   bool is_container() const { return is_array() || is_object(); }
-  void destroy();
   void become(Kind kind);  // an empty value of `kind`, position kept
   static const std::string& no_text();
   static const std::vector<JsonValue>& no_items();

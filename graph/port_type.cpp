@@ -70,6 +70,7 @@ std::optional<PortType> parse_port_type(std::string_view text, bool allow_wildca
 }
 
 bool port_types_compatible(const PortType& from, const PortType& to, std::string* why) {
+  if (from.layout && from.layout == to.layout) return true;  // one entry of the table: same kind and class
   if (from.kind != to.kind) {
     if (why) *why = kinds().at(from.kind).words + " cannot feed " + kinds().at(to.kind).words;
     return false;

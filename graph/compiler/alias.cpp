@@ -28,11 +28,14 @@ struct ByteRange {
 // nodes), so ranks turn sorting ranges by start into setting bits in a small bitmap.
 class StartOffsets {
  public:
+  // Offset 0 is known from the start (the first placement lands there), so every range,
+  // placed or not, has a start number to mark with.
   explicit StartOffsets(size_t resources) {
     sorted_.reserve(resources);
     id_of_rank_.reserve(resources);
     rank_of_id_.reserve(resources);
     furthest_.reserve(resources);
+    add(0);
   }
 
   // The number of `offset`, which becomes a known start if it is not one yet. A new start
@@ -56,12 +59,12 @@ class StartOffsets {
   // per start ending at the furthest end of the ranges that share it. That is all the placer's
   // gap scan needs: it does not care how equal starts are ordered, and sees ranges that share
   // a start as one ending at the furthest end. Linear, with no comparisons to mispredict.
-  void mark(const ByteRange& r) {
+  // `keep` is 1 or 0: a range is marked or not without a branch, which would follow no pattern.
+  void mark(const ByteRange& r, uint64_t keep = 1) {
+    const uint64_t mask = 0 - keep;
     const uint32_t rank = rank_of_id_[r.start_id];
-    const uint64_t bit = uint64_t{1} << (rank % 64);
-    uint64_t& word = present_[rank / 64];
-    furthest_[rank] = word & bit ? std::max(furthest_[rank], r.end) : r.end;
-    word |= bit;
+    furthest_[rank] = std::max(furthest_[rank], r.end & mask);
+    present_[rank / 64] |= (uint64_t{1} << (rank % 64)) & mask;
   }
 
   // Writes the marked ranges to `out` and clears the marks; returns the new end.
@@ -69,7 +72,7 @@ class StartOffsets {
     for (size_t w = 0; w < present_.size(); ++w)
       for (uint64_t bits = std::exchange(present_[w], 0); bits != 0; bits &= bits - 1) {
         const auto rank = static_cast<uint32_t>(64 * w + std::countr_zero(bits));
-        *out++ = {sorted_[rank], furthest_[rank], id_of_rank_[rank]};
+        *out++ = {sorted_[rank], std::exchange(furthest_[rank], 0), id_of_rank_[rank]};
       }
     return out;
   }
@@ -78,7 +81,7 @@ class StartOffsets {
   std::vector<uint64_t> sorted_;  // by rank: the offset
   std::vector<uint32_t> id_of_rank_, rank_of_id_;
   std::vector<uint64_t> present_;   // by rank, a bit: marked since the last collect()
-  std::vector<uint64_t> furthest_;  // by rank: the furthest end in that list
+  std::vector<uint64_t> furthest_;  // by rank: the furthest end in that list; 0 when unmarked
 };
 
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
@@ -163,15 +166,8 @@ class GreedyPlacer {
     // tree holds each interval once on any root path, so nothing is counted twice: the
     // conflicts are distinct placed resources, fewer than all of them.
     alive_.stab(life.first, [&](int position) { starts_.mark(ranges_[position]); });
-    // Without a branch on `placed_`, which follows no pattern: each range is written, and
-    // kept only if placed.
-    ByteRange* end = conflicts_.data();
-    for (int k = begin_after_[life.first]; k < begin_after_[life.last]; ++k) {
-      *end = ranges_[k];
-      end += placed_[k];
-    }
-    for (const ByteRange* c = conflicts_.data(); c != end; ++c) starts_.mark(*c);
-    end = starts_.collect(conflicts_.data());
+    for (int k = begin_after_[life.first]; k < begin_after_[life.last]; ++k) starts_.mark(ranges_[k], placed_[k]);
+    const ByteRange* end = starts_.collect(conflicts_.data());
 
     uint64_t best = UINT64_MAX, best_gap = UINT64_MAX, cursor = 0;
     for (const ByteRange* c = conflicts_.data(); c != end; ++c) {
@@ -204,7 +200,7 @@ class GreedyPlacer {
   std::vector<int> position_;         // resource -> position in first-use order
   std::vector<int> begin_after_;      // pass -> the first position whose first use is later
   std::vector<ByteRange> ranges_;     // by position: bytes, once placed
-  std::vector<char> placed_;          // by position
+  std::vector<uint8_t> placed_;       // by position: 1 once placed
   std::vector<ByteRange> conflicts_;  // room for every placed resource
   StartOffsets starts_;               // of placed ranges
   uint64_t size_ = 0;

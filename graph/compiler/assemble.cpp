@@ -68,14 +68,15 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
   auto kept_params = lowered.static_params.begin();  // in lowering order, which is node_order
   for (int n : node_order) {
     const NodeSchema& s = *resolved.nodes[n].schema;
+    JsonValue params = JsonValue::object();  // culled and bypassed nodes, and types without params
+    if (kept_params != lowered.static_params.end() && kept_params->first == n)
+      params = std::move(kept_params++->second);
+    else if (states[n].kind == NodeState::Kind::active && !s.params.empty())
+      params = node_params(resolved, n, options.roots);
     // Built in place (aggregates take parentheses in C++20): no temporary to move and destroy.
     PlanNode& node = plan.nodes.emplace_back(graph.nodes[n].id, s.type, states[n].kind, std::move(states[n].reason),
-                                             std::vector<std::pair<std::string, std::string>>{}, JsonValue::object(),
+                                             std::vector<std::pair<std::string, std::string>>{}, std::move(params),
                                              lowered.nodes[n].is_static);
-    if (kept_params != lowered.static_params.end() && kept_params->first == n)
-      node.params = std::move(kept_params++->second);
-    else if (states[n].kind == NodeState::Kind::active)
-      node.params = node_params(resolved, n, options.roots);
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }

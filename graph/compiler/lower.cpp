@@ -24,20 +24,14 @@ uint32_t full_mip_count(uint32_t w, uint32_t h) {
   return std::max(1u, static_cast<uint32_t>(std::bit_width(std::max(w, h))));
 }
 
-// "a/b" or "a.b.c": one string, built without temporaries. Names are mostly short enough for
-// the string's own buffer, so they are put together on the stack first.
+// "a/b" or "a.b.c": one string, sized once, without temporaries.
 std::string joined(std::initializer_list<std::string_view> parts) {
-  char small[16];
   size_t size = 0;
-  for (std::string_view p : parts) {
-    if (size + p.size() > sizeof small) {
-      std::string out;
-      for (std::string_view q : parts) out.append(q);
-      return out;
-    }
-    for (char c : p) small[size++] = c;
-  }
-  return std::string(small, size);
+  for (std::string_view p : parts) size += p.size();
+  std::string out(size, '\0');
+  char* at = out.data();
+  for (std::string_view p : parts) at = std::copy(p.begin(), p.end(), at);
+  return out;
 }
 
 // The resources of one port: a bundle's components are created together, so they are

@@ -1,6 +1,7 @@
 #include "graph/compiler/resolve.h"
 
 #include <bit>
+#include <cstring>
 #include <functional>
 #include <type_traits>
 #include <unordered_map>
@@ -25,11 +26,29 @@ std::vector<std::string> names_of(const std::vector<T>& items) {
   return out;
 }
 
-// FNV-1a, folded: ids and type names are short, where it beats std::hash's out-of-line call.
+// Ids and type names are short: eight bytes a step, inline, where std::hash makes an
+// out-of-line call and FNV-1a a multiply per byte.
 struct NameHash {
+  static uint64_t load(const char* p, size_t bytes) {
+    uint64_t word = 0;
+    std::memcpy(&word, p, bytes);
+    return word;
+  }
+  static uint64_t mix(uint64_t h) {
+    h *= 0x9e3779b97f4a7c15ull;
+    return h ^ (h >> 29);
+  }
   size_t operator()(std::string_view name) const {
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (unsigned char c : name) h = (h ^ c) * 0x100000001b3ull;
+    const char* p = name.data();
+    size_t n = name.size();
+    uint64_t h = n;
+    for (; n >= 8; p += 8, n -= 8) h = mix(h ^ load(p, 8));
+    // The last 1 to 7 bytes, read as two overlapping runs of fixed size (no variable-size copy).
+    if (n >= 4)
+      h = mix(h ^ (load(p, 4) | load(p + n - 4, 4) << 32));
+    else if (n > 0)
+      h = mix(h ^ (uint64_t{static_cast<unsigned char>(p[0])} | uint64_t{static_cast<unsigned char>(p[n / 2])} << 8 |
+                   uint64_t{static_cast<unsigned char>(p[n - 1])} << 16));
     return static_cast<size_t>(h ^ (h >> 32));
   }
 };

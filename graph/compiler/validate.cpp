@@ -33,7 +33,8 @@ std::string node_pointer(int n) {
 // except where they are equal and the rest of the ids decides.
 uint64_t id_prefix(std::string_view id) {
   uint64_t key = 0;
-  for (size_t k = 0; k < 8; ++k) key = key << 8 | (k < id.size() ? static_cast<unsigned char>(id[k]) : 0u);
+  const size_t bytes = std::min<size_t>(id.size(), 8);
+  for (size_t k = 0; k < bytes; ++k) key |= uint64_t{static_cast<unsigned char>(id[k])} << (56 - 8 * k);
   return key;
 }
 
