@@ -1,6 +1,7 @@
 #include "graph/compiler/synchronize.h"
 
 #include <algorithm>
+#include <array>
 
 namespace lg {
 namespace {
@@ -39,11 +40,9 @@ std::vector<Barrier> sorted_by_pass(std::vector<Barrier> barriers, size_t passes
   return out;
 }
 
-}  // namespace
-
-AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource) {
+// What a pass's use of a resource means for synchronization: its stages, access, layout.
+constexpr AccessInfo describe_access(Usage usage, Queue queue, bool buffer, bool depth) {
   const uint32_t shader = queue == Queue::compute ? stage_compute_shader : stage_fragment_shader;
-  const bool buffer = resource.kind == ResourceKind::buffer;
   const Layout shader_layout = buffer ? Layout::none : Layout::general;
   const uint32_t depth_stages = stage_early_fragment_tests | stage_late_fragment_tests;
   const uint32_t depth_access = access_depth_stencil_attachment_read | access_depth_stencil_attachment_write;
@@ -57,10 +56,10 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
     case Usage::storage_read_write:
       return {shader, access_shader_storage_read | access_shader_storage_write, shader_layout, true};
     case Usage::attachment_write:
-      if (resource.depth_format) return {depth_stages, depth_access, Layout::attachment, true};
+      if (depth) return {depth_stages, depth_access, Layout::attachment, true};
       return {stage_color_attachment_output, access_color_attachment_write, Layout::attachment, true};
     case Usage::attachment_blend:
-      if (resource.depth_format) return {depth_stages, depth_access, Layout::attachment, true};
+      if (depth) return {depth_stages, depth_access, Layout::attachment, true};
       return {stage_color_attachment_output, access_color_attachment_read | access_color_attachment_write,
               Layout::attachment, true};
     case Usage::buffer_read:
@@ -69,6 +68,27 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
       return {shader, access_shader_storage_write, Layout::none, true};
   }
   return {};
+}
+
+// Every combination worked out once: per access, the switch's jump mispredicted.
+constexpr size_t usage_count = static_cast<size_t>(Usage::buffer_write) + 1;
+using AccessTable = std::array<std::array<std::array<std::array<AccessInfo, 2>, 2>, 2>, usage_count>;
+constexpr AccessTable access_table = [] {
+  AccessTable table{};
+  for (size_t u = 0; u < usage_count; ++u)
+    for (int queue = 0; queue < 2; ++queue)
+      for (int buffer = 0; buffer < 2; ++buffer)
+        for (int depth = 0; depth < 2; ++depth)
+          table[u][queue][buffer][depth] =
+              describe_access(static_cast<Usage>(u), static_cast<Queue>(queue), buffer != 0, depth != 0);
+  return table;
+}();
+
+}  // namespace
+
+AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource) {
+  return access_table[static_cast<size_t>(usage)][static_cast<size_t>(queue)]
+                     [resource.kind == ResourceKind::buffer][resource.depth_format];
 }
 
 std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order,
