@@ -1,17 +1,14 @@
 #include "graph/schema.h"
 
+#include "graph/short_text.h"
+
 namespace lg {
 namespace {
 
 template <class T>
 int find_named(const std::vector<T>& list, std::string_view name) {
-  // Port and param names are short and mostly differ in length or first letter: those are
-  // compared before the call that compares the rest.
-  for (size_t k = 0; k < list.size(); ++k) {
-    const std::string& candidate = list[k].name;
-    if (candidate.size() == name.size() && (name.empty() || candidate[0] == name[0]) && candidate == name)
-      return static_cast<int>(k);
-  }
+  for (size_t k = 0; k < list.size(); ++k)
+    if (same_short_text(list[k].name, name)) return static_cast<int>(k);
   return -1;
 }
 

@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <unordered_map>
 
+#include "graph/short_text.h"
 #include "graph/spelling.h"
 
 namespace lg {
@@ -74,7 +75,7 @@ class NodeIds {
   size_t slot(std::string_view id) const {
     const size_t mask = slots_.size() - 1;
     size_t s = NameHash{}(id)&mask;
-    while (slots_[s] >= 0 && g_.nodes[slots_[s]].id != id) s = (s + 1) & mask;
+    while (slots_[s] >= 0 && !same_short_text(g_.nodes[slots_[s]].id, id)) s = (s + 1) & mask;
     return s;
   }
 };
