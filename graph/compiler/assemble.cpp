@@ -13,9 +13,14 @@ class SlotNames {
   explicit SlotNames(std::vector<std::string>& names) : names_(names) {}
 
   int of(const NodeSchema& s, const LoweredAccess& a) {
-    auto [base, added] = base_.try_emplace(&s, ids_.size());
-    if (added) ids_.resize(ids_.size() + s.inputs.size() + s.outputs.size() + s.resources.size(), -1);
-    const size_t at = base->second + a.port +
+    // A pass's accesses share its schema: the map is asked once a pass, not once an access.
+    if (&s != last_schema_) {
+      auto [base, added] = base_.try_emplace(&s, ids_.size());
+      if (added) ids_.resize(ids_.size() + s.inputs.size() + s.outputs.size() + s.resources.size(), -1);
+      last_schema_ = &s;
+      last_base_ = base->second;
+    }
+    const size_t at = last_base_ + a.port +
                       (a.target == PassUse::Target::input    ? 0
                        : a.target == PassUse::Target::output ? s.inputs.size()
                                                              : s.inputs.size() + s.outputs.size());
@@ -27,6 +32,8 @@ class SlotNames {
   std::vector<std::string>& names_;
   std::unordered_map<const NodeSchema*, size_t> base_;  // schema -> its first entry in ids_
   std::vector<int> ids_;                                // per schema port: index into names_, -1 until used
+  const NodeSchema* last_schema_ = nullptr;             // the schema last asked for, and its base
+  size_t last_base_ = 0;
 
   static std::string spelled(const NodeSchema& s, const LoweredAccess& a) {
     switch (a.target) {
@@ -50,8 +57,17 @@ class SlotNames {
   }
 };
 
+// Releases a vector's memory now, not when its owner goes.
+template <class T>
+void release(T& container) {
+  T().swap(container);
+}
+
 }  // namespace
 
+// Built part by part, each IR released once the plan has what it keeps of it, and the plan's
+// largest array (its nodes) made last: the plan reuses the IRs' memory instead of growing the
+// heap past both, which the next compile would fault in again once the heap is trimmed.
 Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& states, LoweredGraph&& lowered,
               const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
               MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options) {
@@ -63,8 +79,43 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
   // Nodes in topological order (ties by id), so the plan does not depend on the file's order.
   std::vector<int> plan_index(graph.nodes.size());
   for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
-  plan.nodes.reserve(node_order.size());
+
+  SlotNames slot_names(plan.slot_names);
+  size_t accesses = 0;
+  for (const LoweredPass& lp : lowered.passes) accesses += lp.accesses.size();
+  plan.accesses.reserve(accesses);
   plan.passes.reserve(order.size());
+  for (int index : order) {
+    LoweredPass& lp = lowered.passes[index];
+    const NodeSchema& s = *resolved.nodes[lp.node].schema;
+    plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
+                             static_cast<uint32_t>(plan.accesses.size()), static_cast<uint32_t>(lp.accesses.size()),
+                             lp.is_static, lp.cache_key);
+    for (const auto& a : lp.accesses) plan.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
+  }
+  release(lowered.passes);
+  lowered.arena.reset();
+
+  plan.resources.reserve(lowered.resources.size());
+  for (size_t r = 0; r < lowered.resources.size(); ++r) {
+    auto lifetime = lowered.resources[r].lifetime;
+    bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
+    if (lives[r].used() && !persistent) plan.memory.transient_unaliased += memory.placements[r].size;
+    plan.resources.emplace_back(std::move(lowered.resources[r]), lives[r].first, lives[r].last,
+                                std::move(memory.placements[r]));
+    plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
+  }
+  release(lowered.resources);
+  release(memory.placements);
+  plan.blocks = memory.blocks;
+  plan.predecessors = std::move(memory.predecessors);
+  plan.memory.transient = memory.blocks[0].size;
+  plan.memory.persistent = memory.blocks[1].size;
+  plan.barriers = std::move(barriers);
+  for (LoweredOutput& o : lowered.outputs)
+    plan.outputs.push_back({o.node < 0 ? -1 : plan_index[o.node], std::move(o.port), std::move(o.resources)});
+
+  plan.nodes.reserve(node_order.size());
   auto kept_params = lowered.static_params.begin();  // in lowering order, which is node_order
   for (int n : node_order) {
     const NodeSchema& s = *resolved.nodes[n].schema;
@@ -80,34 +131,6 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }
-  SlotNames slot_names(plan.slot_names);
-  size_t accesses = 0;
-  for (const LoweredPass& lp : lowered.passes) accesses += lp.accesses.size();
-  plan.accesses.reserve(accesses);
-  for (int index : order) {
-    LoweredPass& lp = lowered.passes[index];
-    const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
-                             static_cast<uint32_t>(plan.accesses.size()), static_cast<uint32_t>(lp.accesses.size()),
-                             lp.is_static, lp.cache_key);
-    for (const auto& a : lp.accesses) plan.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
-  }
-  plan.resources.reserve(lowered.resources.size());
-  for (size_t r = 0; r < lowered.resources.size(); ++r) {
-    auto lifetime = lowered.resources[r].lifetime;
-    bool persistent = lifetime == ResourceLifetime::cached || lifetime == ResourceLifetime::history;
-    if (lives[r].used() && !persistent) plan.memory.transient_unaliased += memory.placements[r].size;
-    plan.resources.emplace_back(std::move(lowered.resources[r]), lives[r].first, lives[r].last,
-                                std::move(memory.placements[r]));
-    plan.resources.back().desc.node = plan_index[plan.resources.back().desc.node];
-  }
-  plan.blocks = memory.blocks;
-  plan.predecessors = std::move(memory.predecessors);
-  plan.memory.transient = memory.blocks[0].size;
-  plan.memory.persistent = memory.blocks[1].size;
-  plan.barriers = std::move(barriers);
-  for (LoweredOutput& o : lowered.outputs)
-    plan.outputs.push_back({o.node < 0 ? -1 : plan_index[o.node], std::move(o.port), std::move(o.resources)});
   return plan;
 }
 
