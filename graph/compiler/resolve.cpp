@@ -55,27 +55,48 @@ struct NameHash {
 };
 
 // Node index by id: open addressing in one array, as a map with a node per entry costs an
-// allocation per graph node.
+// allocation per graph node. Each slot keeps its id's hash, and the ids are copied back to back:
+// a lookup compares hashes in the slots and reads one compact run of text, instead of a
+// graph node's id scattered through the node list (a cache miss each in large graphs).
 class NodeIds {
  public:
-  explicit NodeIds(const Graph& g) : g_(g), slots_(std::bit_ceil(2 * g.nodes.size() + 1), -1) {
+  explicit NodeIds(const Graph& g) : slots_(std::bit_ceil(2 * g.nodes.size() + 1)) {
+    starts_.reserve(g.nodes.size() + 1);
+    size_t bytes = 0;
+    for (const GraphNode& n : g.nodes) bytes += n.id.size();
+    text_.reserve(bytes);
+    for (const GraphNode& n : g.nodes) {
+      starts_.push_back(static_cast<uint32_t>(text_.size()));
+      text_ += n.id;
+    }
+    starts_.push_back(static_cast<uint32_t>(text_.size()));
     for (size_t k = 0; k < g.nodes.size(); ++k) {
-      size_t s = slot(g.nodes[k].id);
-      if (slots_[s] < 0) slots_[s] = static_cast<int>(k);  // a repeated id (already reported) keeps its first node
+      const size_t hash = NameHash{}(g.nodes[k].id);
+      Slot& s = slots_[slot(g.nodes[k].id, hash)];
+      if (s.node < 0) s = {static_cast<uint32_t>(hash), static_cast<int>(k)};  // a repeated id (already reported) keeps its first node
     }
   }
 
-  int find(std::string_view id) const { return slots_[slot(id)]; }
+  int find(std::string_view id) const { return slots_[slot(id, NameHash{}(id))].node; }
 
  private:
-  const Graph& g_;
-  std::vector<int> slots_;  // node index, or -1 for an empty slot; never more than half full
+  struct Slot {
+    uint32_t hash = 0;  // the low bits of the id's hash
+    int node = -1;      // node index, or -1 for an empty slot
+  };
+  std::vector<Slot> slots_;       // never more than half full
+  std::string text_;              // every node's id, back to back
+  std::vector<uint32_t> starts_;  // node -> where its id starts in text_; one more for the end
+
+  std::string_view id_of(int node) const { return {text_.data() + starts_[node], starts_[node + 1] - starts_[node]}; }
 
   // The slot holding `id`, or the empty one where it would go.
-  size_t slot(std::string_view id) const {
+  size_t slot(std::string_view id, size_t hash) const {
     const size_t mask = slots_.size() - 1;
-    size_t s = NameHash{}(id)&mask;
-    while (slots_[s] >= 0 && !same_short_text(g_.nodes[slots_[s]].id, id)) s = (s + 1) & mask;
+    size_t s = hash & mask;
+    while (slots_[s].node >= 0 &&
+           (slots_[s].hash != static_cast<uint32_t>(hash) || !same_short_text(id_of(slots_[s].node), id)))
+      s = (s + 1) & mask;
     return s;
   }
 };
