@@ -125,7 +125,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     else if (states[n].kind == NodeState::Kind::active && !s.params.empty())
       params = node_params(resolved, n, options.roots);
     // Built in place (aggregates take parentheses in C++20): no temporary to move and destroy.
-    PlanNode& node = plan.nodes.emplace_back(graph.nodes[n].id, s.type, states[n].kind, std::move(states[n].reason),
+    PlanNode& node = plan.nodes.emplace_back(std::string(resolved.id(n)), s.type, states[n].kind, std::move(states[n].reason),
                                              std::vector<std::pair<std::string, std::string>>{}, std::move(params),
                                              lowered.nodes[n].is_static);
     for (size_t p = 0; p < s.passes.size(); ++p)

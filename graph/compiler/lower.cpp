@@ -55,13 +55,20 @@ class Lowerer {
       port_base_[n + 1] = port_base_[n] + static_cast<int>(r_.nodes[n].schema->outputs.size());
     ports_.resize(port_base_[count]);
     previous_.resize(port_base_[count]);
-    reserve(order);
+    // Read once in file order: the loops below visit nodes in topological order, which large
+    // graphs scatter, and need only this byte of each node's state.
+    kinds_.resize(count);
+    for (size_t n = 0; n < count; ++n) kinds_[n] = s_[n].kind;
+    reserve();
+    std::vector<int> output_nodes;  // active output nodes, in order
     for (int n : order) {
-      if (s_[n].kind == NodeState::Kind::culled) continue;
-      if (s_[n].kind == NodeState::Kind::bypassed)
+      if (kinds_[n] == NodeState::Kind::culled) continue;
+      if (kinds_[n] == NodeState::Kind::bypassed) {
         forward(n);
-      else
-        lower_node(n);
+        continue;
+      }
+      lower_node(n);
+      if (r_.nodes[n].schema->is_output) output_nodes.push_back(n);
     }
     // Backwards: binding a bundle inserts accesses, which would move the later slots.
     for (auto it = deferred_history_.rbegin(); it != deferred_history_.rend(); ++it) {
@@ -72,20 +79,19 @@ class Lowerer {
       auto [node, output] = r_.outputs[k];
       if (port(node, output).empty())
         d_.error(r_.graph->outputs[k].pos, json_pointer_append("/outputs", k),
-                 "output '" + r_.graph->outputs[k].port.text() + "' is empty: '" + id(node) + "' is bypassed (" +
+                 "output '" + r_.graph->outputs[k].port.text() + "' is empty: '" + std::string(id(node)) + "' is bypassed (" +
                      s_[node].reason + ") and forwards an input that is not linked");
       export_resources(port(node, output));
       add_output(-1, r_.graph->outputs[k].port.text(), port(node, output));
     }
-    for (int n : order)
-      if (s_[n].kind == NodeState::Kind::active && r_.nodes[n].schema->is_output)
-        for (int li : r_.nodes[n].input_link)
-          if (li >= 0) {
-            export_resources(source_of(li));
-            const ResolvedLink& l = r_.links[li];
-            add_output(n, id(l.from_node) + '.' + r_.nodes[l.from_node].schema->outputs[l.from_port].name,
-                       source_of(li));
-          }
+    for (int n : output_nodes)
+      for (int li : r_.nodes[n].input_link)
+        if (li >= 0) {
+          export_resources(source_of(li));
+          const ResolvedLink& l = r_.links[li];
+          add_output(n, joined({id(l.from_node), ".", r_.nodes[l.from_node].schema->outputs[l.from_port].name}),
+                     source_of(li));
+        }
     return std::move(out_);
   }
 
@@ -100,14 +106,15 @@ class Lowerer {
   std::vector<Span> ports_;     // per output port: its resources (a bypassed node's are its input's)
   std::vector<Span> previous_;  // per output port: previous-frame copies, made on demand
   std::vector<Span> internal_;  // the node being lowered: its internal resources
+  std::vector<NodeState::Kind> kinds_;  // per node, a copy of its state's kind
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
   // instead copies them and touches twice the memory. The accesses get one block of the arena.
-  void reserve(const std::vector<int>& order) {
+  void reserve() {
     size_t passes = 0, resources = 0, uses = 0;
-    for (int n : order) {
-      if (s_[n].kind != NodeState::Kind::active) continue;
+    for (size_t n = 0; n < kinds_.size(); ++n) {
+      if (kinds_[n] != NodeState::Kind::active) continue;
       const NodeSchema& s = *r_.nodes[n].schema;
       passes += s.passes.size();
       for (const auto& pass : s.passes) uses += most_accesses(s, pass);
@@ -133,7 +140,7 @@ class Lowerer {
     return count;
   }
 
-  const std::string& id(int n) const { return r_.graph->nodes[n].id; }
+  std::string_view id(int n) const { return r_.id(n); }
   Span& port(int node, int output) { return ports_[port_base_[node] + output]; }
 
   Span source_of(int link) {
@@ -256,7 +263,8 @@ class Lowerer {
     const NodeSchema& producer = *r_.nodes[l.from_node].schema;
     int forwarded = forwarded_input(r_, s_, l.from_node, l.from_port);
     d_.error(r_.graph->links[l.source].to_pos, json_pointer_append("/links", static_cast<size_t>(l.source)) + "/to",
-             "input '" + id(n) + "." + r_.nodes[n].schema->inputs[input].name + "' gets nothing: '" + id(l.from_node) +
+             "input '" + joined({id(n), ".", r_.nodes[n].schema->inputs[input].name}) + "' gets nothing: '" +
+                 std::string(id(l.from_node)) +
                  "' is bypassed (" + s_[l.from_node].reason + ") and its input '" + producer.inputs[forwarded].name +
                  "' is not linked");
   }

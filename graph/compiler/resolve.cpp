@@ -55,21 +55,23 @@ struct NameHash {
 };
 
 // Node index by id: open addressing in one array, as a map with a node per entry costs an
-// allocation per graph node. Each slot keeps its id's hash, and the ids are copied back to back:
-// a lookup compares hashes in the slots and reads one compact run of text, instead of a
-// graph node's id scattered through the node list (a cache miss each in large graphs).
+// allocation per graph node. Each slot keeps its id's hash, and the ids are read from the
+// resolved graph's compact copy: a lookup compares hashes in the slots and reads one short run
+// of text, instead of a graph node's id scattered through the node list (a cache miss each in
+// large graphs).
 class NodeIds {
  public:
-  explicit NodeIds(const Graph& g) : slots_(std::bit_ceil(2 * g.nodes.size() + 1)) {
-    starts_.reserve(g.nodes.size() + 1);
+  // Fills `ids` (id_text, id_starts) from the graph, and looks ids up there.
+  NodeIds(const Graph& g, ResolvedGraph& ids) : ids_(ids), slots_(std::bit_ceil(2 * g.nodes.size() + 1)) {
     size_t bytes = 0;
     for (const GraphNode& n : g.nodes) bytes += n.id.size();
-    text_.reserve(bytes);
+    ids.id_text.reserve(bytes);
+    ids.id_starts.reserve(g.nodes.size() + 1);
     for (const GraphNode& n : g.nodes) {
-      starts_.push_back(static_cast<uint32_t>(text_.size()));
-      text_ += n.id;
+      ids.id_starts.push_back(static_cast<uint32_t>(ids.id_text.size()));
+      ids.id_text += n.id;
     }
-    starts_.push_back(static_cast<uint32_t>(text_.size()));
+    ids.id_starts.push_back(static_cast<uint32_t>(ids.id_text.size()));
     for (size_t k = 0; k < g.nodes.size(); ++k) {
       const size_t hash = NameHash{}(g.nodes[k].id);
       Slot& s = slots_[slot(g.nodes[k].id, hash)];
@@ -84,18 +86,15 @@ class NodeIds {
     uint32_t hash = 0;  // the low bits of the id's hash
     int node = -1;      // node index, or -1 for an empty slot
   };
-  std::vector<Slot> slots_;       // never more than half full
-  std::string text_;              // every node's id, back to back
-  std::vector<uint32_t> starts_;  // node -> where its id starts in text_; one more for the end
-
-  std::string_view id_of(int node) const { return {text_.data() + starts_[node], starts_[node + 1] - starts_[node]}; }
+  const ResolvedGraph& ids_;
+  std::vector<Slot> slots_;  // never more than half full
 
   // The slot holding `id`, or the empty one where it would go.
   size_t slot(std::string_view id, size_t hash) const {
     const size_t mask = slots_.size() - 1;
     size_t s = hash & mask;
     while (slots_[s].node >= 0 &&
-           (slots_[s].hash != static_cast<uint32_t>(hash) || !same_short_text(id_of(slots_[s].node), id)))
+           (slots_[s].hash != static_cast<uint32_t>(hash) || !same_short_text(ids_.id(slots_[s].node), id)))
       s = (s + 1) & mask;
     return s;
   }
@@ -132,7 +131,7 @@ class Resolver {
   const Registry& r_;
   Diagnostics& d_;
   ResolvedGraph out_;
-  NodeIds ids_{g_};
+  NodeIds ids_{g_, out_};  // after out_, whose id_text it fills
   // Node ids compared for "did you mean" suggestions. Each unknown reference compares against
   // every id, so without a bound a file with many nodes and many bad links took hours.
   size_t guess_budget_ = 100'000;

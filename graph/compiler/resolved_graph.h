@@ -2,7 +2,10 @@
 // params filled in with their defaults. Indices refer to Graph::nodes and schema port lists.
 #pragma once
 
+#include <cstdint>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "graph/graph.h"
@@ -40,6 +43,14 @@ struct ResolvedGraph {
   std::vector<int> input_links;                // every node's input links, back to back
   std::vector<ResolvedLink> links;
   std::vector<std::pair<int, int>> outputs;  // (node, output port) requested by the file
+  // Every node's id, back to back, and where each starts (one more entry for the end): later
+  // phases read ids from this compact run rather than from the graph's nodes, which large
+  // graphs scatter over megabytes.
+  std::string id_text;
+  std::vector<uint32_t> id_starts;
+  std::string_view id(int node) const {
+    return {id_text.data() + id_starts[node], id_starts[node + 1] - id_starts[node]};
+  }
 };
 
 }  // namespace lg
