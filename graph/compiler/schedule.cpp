@@ -50,6 +50,7 @@ std::vector<int> schedule(const LoweredGraph& lowered) {
   std::vector<std::pair<int, int>> keyed;  // (-depth, place in the list): a stable sort, one buffer
   for (int p = 0; p < count; ++p) {
     std::span<int> list = before[p];
+    if (list.size() < 2) continue;  // most passes: nothing to order
     keyed.clear();
     for (size_t k = 0; k < list.size(); ++k) keyed.emplace_back(-depth[list[k]], static_cast<int>(k));
     std::sort(keyed.begin(), keyed.end());
