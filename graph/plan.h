@@ -15,12 +15,13 @@
 
 namespace lg {
 
+// Members largest first, in each record: no padding between them.
 struct PlanNode {
   std::string id, type;
-  NodeState::Kind state = NodeState::Kind::active;
   std::string reason;                                        // bypassed or culled: why
   std::vector<std::pair<std::string, std::string>> dropped;  // (pass, why) for dropped passes
   JsonValue params = JsonValue::object();                    // defaults filled, paths absolute
+  NodeState::Kind state = NodeState::Kind::active;
   bool is_static = false;
 };
 
@@ -32,13 +33,13 @@ struct PlanAccess {
 };
 
 struct PlanPass {
-  std::string name;  // "bloom/downsample"
-  int node = -1;     // index into Plan::nodes
-  std::string pass;  // "downsample"
-  Queue queue = Queue::compute;
-  uint32_t first_access = 0, access_count = 0;  // its run of Plan::accesses
-  bool is_static = false;
+  std::string name;        // "bloom/downsample"
+  std::string pass;        // "downsample"
   uint64_t cache_key = 0;  // 0 unless static
+  int node = -1;           // index into Plan::nodes
+  uint32_t first_access = 0, access_count = 0;  // its run of Plan::accesses
+  Queue queue = Queue::compute;
+  bool is_static = false;
 };
 
 struct PlanResource {

@@ -88,9 +88,9 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];
     const NodeSchema& s = *resolved.nodes[lp.node].schema;
-    plan.passes.emplace_back(std::move(lp.name), plan_index[lp.node], s.passes[lp.pass].name, lp.queue,
+    plan.passes.emplace_back(std::move(lp.name), s.passes[lp.pass].name, lp.cache_key, plan_index[lp.node],
                              static_cast<uint32_t>(plan.accesses.size()), static_cast<uint32_t>(lp.accesses.size()),
-                             lp.is_static, lp.cache_key);
+                             lp.queue, lp.is_static);
     for (const auto& a : lp.accesses) plan.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
   }
   release(lowered.passes);
@@ -125,9 +125,9 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     else if (states[n].kind == NodeState::Kind::active && !s.params.empty())
       params = node_params(resolved, n, options.roots);
     // Built in place (aggregates take parentheses in C++20): no temporary to move and destroy.
-    PlanNode& node = plan.nodes.emplace_back(std::string(resolved.id(n)), s.type, states[n].kind, std::move(states[n].reason),
+    PlanNode& node = plan.nodes.emplace_back(std::string(resolved.id(n)), s.type, std::move(states[n].reason),
                                              std::vector<std::pair<std::string, std::string>>{}, std::move(params),
-                                             lowered.nodes[n].is_static);
+                                             states[n].kind, lowered.nodes[n].is_static);
     for (size_t p = 0; p < s.passes.size(); ++p)
       if (auto why = states[n].why_dropped(p); !why.empty()) node.dropped.emplace_back(s.passes[p].name, why);
   }

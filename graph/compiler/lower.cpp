@@ -317,13 +317,13 @@ class Lowerer {
         continue;
       }
       const PassSpec& spec = s.passes[p];
-      LoweredPass pass{.node = n,
-                       .pass = static_cast<int>(p),
-                       .name = joined({id(n), "/", spec.name}),
-                       .queue = spec.queue,
+      LoweredPass pass{.name = joined({id(n), "/", spec.name}),
                        .accesses = std::pmr::vector<LoweredAccess>(out_.arena.get()),
-                       .is_static = is_static,
-                       .cache_key = is_static ? fnv1a(key, spec.name) : 0};
+                       .cache_key = is_static ? fnv1a(key, spec.name) : 0,
+                       .node = n,
+                       .pass = static_cast<int>(p),
+                       .queue = spec.queue,
+                       .is_static = is_static};
       int pass_index = static_cast<int>(out_.passes.size());
       pass.accesses.reserve(most_accesses(s, spec));
       for (const PassUse& use : spec.uses) {

@@ -25,16 +25,18 @@ enum class ResourceLifetime : uint8_t {
 };
 std::string_view lifetime_name(ResourceLifetime l);
 
+// Members largest first, here and in the plan's records: no padding between them (88 bytes,
+// not 96), as large graphs hold tens of thousands.
 struct LoweredResource {
   std::string name;  // "bloom.color", "gbuf.gbuffer.depth", "bloom/chain", "gtao.ao@previous"
-  int node = -1;
-  ResourceKind kind = ResourceKind::texture2d;
   std::string_view format;  // a PortComponent's, in the program-long table of port types
-  bool depth_format = false;
-  uint32_t width = 1, height = 1, layers = 1, mips = 1;
   uint64_t bytes = 0;
-  ResourceLifetime lifetime = ResourceLifetime::transient;
+  int node = -1;
+  uint32_t width = 1, height = 1, layers = 1, mips = 1;
   int history_of = -1;  // for a previous-frame copy: the resource written this frame
+  ResourceKind kind = ResourceKind::texture2d;
+  bool depth_format = false;
+  ResourceLifetime lifetime = ResourceLifetime::transient;
 };
 
 struct LoweredAccess {
@@ -46,13 +48,13 @@ struct LoweredAccess {
 };
 
 struct LoweredPass {
-  int node = -1;
-  int pass = -1;     // index into the schema's passes
-  std::string name;  // "bloom/downsample"
-  Queue queue = Queue::compute;
+  std::string name;                          // "bloom/downsample"
   std::pmr::vector<LoweredAccess> accesses;  // in LoweredGraph::arena when lowered
+  uint64_t cache_key = 0;                    // static passes only
+  int node = -1;
+  int pass = -1;  // index into the schema's passes
+  Queue queue = Queue::compute;
   bool is_static = false;
-  uint64_t cache_key = 0;  // static passes only
 };
 
 struct LoweredNode {
