@@ -33,10 +33,10 @@ struct PlanAccess {
 };
 
 struct PlanPass {
-  std::string name;        // "bloom/downsample"
-  std::string pass;        // "downsample"
-  uint64_t cache_key = 0;  // 0 unless static
-  int node = -1;           // index into Plan::nodes
+  std::string name;                             // "bloom/downsample"
+  std::string pass;                             // "downsample"
+  uint64_t cache_key = 0;                       // 0 unless static
+  int node = -1;                                // index into Plan::nodes
   uint32_t first_access = 0, access_count = 0;  // its run of Plan::accesses
   Queue queue = Queue::compute;
   bool is_static = false;

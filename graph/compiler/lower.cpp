@@ -79,8 +79,8 @@ class Lowerer {
       auto [node, output] = r_.outputs[k];
       if (port(node, output).empty())
         d_.error(r_.graph->outputs[k].pos, json_pointer_append("/outputs", k),
-                 "output '" + r_.graph->outputs[k].port.text() + "' is empty: '" + std::string(id(node)) + "' is bypassed (" +
-                     s_[node].reason + ") and forwards an input that is not linked");
+                 "output '" + r_.graph->outputs[k].port.text() + "' is empty: '" + std::string(id(node)) +
+                     "' is bypassed (" + s_[node].reason + ") and forwards an input that is not linked");
       export_resources(port(node, output));
       add_output(-1, r_.graph->outputs[k].port.text(), port(node, output));
     }
@@ -106,7 +106,7 @@ class Lowerer {
   std::vector<Span> ports_;     // per output port: its resources (a bypassed node's are its input's)
   std::vector<Span> previous_;  // per output port: previous-frame copies, made on demand
   std::vector<Span> internal_;  // the node being lowered: its internal resources
-  std::vector<NodeState::Kind> kinds_;  // per node, a copy of its state's kind
+  std::vector<NodeState::Kind> kinds_;                          // per node, a copy of its state's kind
   std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
@@ -264,9 +264,8 @@ class Lowerer {
     int forwarded = forwarded_input(r_, s_, l.from_node, l.from_port);
     d_.error(r_.graph->links[l.source].to_pos, json_pointer_append("/links", static_cast<size_t>(l.source)) + "/to",
              "input '" + joined({id(n), ".", r_.nodes[n].schema->inputs[input].name}) + "' gets nothing: '" +
-                 std::string(id(l.from_node)) +
-                 "' is bypassed (" + s_[l.from_node].reason + ") and its input '" + producer.inputs[forwarded].name +
-                 "' is not linked");
+                 std::string(id(l.from_node)) + "' is bypassed (" + s_[l.from_node].reason + ") and its input '" +
+                 producer.inputs[forwarded].name + "' is not linked");
   }
 
   void lower_node(int n) {

@@ -75,7 +75,7 @@ class NodeIds {
     for (size_t k = 0; k < g.nodes.size(); ++k) {
       const size_t hash = NameHash{}(g.nodes[k].id);
       Slot& s = slots_[slot(g.nodes[k].id, hash)];
-      if (s.node < 0) s = {static_cast<uint32_t>(hash), static_cast<int>(k)};  // a repeated id (already reported) keeps its first node
+      if (s.node < 0) s = {static_cast<uint32_t>(hash), static_cast<int>(k)};  // a repeated id keeps its first
     }
   }
 
@@ -182,25 +182,38 @@ class Resolver {
   // Finds the node of a reference, or reports it. Returns -1 when unknown or untyped.
   int find_node(const PortRef& ref, SourcePos pos, RefPlace place) {
     int found = ids_.find(ref.node);
-    if (found < 0) {
-      std::string guess;
-      if (guess_budget_ >= g_.nodes.size()) {
-        guess_budget_ -= g_.nodes.size();
-        std::vector<std::string> ids;
-        for (const auto& n : g_.nodes) ids.push_back(n.id);
-        guess = closest_name(ref.node, ids);
-      }
-      d_.error(pos, place.pointer(),
-               "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+    if (found < 0) [[unlikely]] {
+      no_such_node(ref, pos, place);
       return -1;
     }
     return out_.nodes[found].schema ? found : -1;
   }
 
+  // Reporting is kept out of the lookups above and below, which run twice a link: inlined, its
+  // strings made every call set up a large stack frame.
+  [[gnu::noinline]] void no_such_node(const PortRef& ref, SourcePos pos, RefPlace place) {
+    std::string guess;
+    if (guess_budget_ >= g_.nodes.size()) {
+      guess_budget_ -= g_.nodes.size();
+      std::vector<std::string> ids;
+      for (const auto& n : g_.nodes) ids.push_back(n.id);
+      guess = closest_name(ref.node, ids);
+    }
+    d_.error(pos, place.pointer(),
+             "no node with id '" + ref.node + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
+  }
+
   int find_port(const PortRef& ref, int node, bool output, SourcePos pos, RefPlace place) {
     const NodeSchema& s = *out_.nodes[node].schema;
     int index = output ? s.find_output(ref.port) : s.find_input(ref.port);
-    if (index >= 0) return index;
+    if (index >= 0) [[likely]]
+      return index;
+    no_such_port(ref, s, output, pos, place);
+    return -1;
+  }
+
+  [[gnu::noinline]] void no_such_port(const PortRef& ref, const NodeSchema& s, bool output, SourcePos pos,
+                                      RefPlace place) {
     const auto& ports = output ? s.outputs : s.inputs;
     const auto& other = output ? s.inputs : s.outputs;
     std::string message =
@@ -215,7 +228,6 @@ class Resolver {
                                : "; did you mean '" + guess + "'?";
     }
     d_.error(pos, place.pointer(), message);
-    return -1;
   }
 
   void link(int k) {

@@ -87,8 +87,8 @@ constexpr AccessTable access_table = [] {
 }  // namespace
 
 AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource) {
-  return access_table[static_cast<size_t>(usage)][static_cast<size_t>(queue)]
-                     [resource.kind == ResourceKind::buffer][resource.depth_format];
+  return access_table[static_cast<size_t>(usage)][static_cast<size_t>(queue)][resource.kind == ResourceKind::buffer]
+                     [resource.depth_format];
 }
 
 std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order,
