@@ -226,10 +226,16 @@ class Lowerer {
       }
       res.width = elements, res.height = 1, res.mips = 1;
     }
-    if (res.width > limits::max_image_extent || res.height > limits::max_image_extent)
-      d_.error(r_.graph->nodes[n].pos, json_pointer_append("/nodes", static_cast<size_t>(n)),
-               "'" + res.name + "' would be " + std::to_string(res.width) + "x" + std::to_string(res.height) +
-                   ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
+    if (res.width > limits::max_image_extent || res.height > limits::max_image_extent) [[unlikely]]
+      too_large(n, res);
+  }
+
+  // The reports below are kept out of line: inlined, their strings made every call of the
+  // functions above set up a large stack frame.
+  [[gnu::noinline]] void too_large(int n, const LoweredResource& res) {
+    d_.error(r_.graph->nodes[n].pos, json_pointer_append("/nodes", static_cast<size_t>(n)),
+             "'" + res.name + "' would be " + std::to_string(res.width) + "x" + std::to_string(res.height) +
+                 ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
   }
 
   // Named "<node><separator><port>", and ".<component>" after that for a bundle's parts.
@@ -258,7 +264,12 @@ class Lowerer {
 
   // A bypassed node that forwards an unlinked input leaves its consumers with nothing.
   void check_fed(int n, int input, int link) {
-    if (link < 0 || r_.links[link].history || !source_of(link).empty()) return;
+    if (link < 0 || r_.links[link].history || !source_of(link).empty()) [[likely]]
+      return;
+    not_fed(n, input, link);
+  }
+
+  [[gnu::noinline]] void not_fed(int n, int input, int link) {
     const ResolvedLink& l = r_.links[link];
     const NodeSchema& producer = *r_.nodes[l.from_node].schema;
     int forwarded = forwarded_input(r_, s_, l.from_node, l.from_port);

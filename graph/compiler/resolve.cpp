@@ -155,11 +155,8 @@ class Resolver {
   void node(int n) {
     const GraphNode& gn = g_.nodes[n];
     ResolvedNode& rn = out_.nodes[n];
-    if (!rn.schema) {
-      std::string message = "unknown node type '" + gn.type + "'";
-      std::string guess = r_.closest_type(gn.type);
-      message += guess.empty() ? "; `lumagraph nodes` lists the known types" : "; did you mean '" + guess + "'?";
-      d_.error(gn.type_pos, node_pointer(n) + "/type", message);
+    if (!rn.schema) [[unlikely]] {
+      unknown_type(n);
       return;
     }
     const NodeSchema& s = *rn.schema;
@@ -168,15 +165,30 @@ class Resolver {
     for (size_t p = 0; p < s.params.size(); ++p) rn.params[p] = &s.params[p].default_value;
     for (const auto& [name, value] : gn.params.members()) {
       int index = s.find_param(name);
-      if (index >= 0) {
+      if (index >= 0) [[likely]]
         rn.params[index] = &value;
-        continue;
-      }
-      std::string message = "node '" + gn.id + "' (" + s.type + ") has no param '" + name + "'";
-      std::string guess = closest_name(name, names_of(s.params));
-      message += guess.empty() ? "; its params are: " + name_list(s.params) : "; did you mean '" + guess + "'?";
-      d_.error(value.pos(), node_pointer(n) + "/params/" + name, message);
+      else
+        no_such_param(n, name, value);
     }
+  }
+
+  // The reports are kept out of line, here and below: inlined, their strings made every call
+  // of the lookups set up a large stack frame.
+  [[gnu::noinline]] void unknown_type(int n) {
+    const GraphNode& gn = g_.nodes[n];
+    std::string message = "unknown node type '" + gn.type + "'";
+    std::string guess = r_.closest_type(gn.type);
+    message += guess.empty() ? "; `lumagraph nodes` lists the known types" : "; did you mean '" + guess + "'?";
+    d_.error(gn.type_pos, node_pointer(n) + "/type", message);
+  }
+
+  [[gnu::noinline]] void no_such_param(int n, const std::string& name, const JsonValue& value) {
+    const GraphNode& gn = g_.nodes[n];
+    const NodeSchema& s = *out_.nodes[n].schema;
+    std::string message = "node '" + gn.id + "' (" + s.type + ") has no param '" + name + "'";
+    std::string guess = closest_name(name, names_of(s.params));
+    message += guess.empty() ? "; its params are: " + name_list(s.params) : "; did you mean '" + guess + "'?";
+    d_.error(value.pos(), node_pointer(n) + "/params/" + name, message);
   }
 
   // Finds the node of a reference, or reports it. Returns -1 when unknown or untyped.
@@ -189,8 +201,6 @@ class Resolver {
     return out_.nodes[found].schema ? found : -1;
   }
 
-  // Reporting is kept out of the lookups above and below, which run twice a link: inlined, its
-  // strings made every call set up a large stack frame.
   [[gnu::noinline]] void no_such_node(const PortRef& ref, SourcePos pos, RefPlace place) {
     std::string guess;
     if (guess_budget_ >= g_.nodes.size()) {
