@@ -44,16 +44,6 @@ std::optional<Usage> parse_usage(std::string_view name) {
   return std::nullopt;
 }
 
-bool usage_writes(Usage u) {
-  return u == Usage::storage_write || u == Usage::storage_read_write || u == Usage::attachment_write ||
-         u == Usage::attachment_blend || u == Usage::buffer_write;
-}
-
-bool usage_reads(Usage u) {
-  return u == Usage::sampled || u == Usage::storage_read || u == Usage::storage_read_write ||
-         u == Usage::attachment_blend || u == Usage::buffer_read;
-}
-
 int NodeSchema::find_input(std::string_view name) const { return find_named(inputs, name); }
 int NodeSchema::find_output(std::string_view name) const { return find_named(outputs, name); }
 int NodeSchema::find_param(std::string_view name) const { return find_named(params, name); }

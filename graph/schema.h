@@ -64,8 +64,15 @@ enum class Usage : uint8_t {
 };
 std::string_view usage_name(Usage u);
 std::optional<Usage> parse_usage(std::string_view name);
-bool usage_writes(Usage u);
-bool usage_reads(Usage u);
+// Inline: the compiler asks both for every access of every pass.
+inline bool usage_writes(Usage u) {
+  return u == Usage::storage_write || u == Usage::storage_read_write || u == Usage::attachment_write ||
+         u == Usage::attachment_blend || u == Usage::buffer_write;
+}
+inline bool usage_reads(Usage u) {
+  return u == Usage::sampled || u == Usage::storage_read || u == Usage::storage_read_write ||
+         u == Usage::attachment_blend || u == Usage::buffer_read;
+}
 
 enum class Queue : uint8_t { graphics, compute };
 
