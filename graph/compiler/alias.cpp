@@ -30,7 +30,7 @@ class StartOffsets {
  public:
   // Offset 0 is known from the start (the first placement lands there), so every range,
   // placed or not, has a start number to mark with.
-  explicit StartOffsets(size_t resources) {
+  explicit StartOffsets(size_t resources) : known_(64) {
     sorted_.reserve(resources);
     id_of_rank_.reserve(resources);
     rank_of_id_.reserve(resources);
@@ -38,14 +38,18 @@ class StartOffsets {
     add(0);
   }
 
-  // The number of `offset`, which becomes a known start if it is not one yet. A new start
-  // shifts the ranks above it: O(starts), a few hundred steps a few hundred times (quadratic
-  // in the resources only if nearly every one starts at an offset of its own).
+  // The number of `offset`, which becomes a known start if it is not one yet. Most offsets
+  // are known: they are found in a hash table, without a binary search's mispredicted steps.
+  // A new start shifts the ranks above it: O(starts), a few hundred steps a few hundred times
+  // (quadratic in the resources only if nearly every one starts at an offset of its own).
   uint32_t add(uint64_t offset) {
+    Known& k = slot_of(offset);
+    if (k.id >= 0) return static_cast<uint32_t>(k.id);
     const auto at = std::lower_bound(sorted_.begin(), sorted_.end(), offset);
     const auto rank = static_cast<uint32_t>(at - sorted_.begin());
-    if (at != sorted_.end() && *at == offset) return id_of_rank_[rank];
     const auto id = static_cast<uint32_t>(rank_of_id_.size());
+    k = {offset, static_cast<int64_t>(id)};
+    if (2 * (id + 1) > known_.size()) grow();
     for (uint32_t& r : rank_of_id_) r += r >= rank;
     rank_of_id_.push_back(rank);
     sorted_.insert(at, offset);
@@ -78,6 +82,27 @@ class StartOffsets {
   }
 
  private:
+  struct Known {
+    uint64_t offset = 0;
+    int64_t id = -1;  // -1: an empty slot
+  };
+  std::vector<Known> known_;      // offset -> id, open addressing, never more than half full
+
+  // The slot holding `offset`, or the empty one where it would go.
+  Known& slot_of(uint64_t offset) {
+    const size_t mask = known_.size() - 1;
+    size_t slot = (offset * 0x9e3779b97f4a7c15ull) >> 32 & mask;
+    while (known_[slot].id >= 0 && known_[slot].offset != offset) slot = (slot + 1) & mask;
+    return known_[slot];
+  }
+
+  // Twice the slots: few offsets are distinct, so the table starts small and stays in cache.
+  void grow() {
+    std::vector<Known> old(2 * known_.size());
+    old.swap(known_);
+    for (const Known& k : old)
+      if (k.id >= 0) slot_of(k.offset) = k;
+  }
   std::vector<uint64_t> sorted_;  // by rank: the offset
   std::vector<uint32_t> id_of_rank_, rank_of_id_;
   std::vector<uint64_t> present_;   // by rank, a bit: marked since the last collect()

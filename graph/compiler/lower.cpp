@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <charconv>
-#include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <tuple>
 
@@ -19,6 +19,14 @@ uint64_t fnv1a(uint64_t h, std::string_view text) {
   return h;
 }
 constexpr uint64_t fnv_basis = 0xcbf29ce484222325ull;
+
+// A size in texels: x rounded down, at least 1 (NaN too). Past uint32's range it is uint32's
+// largest, which the extent limit then reports. No call to floor, which x86-64's baseline
+// instructions cannot do in line.
+uint32_t texels(double x) {
+  if (!(x >= 1.0)) return 1;
+  return x >= 4294967295.0 ? UINT32_MAX : static_cast<uint32_t>(x);
+}
 
 uint32_t full_mip_count(uint32_t w, uint32_t h) {
   return std::max(1u, static_cast<uint32_t>(std::bit_width(std::max(w, h))));
@@ -200,8 +208,8 @@ class Lowerer {
       }
     }
     double scale = rule.scale_param >= 0 ? number_param(n, rule.scale_param).value_or(1) : rule.scale;
-    res.width = static_cast<uint32_t>(std::max(1.0, std::floor(w * scale)));
-    res.height = static_cast<uint32_t>(std::max(1.0, std::floor(h * scale)));
+    res.width = texels(w * scale);
+    res.height = texels(h * scale);
     res.layers = res.kind == ResourceKind::cube ? 6 : 1;
     uint32_t full = full_mip_count(res.width, res.height);
     switch (rule.mips) {
