@@ -86,7 +86,7 @@ class StartOffsets {
     uint64_t offset = 0;
     int64_t id = -1;  // -1: an empty slot
   };
-  std::vector<Known> known_;      // offset -> id, open addressing, never more than half full
+  std::vector<Known> known_;  // offset -> id, open addressing, never more than half full
 
   // The slot holding `offset`, or the empty one where it would go.
   Known& slot_of(uint64_t offset) {
