@@ -3,7 +3,6 @@
 #include <bit>
 #include <cstring>
 #include <functional>
-#include <type_traits>
 #include <unordered_map>
 
 #include "graph/short_text.h"
@@ -118,8 +117,9 @@ class Resolver {
         inputs += s->inputs.size();
       }
     }
-    out_.param_values.reserve(params);  // reserved whole: the spans must not move
-    out_.input_links.reserve(inputs);
+    // Sized whole, once: the nodes' spans point into them.
+    out_.param_values.resize(params);
+    out_.input_links.assign(inputs, -1);
     for (size_t k = 0; k < g_.nodes.size(); ++k) node(static_cast<int>(k));
     for (size_t k = 0; k < g_.links.size(); ++k) link(static_cast<int>(k));
     for (size_t k = 0; k < g_.outputs.size(); ++k) output(static_cast<int>(k));
@@ -136,11 +136,13 @@ class Resolver {
   // every id, so without a bound a file with many nodes and many bad links took hours.
   size_t guess_budget_ = 100'000;
 
+  // The next `count` entries of `all`, from `used` on.
   template <class T>
-  static std::span<T> append(std::vector<T>& all, size_t count, std::type_identity_t<T> value) {
-    all.resize(all.size() + count, value);
-    return {all.data() + all.size() - count, count};
+  static std::span<T> take(std::vector<T>& all, size_t& used, size_t count) {
+    used += count;
+    return {all.data() + used - count, count};
   }
+  size_t params_used_ = 0, inputs_used_ = 0;  // of out_.param_values and out_.input_links
 
   static std::string node_pointer(int n) { return json_pointer_append("/nodes", static_cast<size_t>(n)); }
 
@@ -160,8 +162,8 @@ class Resolver {
       return;
     }
     const NodeSchema& s = *rn.schema;
-    rn.input_link = append(out_.input_links, s.inputs.size(), -1);
-    rn.params = append(out_.param_values, s.params.size(), nullptr);
+    rn.input_link = take(out_.input_links, inputs_used_, s.inputs.size());
+    rn.params = take(out_.param_values, params_used_, s.params.size());
     for (size_t p = 0; p < s.params.size(); ++p) rn.params[p] = &s.params[p].default_value;
     for (const auto& [name, value] : gn.params.members()) {
       int index = s.find_param(name);
