@@ -2,7 +2,6 @@
 
 #include <bit>
 #include <cstring>
-#include <functional>
 #include <unordered_map>
 
 #include "graph/short_text.h"
