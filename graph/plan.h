@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "graph/block_cache.h"
 #include "graph/compiler/alias.h"
 #include "graph/compiler/barrier.h"
 #include "graph/compiler/lower.h"
@@ -64,14 +65,14 @@ struct MemoryTotals {
 struct Plan {
   std::string name, file, scene;
   FrameSize frame;
-  std::vector<PlanNode> nodes;  // in topological order, ties broken by id
-  std::vector<PlanPass> passes;
-  std::vector<PlanAccess> accesses;  // every pass's, back to back in pass order: one allocation, not one a pass
-  std::vector<PlanResource> resources;
-  std::vector<Barrier> barriers;    // sorted by Barrier::before
+  CachedVector<PlanNode> nodes;  // in topological order, ties broken by id
+  CachedVector<PlanPass> passes;
+  CachedVector<PlanAccess> accesses;  // every pass's, back to back in pass order: one allocation, not one a pass
+  CachedVector<PlanResource> resources;
+  CachedVector<Barrier> barriers;   // sorted by Barrier::before
   std::vector<PlanOutput> outputs;  // the file's outputs, then output nodes' inputs
   std::vector<MemoryBlock> blocks;
-  std::vector<int> predecessors;  // the placements' predecessor lists, back to back
+  CachedVector<int> predecessors;  // the placements' predecessor lists, back to back
   // Every slot name the accesses use, once: "in.color", "out.ao", "tmp.chain". A graph of
   // thousands of nodes uses a few dozen.
   std::vector<std::string> slot_names;

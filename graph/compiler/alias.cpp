@@ -86,7 +86,7 @@ class StartOffsets {
     uint64_t offset = 0;
     int64_t id = -1;  // -1: an empty slot
   };
-  std::vector<Known> known_;  // offset -> id, open addressing, never more than half full
+  CachedVector<Known> known_;  // offset -> id, open addressing, never more than half full
 
   // The slot holding `offset`, or the empty one where it would go.
   Known& slot_of(uint64_t offset) {
@@ -98,15 +98,15 @@ class StartOffsets {
 
   // Twice the slots: few offsets are distinct, so the table starts small and stays in cache.
   void grow() {
-    std::vector<Known> old(2 * known_.size());
+    CachedVector<Known> old(2 * known_.size());
     old.swap(known_);
     for (const Known& k : old)
       if (k.id >= 0) slot_of(k.offset) = k;
   }
-  std::vector<uint64_t> sorted_;  // by rank: the offset
-  std::vector<uint32_t> id_of_rank_, rank_of_id_;
-  std::vector<uint64_t> present_;   // by rank, a bit: marked since the last collect()
-  std::vector<uint64_t> furthest_;  // by rank: the furthest end in that list; 0 when unmarked
+  CachedVector<uint64_t> sorted_;  // by rank: the offset
+  CachedVector<uint32_t> id_of_rank_, rank_of_id_;
+  CachedVector<uint64_t> present_;   // by rank, a bit: marked since the last collect()
+  CachedVector<uint64_t> furthest_;  // by rank: the furthest end in that list; 0 when unmarked
 };
 
 // Placed intervals of the schedule, for "who is alive at pass t" in O(log passes + answers):
@@ -117,7 +117,7 @@ class StartOffsets {
 // number (4 bytes), not its byte range: an interval sits in a dozen nodes.
 class StabbingTree {
  public:
-  StabbingTree(int passes, const std::vector<Lifetime>& intervals)
+  StabbingTree(int passes, const CachedVector<Lifetime>& intervals)
       : leaves_(std::max(passes, 1)), start_(2 * static_cast<size_t>(leaves_) + 2, 0) {
     // Nodes 1 to 2 leaves - 1, and node 2 leaves, which an interval's right edge visits
     // without covering.
@@ -144,9 +144,9 @@ class StabbingTree {
 
  private:
   int leaves_;
-  std::vector<int> start_;  // node -> its first slot in entries_; start_[node + 1] ends it
-  std::vector<int> fill_;   // node -> its next free slot
-  std::vector<int> entries_;
+  CachedVector<int> start_;  // node -> its first slot in entries_; start_[node + 1] ends it
+  CachedVector<int> fill_;   // node -> its next free slot
+  CachedVector<int> entries_;
 
   // Visits the nodes on both edges of [first, last], each with 1 if it is one of the nodes
   // that together cover the interval exactly, else 0: whether a node covers follows no
@@ -171,7 +171,7 @@ class GreedyPlacer {
  public:
   // `by_first`: the resources to place, sorted by first use. Internally a resource is its
   // position in that order, so the scan below reads placed ranges from one contiguous array.
-  GreedyPlacer(int passes, const std::vector<int>& by_first, const std::vector<Lifetime>& lives)
+  GreedyPlacer(int passes, const CachedVector<int>& by_first, const CachedVector<Lifetime>& lives)
       : alive_(passes, lifetimes_of(by_first, lives)),
         position_(lives.size(), -1),
         ranges_(by_first.size()),
@@ -214,19 +214,19 @@ class GreedyPlacer {
   uint64_t size() const { return size_; }
 
  private:
-  static std::vector<Lifetime> lifetimes_of(const std::vector<int>& resources, const std::vector<Lifetime>& lives) {
-    std::vector<Lifetime> out;
+  static CachedVector<Lifetime> lifetimes_of(const CachedVector<int>& resources, const CachedVector<Lifetime>& lives) {
+    CachedVector<Lifetime> out;
     out.reserve(resources.size());
     for (int r : resources) out.push_back(lives[r]);
     return out;
   }
 
   StabbingTree alive_;                // holds placed positions
-  std::vector<int> position_;         // resource -> position in first-use order
-  std::vector<int> begin_after_;      // pass -> the first position whose first use is later
-  std::vector<ByteRange> ranges_;     // by position: bytes, once placed
-  std::vector<uint8_t> placed_;       // by position: 1 once placed
-  std::vector<ByteRange> conflicts_;  // room for every placed resource
+  CachedVector<int> position_;        // resource -> position in first-use order
+  CachedVector<int> begin_after_;     // pass -> the first position whose first use is later
+  CachedVector<ByteRange> ranges_;    // by position: bytes, once placed
+  CachedVector<uint8_t> placed_;      // by position: 1 once placed
+  CachedVector<ByteRange> conflicts_;  // room for every placed resource
   StartOffsets starts_;               // of placed ranges
   uint64_t size_ = 0;
 };
@@ -241,7 +241,7 @@ class LastOwners {
 
   // Gives `owner` the bytes [start, end) and appends their last owners to `list`, each once;
   // returns how many it appended.
-  uint32_t take(uint64_t start, uint64_t end, int owner, std::vector<int>& list) {
+  uint32_t take(uint64_t start, uint64_t end, int owner, CachedVector<int>& list) {
     // Disjoint and sorted by start, so sorted by end too.
     auto first = std::partition_point(owned_.begin(), owned_.end(), [&](const Owned& o) { return o.end <= start; });
     auto last = first;
@@ -271,7 +271,7 @@ class LastOwners {
     uint64_t start = 0, end = 0;
     int owner = -1;
   };
-  std::vector<Owned> owned_;  // by start
+  CachedVector<Owned> owned_;  // by start
   std::vector<int> found_;    // the owners one take() replaces
 };
 
@@ -279,11 +279,11 @@ class LastOwners {
 // stably. Resources come in few sizes (frame-sized images of a handful of formats), so a hash
 // of the sizes and a counting sort over the distinct ones replace a comparison sort, whose
 // three-way key mispredicted on every other comparison.
-std::vector<int> largest_first(const std::vector<int>& by_first, const std::vector<ResourceMemory>& needs) {
+CachedVector<int> largest_first(const CachedVector<int>& by_first, const CachedVector<ResourceMemory>& needs) {
   const size_t mask = std::bit_ceil(2 * by_first.size() + 1) - 1;
-  std::vector<int> slot_size(mask + 1, -1);   // open addressing: index into `sizes`, or -1
+  CachedVector<int> slot_size(mask + 1, -1);  // open addressing: index into `sizes`, or -1
   std::vector<uint64_t> sizes;                // distinct, in order of first sight
-  std::vector<int> size_of(by_first.size());  // by position in by_first: index into `sizes`
+  CachedVector<int> size_of(by_first.size());  // by position in by_first: index into `sizes`
   for (size_t k = 0; k < by_first.size(); ++k) {
     const uint64_t bytes = needs[by_first[k]].bytes;
     size_t s = (bytes * 0x9e3779b97f4a7c15ull) >> 32 & mask;
@@ -302,19 +302,19 @@ std::vector<int> largest_first(const std::vector<int>& by_first, const std::vect
   std::vector<int> start(sizes.size() + 1, 0);
   for (int& d : size_of) ++start[(d = bucket[d]) + 1];
   for (size_t b = 0; b < sizes.size(); ++b) start[b + 1] += start[b];
-  std::vector<int> out(by_first.size());
+  CachedVector<int> out(by_first.size());
   for (size_t k = 0; k < by_first.size(); ++k) out[start[size_of[k]]++] = by_first[k];
   return out;
 }
 
 }  // namespace
 
-MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes, const AliasOptions& options) {
+MemoryLayout alias(const LoweredGraph& lowered, const CachedVector<Lifetime>& lifetimes, const AliasOptions& options) {
   const size_t count = lowered.resources.size();
   MemoryLayout out;
   out.blocks = {{0, options.enabled}, {0, false}};
   out.placements.resize(count);
-  std::vector<ResourceMemory> needs(count);
+  CachedVector<ResourceMemory> needs(count);
   for (size_t r = 0; r < count; ++r) {
     const LoweredResource& res = lowered.resources[r];
     if (!lifetimes[r].used()) continue;
@@ -325,7 +325,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
   }
 
   // Persistent resources, and everything when aliasing is off: one after another.
-  std::vector<int> shared;
+  CachedVector<int> shared;
   int passes = 0;
   for (size_t r = 0; r < count; ++r) {
     const LoweredResource& res = lowered.resources[r];
@@ -348,7 +348,7 @@ MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lif
 
   // By first use, ties by index: the order the placer scans and the order bytes change hands.
   // A counting sort over schedule positions (`shared` is in index order, and it is stable).
-  std::vector<int> start(static_cast<size_t>(passes) + 1, 0), by_first(shared.size());
+  CachedVector<int> start(static_cast<size_t>(passes) + 1, 0), by_first(shared.size());
   for (int r : shared) ++start[lifetimes[r].first + 1];
   for (int p = 0; p < passes; ++p) start[p + 1] += start[p];
   for (int r : shared) by_first[start[lifetimes[r].first]++] = r;

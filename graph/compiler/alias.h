@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "graph/block_cache.h"
 #include "graph/compiler/lifetimes.h"
 #include "graph/compiler/lowered_graph.h"
 
@@ -46,20 +47,20 @@ struct Placement {
 };
 
 // The run of `list` a placement's predecessors occupy.
-inline std::span<const int> predecessors_in(const std::vector<int>& list, const Placement& p) {
+inline std::span<const int> predecessors_in(const CachedVector<int>& list, const Placement& p) {
   return {list.data() + p.first_predecessor, p.predecessor_count};
 }
 
 struct MemoryLayout {
   std::vector<MemoryBlock> blocks;  // [0] frame-transient, [1] persistent
-  std::vector<Placement> placements;
-  std::vector<int> predecessors;  // every placement's, back to back
+  CachedVector<Placement> placements;
+  CachedVector<int> predecessors;  // every placement's, back to back
   std::span<const int> predecessors_of(int resource) const {
     return predecessors_in(predecessors, placements[resource]);
   }
 };
 
-MemoryLayout alias(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes, const AliasOptions& options);
+MemoryLayout alias(const LoweredGraph& lowered, const CachedVector<Lifetime>& lifetimes, const AliasOptions& options);
 JsonValue dump_memory(const LoweredGraph& lowered, const MemoryLayout& memory);
 
 }  // namespace lg

@@ -69,15 +69,15 @@ void release(T& container) {
 // largest array (its nodes) made last: the plan reuses the IRs' memory instead of growing the
 // heap past both, which the next compile would fault in again once the heap is trimmed.
 Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& states, LoweredGraph&& lowered,
-              const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
-              MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options) {
+              const CachedVector<int>& node_order, const CachedVector<int>& order, const CachedVector<Lifetime>& lives,
+              MemoryLayout&& memory, CachedVector<Barrier> barriers, const AssembleOptions& options) {
   Plan plan;
   plan.name = graph.name;
   plan.file = graph.file;
   plan.scene = options.scene_name;
   plan.frame = options.frame;
   // Nodes in topological order (ties by id), so the plan does not depend on the file's order.
-  std::vector<int> plan_index(graph.nodes.size());
+  CachedVector<int> plan_index(graph.nodes.size());
   for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
 
   SlotNames slot_names(plan.slot_names);

@@ -3,9 +3,9 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "graph/asset_paths.h"
+#include "graph/block_cache.h"
 #include "graph/compiler/alias.h"
 #include "graph/compiler/barrier.h"
 #include "graph/compiler/lifetimes.h"
@@ -25,7 +25,7 @@ struct AssembleOptions {
 // Takes over what the plan keeps of the IRs passed as rvalues (names, reasons, placements)
 // rather than copying it.
 Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& states, LoweredGraph&& lowered,
-              const std::vector<int>& node_order, const std::vector<int>& order, const std::vector<Lifetime>& lives,
-              MemoryLayout&& memory, std::vector<Barrier> barriers, const AssembleOptions& options);
+              const CachedVector<int>& node_order, const CachedVector<int>& order, const CachedVector<Lifetime>& lives,
+              MemoryLayout&& memory, CachedVector<Barrier> barriers, const AssembleOptions& options);
 
 }  // namespace lg

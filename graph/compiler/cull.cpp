@@ -14,8 +14,8 @@ int forwarded_input(const ResolvedGraph& resolved, const NodeStates& states, int
 
 NodeStates cull(const ResolvedGraph& resolved, NodeStates states) {
   const size_t count = resolved.nodes.size();
-  std::vector<char> live(count, 0);
-  std::vector<int> stack;
+  CachedVector<char> live(count, 0);
+  CachedVector<int> stack;
   auto visit = [&](int n) {
     if (!live[n]) live[n] = 1, stack.push_back(n);
   };
@@ -39,7 +39,7 @@ NodeStates cull(const ResolvedGraph& resolved, NodeStates states) {
   }
   // Every bypassed node that would have used a dead one, named in id order so the reason does
   // not depend on the order of the file's links.
-  std::vector<std::vector<std::string_view>> bypassed_consumers(count);
+  CachedVector<std::vector<std::string_view>> bypassed_consumers(count);
   for (const auto& l : resolved.links)
     if (!live[l.from_node] && live[l.to_node] && states[l.to_node].kind == NodeState::Kind::bypassed)
       bypassed_consumers[l.from_node].push_back(resolved.graph->nodes[l.to_node].id);

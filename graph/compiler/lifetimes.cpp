@@ -4,8 +4,8 @@
 
 namespace lg {
 
-std::vector<Lifetime> lifetimes(const LoweredGraph& lowered, const std::vector<int>& order) {
-  std::vector<Lifetime> out(lowered.resources.size());
+CachedVector<Lifetime> lifetimes(const LoweredGraph& lowered, const CachedVector<int>& order) {
+  CachedVector<Lifetime> out(lowered.resources.size());
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
     for (const auto& a : lowered.passes[order[pos]].accesses) {
       Lifetime& l = out[a.resource];
@@ -23,7 +23,7 @@ std::vector<Lifetime> lifetimes(const LoweredGraph& lowered, const std::vector<i
   return out;
 }
 
-JsonValue dump_lifetimes(const LoweredGraph& lowered, const std::vector<Lifetime>& lives) {
+JsonValue dump_lifetimes(const LoweredGraph& lowered, const CachedVector<Lifetime>& lives) {
   JsonValue out = JsonValue::object();
   for (size_t r = 0; r < lives.size(); ++r) {
     JsonValue range = JsonValue::array();

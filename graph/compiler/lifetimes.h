@@ -2,8 +2,7 @@
 // the frame live to its end; cached and history resources live across frames.
 #pragma once
 
-#include <vector>
-
+#include "graph/block_cache.h"
 #include "graph/compiler/lowered_graph.h"
 
 namespace lg {
@@ -13,8 +12,8 @@ struct Lifetime {
   bool used() const { return first >= 0; }
 };
 
-std::vector<Lifetime> lifetimes(const LoweredGraph& lowered, const std::vector<int>& order);
+CachedVector<Lifetime> lifetimes(const LoweredGraph& lowered, const CachedVector<int>& order);
 
-JsonValue dump_lifetimes(const LoweredGraph& lowered, const std::vector<Lifetime>& lifetimes);
+JsonValue dump_lifetimes(const LoweredGraph& lowered, const CachedVector<Lifetime>& lifetimes);
 
 }  // namespace lg

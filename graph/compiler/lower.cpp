@@ -55,7 +55,7 @@ class Lowerer {
   Lowerer(const ResolvedGraph& r, const NodeStates& s, FrameSize f, const AssetRoots& roots, Diagnostics& d)
       : r_(r), s_(s), frame_(f), roots_(roots), d_(d) {}
 
-  LoweredGraph run(const std::vector<int>& order) {
+  LoweredGraph run(const CachedVector<int>& order) {
     const size_t count = r_.nodes.size();
     out_.nodes.resize(count);
     port_base_.resize(count + 1, 0);
@@ -68,7 +68,7 @@ class Lowerer {
     kinds_.resize(count);
     for (size_t n = 0; n < count; ++n) kinds_[n] = s_[n].kind;
     reserve();
-    std::vector<int> output_nodes;  // active output nodes, in order
+    CachedVector<int> output_nodes;  // active output nodes, in order
     for (int n : order) {
       if (kinds_[n] == NodeState::Kind::culled) continue;
       if (kinds_[n] == NodeState::Kind::bypassed) {
@@ -110,12 +110,12 @@ class Lowerer {
   const AssetRoots& roots_;
   Diagnostics& d_;
   LoweredGraph out_;
-  std::vector<int> port_base_;  // node -> index of its first output in ports_
-  std::vector<Span> ports_;     // per output port: its resources (a bypassed node's are its input's)
-  std::vector<Span> previous_;  // per output port: previous-frame copies, made on demand
-  std::vector<Span> internal_;  // the node being lowered: its internal resources
-  std::vector<NodeState::Kind> kinds_;                          // per node, a copy of its state's kind
-  std::vector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
+  CachedVector<int> port_base_;          // node -> index of its first output in ports_
+  CachedVector<Span> ports_;             // per output port: its resources (a bypassed node's are its input's)
+  CachedVector<Span> previous_;          // per output port: previous-frame copies, made on demand
+  CachedVector<Span> internal_;          // the node being lowered: its internal resources
+  CachedVector<NodeState::Kind> kinds_;  // per node, a copy of its state's kind
+  CachedVector<std::tuple<int, size_t, int>> deferred_history_;  // (pass, access slot, link)
 
   // Room for what the active nodes make (previous-frame copies aside): growing the arrays
   // instead copies them and touches twice the memory. The accesses get one block of the arena.
@@ -432,7 +432,7 @@ std::string_view lifetime_name(ResourceLifetime l) {
   return names[static_cast<int>(l)];
 }
 
-std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const std::vector<int>& topo_order,
+std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const CachedVector<int>& topo_order,
                                   const NodeStates& states, FrameSize frame, const AssetRoots& roots,
                                   Diagnostics& diagnostics) {
   size_t before = diagnostics.error_count();

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "graph/asset_paths.h"
+#include "graph/block_cache.h"
 #include "graph/compiler/lowered_graph.h"
 #include "graph/compiler/node_states.h"
 #include "graph/compiler/resolved_graph.h"
@@ -18,7 +19,7 @@ struct FrameSize {
   friend bool operator==(const FrameSize&, const FrameSize&) = default;
 };
 
-std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const std::vector<int>& topo_order,
+std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const CachedVector<int>& topo_order,
                                   const NodeStates& states, FrameSize frame, const AssetRoots& roots,
                                   Diagnostics& diagnostics);
 JsonValue dump_lowered(const LoweredGraph& lowered);

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "graph/block_cache.h"
 #include "graph/json_value.h"
 #include "graph/port_type.h"
 #include "graph/schema.h"
@@ -90,13 +91,13 @@ struct LoweredGraph {
   // copies of the graph (whose vectors allocate on their own) keep it alive. Declared first, so
   // destroyed after the passes.
   std::shared_ptr<std::pmr::monotonic_buffer_resource> arena;
-  std::vector<LoweredNode> nodes;   // one per graph node (culled ones stay empty)
-  std::vector<LoweredPass> passes;  // in a valid (topological) order
-  std::vector<LoweredResource> resources;
+  CachedVector<LoweredNode> nodes;   // one per graph node (culled ones stay empty)
+  CachedVector<LoweredPass> passes;  // in a valid (topological) order
+  CachedVector<LoweredResource> resources;
   std::vector<LoweredOutput> outputs;  // the file's outputs, then output nodes' inputs
   // (node, node_params) for each node of a static schema, in lowering order: what its cache key
   // covers, kept so the plan does not build the params again.
-  std::vector<std::pair<int, JsonValue>> static_params;
+  CachedVector<std::pair<int, JsonValue>> static_params;
 };
 
 }  // namespace lg

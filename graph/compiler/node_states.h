@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "graph/block_cache.h"
+
 namespace lg {
 
 struct NodeState {
@@ -18,7 +20,7 @@ struct NodeState {
   }
 };
 
-using NodeStates = std::vector<NodeState>;
+using NodeStates = CachedVector<NodeState>;
 
 // "active", "bypassed", "culled": as plans, dumps and frame statistics write them.
 inline std::string_view node_state_name(NodeState::Kind k) {

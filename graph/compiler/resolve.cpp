@@ -85,7 +85,7 @@ class NodeIds {
     int node = -1;      // node index, or -1 for an empty slot
   };
   const ResolvedGraph& ids_;
-  std::vector<Slot> slots_;  // never more than half full
+  CachedVector<Slot> slots_;  // never more than half full
 
   // The slot holding `id`, or the empty one where it would go.
   size_t slot(std::string_view id, size_t hash) const {
@@ -137,7 +137,7 @@ class Resolver {
 
   // The next `count` entries of `all`, from `used` on.
   template <class T>
-  static std::span<T> take(std::vector<T>& all, size_t& used, size_t count) {
+  static std::span<T> take(CachedVector<T>& all, size_t& used, size_t count) {
     used += count;
     return {all.data() + used - count, count};
   }

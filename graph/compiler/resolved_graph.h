@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "graph/block_cache.h"
 #include "graph/graph.h"
 #include "graph/schema.h"
 
@@ -38,16 +39,16 @@ struct ResolvedGraph {
   ResolvedGraph& operator=(ResolvedGraph&&) = default;
 
   const Graph* graph = nullptr;
-  std::vector<ResolvedNode> nodes;
-  std::vector<const JsonValue*> param_values;  // every node's params, back to back
-  std::vector<int> input_links;                // every node's input links, back to back
-  std::vector<ResolvedLink> links;
+  CachedVector<ResolvedNode> nodes;
+  CachedVector<const JsonValue*> param_values;  // every node's params, back to back
+  CachedVector<int> input_links;                // every node's input links, back to back
+  CachedVector<ResolvedLink> links;
   std::vector<std::pair<int, int>> outputs;  // (node, output port) requested by the file
   // Every node's id, back to back, and where each starts (one more entry for the end): later
   // phases read ids from this compact run rather than from the graph's nodes, which large
   // graphs scatter over megabytes.
   std::string id_text;
-  std::vector<uint32_t> id_starts;
+  CachedVector<uint32_t> id_starts;
   std::string_view id(int node) const {
     return {id_text.data() + id_starts[node], id_starts[node + 1] - id_starts[node]};
   }

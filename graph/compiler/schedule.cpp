@@ -12,8 +12,8 @@ PassDependencies pass_dependencies(const LoweredGraph& lowered) {
   struct Reader {
     int pass, next;
   };
-  std::vector<int> last_writer(lowered.resources.size(), -1), first_reader(lowered.resources.size(), -1);
-  std::vector<Reader> readers;
+  CachedVector<int> last_writer(lowered.resources.size(), -1), first_reader(lowered.resources.size(), -1);
+  CachedVector<Reader> readers;
   auto depend = [&](int p, int on) {
     if (on >= 0 && on != p) out.passes.push_back(on);
   };
@@ -36,18 +36,18 @@ PassDependencies pass_dependencies(const LoweredGraph& lowered) {
   return out;
 }
 
-std::vector<int> schedule(const LoweredGraph& lowered) {
+CachedVector<int> schedule(const LoweredGraph& lowered) {
   const int count = static_cast<int>(lowered.passes.size());
   PassDependencies before = pass_dependencies(lowered);
-  std::vector<char> needed(count, 0);
+  CachedVector<char> needed(count, 0);
   for (int p : before.passes) needed[p] = 1;
   // Visit the deepest producer first (as Sethi and Ullman order register allocation): a long
   // chain runs before the short side branches that join it, so their results do not wait
   // through the whole chain. Lowering order is topological, so one forward pass finds depths.
-  std::vector<int> depth(count, 0);
+  CachedVector<int> depth(count, 0);
   for (int p = 0; p < count; ++p)
     for (int q : before[p]) depth[p] = std::max(depth[p], depth[q] + 1);
-  std::vector<std::pair<int, int>> keyed;  // (-depth, place in the list): a stable sort, one buffer
+  CachedVector<std::pair<int, int>> keyed;  // (-depth, place in the list): a stable sort, one buffer
   for (int p = 0; p < count; ++p) {
     std::span<int> list = before[p];
     if (list.size() < 2) continue;  // most passes: nothing to order
@@ -59,10 +59,10 @@ std::vector<int> schedule(const LoweredGraph& lowered) {
   }
 
   // Iterative post-order (graphs may be chains of 10,000 passes).
-  std::vector<int> order;
+  CachedVector<int> order;
   order.reserve(count);
-  std::vector<char> visited(count, 0);
-  std::vector<std::pair<int, size_t>> stack;
+  CachedVector<char> visited(count, 0);
+  CachedVector<std::pair<int, size_t>> stack;
   for (int sink = 0; sink < count; ++sink) {
     if (needed[sink]) continue;
     stack.emplace_back(sink, 0);
@@ -85,7 +85,7 @@ std::vector<int> schedule(const LoweredGraph& lowered) {
   return order;
 }
 
-JsonValue dump_schedule(const LoweredGraph& lowered, const std::vector<int>& order) {
+JsonValue dump_schedule(const LoweredGraph& lowered, const CachedVector<int>& order) {
   JsonValue out = JsonValue::array();
   for (int p : order) out.push(lowered.passes[p].name);
   return out;

@@ -7,25 +7,25 @@
 #pragma once
 
 #include <span>
-#include <vector>
 
+#include "graph/block_cache.h"
 #include "graph/compiler/lowered_graph.h"
 
 namespace lg {
 
 // Pass indices (into LoweredGraph::passes) in execution order.
-std::vector<int> schedule(const LoweredGraph& lowered);
+CachedVector<int> schedule(const LoweredGraph& lowered);
 
 // For each pass, the passes it must follow: the writer of what it reads, and the readers and
 // writer before it of what it writes. All lists in one array (a pass may list one twice).
 struct PassDependencies {
-  std::vector<int> start;  // pass p's list is passes[start[p] .. start[p + 1])
-  std::vector<int> passes;
+  CachedVector<int> start;  // pass p's list is passes[start[p] .. start[p + 1])
+  CachedVector<int> passes;
   std::span<const int> operator[](size_t p) const { return {passes.data() + start[p], passes.data() + start[p + 1]}; }
   std::span<int> operator[](size_t p) { return {passes.data() + start[p], passes.data() + start[p + 1]}; }
 };
 PassDependencies pass_dependencies(const LoweredGraph& lowered);
 
-JsonValue dump_schedule(const LoweredGraph& lowered, const std::vector<int>& order);
+JsonValue dump_schedule(const LoweredGraph& lowered, const CachedVector<int>& order);
 
 }  // namespace lg

@@ -31,11 +31,11 @@ BarrierReason reason_between(const AccessInfo& before, const AccessInfo& after) 
 
 // Barriers by the pass they precede, in the order they were made (a counting sort: stable,
 // linear, one buffer).
-std::vector<Barrier> sorted_by_pass(std::vector<Barrier> barriers, size_t passes) {
-  std::vector<int> start(passes + 1, 0);
+CachedVector<Barrier> sorted_by_pass(CachedVector<Barrier> barriers, size_t passes) {
+  CachedVector<int> start(passes + 1, 0);
   for (const Barrier& b : barriers) ++start[b.before + 1];
   for (size_t p = 0; p < passes; ++p) start[p + 1] += start[p];
-  std::vector<Barrier> out(barriers.size());
+  CachedVector<Barrier> out(barriers.size());
   for (Barrier& b : barriers) out[start[b.before]++] = b;
   return out;
 }
@@ -91,14 +91,14 @@ AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource
                      [resource.depth_format];
 }
 
-std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order,
-                                 const MemoryLayout& memory) {
+CachedVector<Barrier> synchronize(const LoweredGraph& lowered, const CachedVector<int>& order,
+                                  const MemoryLayout& memory) {
   const size_t count = lowered.resources.size();
-  std::vector<Group> groups;
+  CachedVector<Group> groups;
   size_t accesses = 0;  // each starts at most one group: room for all, no regrowth
   for (int p : order) accesses += lowered.passes[p].accesses.size();
   groups.reserve(accesses);
-  std::vector<int> head(count, -1), tail(count, -1);  // per resource: its first and last group
+  CachedVector<int> head(count, -1), tail(count, -1);  // per resource: its first and last group
   std::vector<std::pair<int, AccessInfo>> uses;       // one pass's uses, one per resource
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
     const LoweredPass& pass = lowered.passes[order[pos]];
@@ -125,11 +125,11 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
     }
   }
   // A current history resource's partner (its previous-frame copy).
-  std::vector<int> previous_copy(count, -1);
+  CachedVector<int> previous_copy(count, -1);
   for (size_t r = 0; r < count; ++r)
     if (lowered.resources[r].history_of >= 0) previous_copy[lowered.resources[r].history_of] = static_cast<int>(r);
 
-  std::vector<Barrier> out;
+  CachedVector<Barrier> out;
   out.reserve(groups.size());  // at most one barrier per group
   for (size_t r = 0; r < count; ++r) {
     if (head[r] < 0) continue;
@@ -186,8 +186,8 @@ std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<
   return sorted_by_pass(std::move(out), order.size());
 }
 
-JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order,
-                        const std::vector<Barrier>& barriers) {
+JsonValue dump_barriers(const LoweredGraph& lowered, const CachedVector<int>& order,
+                        const CachedVector<Barrier>& barriers) {
   JsonValue out = JsonValue::array();
   for (const auto& b : barriers) {
     JsonValue& item = out.push(JsonValue::object());

@@ -7,8 +7,7 @@
 // the layout it is now read in needs no barrier at all.
 #pragma once
 
-#include <vector>
-
+#include "graph/block_cache.h"
 #include "graph/compiler/alias.h"
 #include "graph/compiler/barrier.h"
 #include "graph/compiler/lowered_graph.h"
@@ -23,8 +22,10 @@ struct AccessInfo {
 };
 AccessInfo access_info(Usage usage, Queue queue, const LoweredResource& resource);
 
-std::vector<Barrier> synchronize(const LoweredGraph& lowered, const std::vector<int>& order, const MemoryLayout& memory);
+CachedVector<Barrier> synchronize(const LoweredGraph& lowered, const CachedVector<int>& order,
+                                  const MemoryLayout& memory);
 
-JsonValue dump_barriers(const LoweredGraph& lowered, const std::vector<int>& order, const std::vector<Barrier>& barriers);
+JsonValue dump_barriers(const LoweredGraph& lowered, const CachedVector<int>& order,
+                        const CachedVector<Barrier>& barriers);
 
 }  // namespace lg

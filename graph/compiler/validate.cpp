@@ -77,8 +77,8 @@ std::string check_param_value(const ParamSpec& spec, const JsonValue& v) {
   return "a valid value";
 }
 
-std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
-                                         Diagnostics& diagnostics) {
+std::optional<CachedVector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
+                                          Diagnostics& diagnostics) {
   const Graph& g = *resolved.graph;
   size_t before = diagnostics.error_count();
   const int node_count = static_cast<int>(resolved.nodes.size());
@@ -145,24 +145,24 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
 
   // Kahn's algorithm over non-history links, ties broken by id so file order does not matter.
   // Each node's consumers, all in one array: node n's are consumers[start[n] .. start[n + 1]).
-  std::vector<int> start(node_count + 1, 0), pending(node_count, 0);
+  CachedVector<int> start(node_count + 1, 0), pending(node_count, 0);
   for (const auto& l : resolved.links)
     if (!l.history) ++start[l.from_node + 1], ++pending[l.to_node];
   for (int n = 0; n < node_count; ++n) start[n + 1] += start[n];
-  std::vector<int> consumers(start[node_count]), fill(start.begin(), start.end() - 1);
+  CachedVector<int> consumers(start[node_count]), fill(start.begin(), start.end() - 1);
   for (const auto& l : resolved.links)
     if (!l.history) consumers[fill[l.from_node]++] = l.to_node;
-  std::vector<uint64_t> prefix(node_count);
+  CachedVector<uint64_t> prefix(node_count);
   for (int n = 0; n < node_count; ++n) prefix[n] = id_prefix(g.nodes[n].id);
   auto later = [&](int a, int b) {
     return prefix[a] != prefix[b] ? prefix[a] > prefix[b] : g.nodes[a].id > g.nodes[b].id;
   };
-  std::vector<int> heap;
+  CachedVector<int> heap;
   heap.reserve(node_count);
-  std::priority_queue<int, std::vector<int>, decltype(later)> ready(later, std::move(heap));
+  std::priority_queue<int, CachedVector<int>, decltype(later)> ready(later, std::move(heap));
   for (int n = 0; n < node_count; ++n)
     if (pending[n] == 0) ready.push(n);
-  std::vector<int> order;
+  CachedVector<int> order;
   order.reserve(node_count);
   while (!ready.empty()) {
     int n = ready.top();
@@ -202,7 +202,7 @@ std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const As
   return order;
 }
 
-JsonValue dump_node_order(const ResolvedGraph& resolved, const std::vector<int>& order) {
+JsonValue dump_node_order(const ResolvedGraph& resolved, const CachedVector<int>& order) {
   JsonValue out = JsonValue::array();
   for (int n : order) out.push(resolved.graph->nodes[n].id);
   return out;

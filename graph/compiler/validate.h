@@ -5,19 +5,19 @@
 #pragma once
 
 #include <optional>
-#include <vector>
 
 #include "graph/asset_paths.h"
+#include "graph/block_cache.h"
 #include "graph/compiler/resolved_graph.h"
 #include "graph/diagnostics.h"
 
 namespace lg {
 
-std::optional<std::vector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
-                                         Diagnostics& diagnostics);
+std::optional<CachedVector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
+                                          Diagnostics& diagnostics);
 
 // The topological order as node ids.
-JsonValue dump_node_order(const ResolvedGraph& resolved, const std::vector<int>& order);
+JsonValue dump_node_order(const ResolvedGraph& resolved, const CachedVector<int>& order);
 
 // Checks one param value against its spec; empty when valid, else what was expected.
 std::string check_param_value(const ParamSpec& spec, const JsonValue& value);

@@ -104,7 +104,7 @@ inline std::string compile_errors(const Graph& graph, const Registry& registry, 
 struct Lowered {
   Graph graph;
   ResolvedGraph resolved;
-  std::vector<int> node_order;
+  CachedVector<int> node_order;
   NodeStates states;
   LoweredGraph lowered;
 };

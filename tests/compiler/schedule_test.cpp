@@ -10,7 +10,7 @@
 namespace lg {
 namespace {
 
-void expect_valid_schedule(const LoweredGraph& lowered, const std::vector<int>& order, const std::string& what) {
+void expect_valid_schedule(const LoweredGraph& lowered, const CachedVector<int>& order, const std::string& what) {
   const size_t count = lowered.passes.size();
   ASSERT_EQ(order.size(), count) << what;
   std::vector<int> position(count, -1);
@@ -57,7 +57,7 @@ void expect_valid_schedule(const LoweredGraph& lowered, const std::vector<int>& 
   }
 }
 
-std::vector<std::string> names(const LoweredGraph& lowered, const std::vector<int>& order) {
+std::vector<std::string> names(const LoweredGraph& lowered, const CachedVector<int>& order) {
   std::vector<std::string> out;
   for (int p : order) out.push_back(lowered.passes[p].name);
   return out;
@@ -89,7 +89,7 @@ TEST(CompilerSchedule, PassDependenciesOfOneResource) {
   EXPECT_EQ(sorted(deps[1]), std::vector<int>{0});
   EXPECT_EQ(sorted(deps[2]), (std::vector<int>{0, 1}));
   EXPECT_EQ(sorted(deps[3]), std::vector<int>{2});
-  EXPECT_EQ(schedule(g), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(schedule(g), (CachedVector<int>{0, 1, 2, 3}));
 }
 
 TEST(CompilerSchedule, ExamplesRespectEveryDependency) {

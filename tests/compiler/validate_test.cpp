@@ -13,7 +13,7 @@ namespace lg {
 namespace {
 
 struct Validated {
-  std::optional<std::vector<int>> order;
+  std::optional<CachedVector<int>> order;
   std::string errors;
 };
 
@@ -25,7 +25,7 @@ Validated run_validate(const Graph& g, const Registry& registry) {
 }
 
 // Every non-history link goes from an earlier node to a later one, and each node appears once.
-void expect_topological(const Graph& g, const Registry& registry, const std::vector<int>& order) {
+void expect_topological(const Graph& g, const Registry& registry, const CachedVector<int>& order) {
   ASSERT_EQ(order.size(), g.nodes.size());
   std::vector<int> position(g.nodes.size(), -1);
   for (size_t k = 0; k < order.size(); ++k) {
@@ -44,7 +44,7 @@ void expect_topological(const Graph& g, const Registry& registry, const std::vec
   }
 }
 
-std::vector<std::string> ids_in_order(const Graph& g, const std::vector<int>& order) {
+std::vector<std::string> ids_in_order(const Graph& g, const CachedVector<int>& order) {
   std::vector<std::string> ids;
   for (int n : order) ids.push_back(g.nodes[n].id);
   return ids;

@@ -1,0 +1,72 @@
+// The compiler's block cache: freed blocks of 4 KiB or more come back for requests of their
+// size class, smaller ones are not kept, what it keeps stays under its limit, and release
+// hands everything back.
+#include "graph/block_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "graph/compiler.h"
+#include "tests/support/synthetic_graphs.h"
+
+namespace lg {
+namespace {
+
+class BlockCacheTest : public ::testing::Test {
+ protected:
+  void SetUp() override { release_cached_blocks(); }
+  void TearDown() override { release_cached_blocks(); }
+};
+
+TEST_F(BlockCacheTest, AFreedBlockServesTheNextRequestOfItsClass) {
+  void* first = cached_allocate(100'000);
+  cached_free(first, 100'000);
+  // 100,000 bytes round up to 1.75 * 65,536 = 114,688, a class 110,000 bytes share.
+  EXPECT_EQ(cached_block_bytes(), 114'688u);
+  void* second = cached_allocate(110'000);
+  EXPECT_EQ(second, first);
+  EXPECT_EQ(cached_block_bytes(), 0u);
+  cached_free(second, 110'000);
+}
+
+TEST_F(BlockCacheTest, AnotherClassGetsAFreshBlock) {
+  void* block = cached_allocate(100'000);
+  cached_free(block, 100'000);
+  void* larger = cached_allocate(120'000);  // the next class up, 2 * 65,536
+  EXPECT_EQ(cached_block_bytes(), 114'688u);
+  cached_free(larger, 120'000);
+  EXPECT_EQ(cached_block_bytes(), 114'688u + 131'072u);
+}
+
+TEST_F(BlockCacheTest, SmallBlocksAreNotKept) {
+  cached_free(cached_allocate(4095), 4095);
+  EXPECT_EQ(cached_block_bytes(), 0u);
+  cached_free(cached_allocate(4096), 4096);
+  EXPECT_EQ(cached_block_bytes(), 4096u);
+}
+
+TEST_F(BlockCacheTest, KeepsNoMoreThanItsLimit) {
+  constexpr size_t bytes = 8u << 20;  // a size class of its own
+  std::vector<void*> blocks;
+  for (size_t k = 0; k < block_cache_limit / bytes + 3; ++k) blocks.push_back(cached_allocate(bytes));
+  for (void* b : blocks) cached_free(b, bytes);
+  EXPECT_EQ(cached_block_bytes(), block_cache_limit);
+  EXPECT_EQ(release_cached_blocks(), block_cache_limit);
+  EXPECT_EQ(cached_block_bytes(), 0u);
+}
+
+TEST_F(BlockCacheTest, ACompileLeavesItsArraysForTheNext) {
+  const Graph graph = test::make_random_dag({.nodes = 2000, .dead_fraction = 0.3, .seed = 7});
+  Diagnostics diagnostics;
+  { compile(graph, test::synthetic_registry(), {}, diagnostics); }
+  const size_t kept = cached_block_bytes();
+  EXPECT_GT(kept, 0u);
+  // The same graph again takes its blocks from the cache and gives them back.
+  { compile(graph, test::synthetic_registry(), {}, diagnostics); }
+  EXPECT_EQ(cached_block_bytes(), kept);
+  EXPECT_FALSE(diagnostics.has_errors()) << diagnostics.to_string();
+}
+
+}  // namespace
+}  // namespace lg
