@@ -78,7 +78,11 @@ class Lowerer {
       lower_node(n);
       if (r_.nodes[n].schema->is_output) output_nodes.push_back(n);
     }
-    // Backwards: binding a bundle inserts accesses, which would move the later slots.
+    // Room for the previous-frame copies (a source read by several history links counts once
+    // per link), then backwards: binding a bundle inserts accesses, which would move the later slots.
+    size_t copies = 0;
+    for (auto [pass, access, link] : deferred_history_) copies += source_of(link).count;
+    out_.resources.reserve(out_.resources.size() + copies);
     for (auto it = deferred_history_.rbegin(); it != deferred_history_.rend(); ++it) {
       auto [pass, access, link] = *it;
       bind_history(pass, access, link);

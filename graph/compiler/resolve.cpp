@@ -120,6 +120,7 @@ class Resolver {
     out_.param_values.resize(params);
     out_.input_links.assign(inputs, -1);
     for (size_t k = 0; k < g_.nodes.size(); ++k) node(static_cast<int>(k));
+    out_.links.reserve(g_.links.size());  // broken links are not kept: at most this many
     for (size_t k = 0; k < g_.links.size(); ++k) link(static_cast<int>(k));
     for (size_t k = 0; k < g_.outputs.size(); ++k) output(static_cast<int>(k));
     return std::move(out_);

@@ -14,6 +14,11 @@ PassDependencies pass_dependencies(const LoweredGraph& lowered) {
   };
   CachedVector<int> last_writer(lowered.resources.size(), -1), first_reader(lowered.resources.size(), -1);
   CachedVector<Reader> readers;
+  // Each access adds at most one reader, and mostly one dependency or none.
+  size_t accesses = 0;
+  for (const LoweredPass& pass : lowered.passes) accesses += pass.accesses.size();
+  readers.reserve(accesses);
+  out.passes.reserve(accesses);
   auto depend = [&](int p, int on) {
     if (on >= 0 && on != p) out.passes.push_back(on);
   };
@@ -63,6 +68,7 @@ CachedVector<int> schedule(const LoweredGraph& lowered) {
   order.reserve(count);
   CachedVector<char> visited(count, 0);
   CachedVector<std::pair<int, size_t>> stack;
+  stack.reserve(count);  // as deep as the longest chain: most of the graph in large ones
   for (int sink = 0; sink < count; ++sink) {
     if (needed[sink]) continue;
     stack.emplace_back(sink, 0);
