@@ -47,7 +47,9 @@ const char* kind_name(Kind k) { return k == Kind::chain ? "chain" : "random_dag"
 // small graph over and over learns its branches. One 100-node DAG compiled 0.063 ms a time,
 // 16 in turn 0.083 ms; from 1,000 nodes up the two are within 4%. There is one chain a length.
 constexpr int dag_seeds = 16;
-int variants(Kind kind) { return kind == Kind::chain ? 1 : dag_seeds; }
+int variants(Kind kind) {
+  return kind == Kind::chain ? 1 : dag_seeds;
+}
 
 test::RandomDagOptions dag_options(size_t nodes, int variant = 0) {
   return {.nodes = nodes,
