@@ -3,6 +3,7 @@
 #include <array>
 #include <bit>
 #include <mutex>
+#include <new>
 #include <utility>
 
 namespace lg {

@@ -1,13 +1,12 @@
 // Memory for the compiler's arrays and the Plan's, kept between compiles. glibc hands the free
 // top of its heap back to the kernel once it passes a threshold, so a compile after a freed one
 // faults every page of its arrays in again: at 10,000 nodes about 1,600 faults, 4 ms of a
-// 13.5 ms compile on a 2-core VM. Blocks of 4 KiB or more are kept when freed, by size class
+// 14 ms compile on a 2-core VM. Blocks of 4 KiB or more are kept when freed, by size class
 // (quarter steps between powers of two), and handed out again; smaller ones go to the heap.
 // What the cache holds is bounded (block_cache_limit) and can be handed back at any time.
 #pragma once
 
 #include <cstddef>
-#include <new>
 #include <vector>
 
 namespace lg {
