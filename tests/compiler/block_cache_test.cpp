@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <thread>
 #include <vector>
 
 #include "graph/compiler.h"
@@ -66,6 +68,31 @@ TEST_F(BlockCacheTest, ACompileLeavesItsArraysForTheNext) {
   { compile(graph, test::synthetic_registry(), {}, diagnostics); }
   EXPECT_EQ(cached_block_bytes(), kept);
   EXPECT_FALSE(diagnostics.has_errors()) << diagnostics.to_string();
+}
+
+// The editor compiles on a worker thread while the UI thread frees the plan it replaced, so
+// two threads take and give back blocks at once. Each marks the blocks it holds; a block handed
+// to both (a list corrupted by a race) shows the other's mark.
+TEST_F(BlockCacheTest, ThreadsNeverShareABlock) {
+  constexpr size_t sizes[] = {4096, 6000, 9000};
+  int clashes[2] = {0, 0};
+  auto churn = [&](uint64_t mark, int* clash) {
+    for (int round = 0; round < 100'000; ++round) {
+      uint64_t* held[3];
+      for (int k = 0; k < 3; ++k) {
+        held[k] = static_cast<uint64_t*>(cached_allocate(sizes[k]));
+        held[k][0] = held[k][1] = mark;
+      }
+      for (int k = 0; k < 3; ++k) {
+        *clash += held[k][0] != mark || held[k][1] != mark;
+        cached_free(held[k], sizes[k]);
+      }
+    }
+  };
+  std::thread a(churn, 1, &clashes[0]), b(churn, 2, &clashes[1]);
+  a.join();
+  b.join();
+  EXPECT_EQ(clashes[0] + clashes[1], 0);
 }
 
 }  // namespace
