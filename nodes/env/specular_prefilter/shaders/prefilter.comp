@@ -35,6 +35,7 @@
 // as `chain`: one texture read in the loop serves both; with a read in each branch lavapipe ran
 // the plain path nearly twice as long).
 #include "nodes/common/shaders/brdf.glsl"
+#include "nodes/common/shaders/finite.glsl"
 #include "nodes/env/common/shaders/cube_map.glsl"
 #include "nodes/env/common/shaders/ggx_sampling.glsl"
 
@@ -48,10 +49,6 @@ layout(push_constant) uniform Push {
   uint samples;
   uint filtered;  // 1: filtered importance sampling (the node); 0: plain, mip 0 only
 };
-
-vec3 finite_or_zero(vec3 c) {
-  return any(isnan(c)) || any(isinf(c)) ? vec3(0.0) : c;
-}
 
 // Each sample is blurred with a variance (along each axis) of kBlur times its solid angle
 // (lod_for_variance picks the lod that does so). Fitted in the emulation, pisa.hdr at 256

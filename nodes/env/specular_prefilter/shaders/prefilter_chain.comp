@@ -12,6 +12,7 @@
 // (prefilter.comp, lod_for_variance). In the emulation the [1 3 3 1] / 8 binomial (3/4 texel^2)
 // did as well at roughness 0.5 and 1 but not at 0.25 (0.60% at best), a [1 5 10 10 5 1] / 32
 // worse at all three.
+#include "nodes/common/shaders/finite.glsl"
 #include "nodes/env/common/shaders/cube_map.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -22,10 +23,6 @@ layout(binding = 2) uniform sampler2DArray input_mip0;  // the input's mip 0, fo
 layout(push_constant) uniform Push {
   uint first;  // 1: copy the input's mip 0
 };
-
-vec3 finite_or_zero(vec3 c) {
-  return any(isnan(c)) || any(isinf(c)) ? vec3(0.0) : c;
-}
 
 // The nearest value an rgba16f texel holds (half's normal range), so the store is exact:
 // lavapipe's stores round toward zero, which cascades down the chain, each level from the one

@@ -65,5 +65,5 @@ void main() {
     added += specular(s, rp, l.radiance.rgb, 4.0 * length(normal) * facing);
   }
   vec4 before = imageLoad(color, texel);
-  imageStore(color, texel, vec4(before.rgb + finite_or_zero3(added), before.a));
+  imageStore(color, texel, vec4(before.rgb + finite_or_zero(added), before.a));
 }

@@ -51,5 +51,5 @@ void main() {
       radiance += brdf_cosine(s, to_light * inversesqrt(d2)) * light.intensity.rgb * (window / d2);
     }
   }
-  imageStore(color, texel, vec4(finite_or_zero3(radiance), 1.0));
+  imageStore(color, texel, vec4(finite_or_zero(radiance), 1.0));
 }

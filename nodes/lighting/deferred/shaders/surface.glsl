@@ -3,6 +3,7 @@
 #define LG_DEFERRED_SURFACE_GLSL
 
 #include "nodes/common/shaders/brdf.glsl"
+#include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
 
@@ -16,12 +17,6 @@ bool read_surface(ivec2 texel, out Surface s) {
   vec2 material = texelFetch(gbuffer_material, texel, 0).rg;
   s = make_surface(p, n, camera.position.xyz, albedo, material.r, material.g);
   return true;
-}
-
-// NaN and Inf become 0, so one broken light or texel cannot spread through later passes.
-vec3 finite_or_zero3(vec3 c) {
-  bvec3 bad = bvec3((floatBitsToUint(c) & 0x7f800000u) == uvec3(0x7f800000u));
-  return any(bad) ? vec3(0.0) : c;
 }
 
 #endif
