@@ -81,9 +81,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
   for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);
 
   SlotNames slot_names(plan.slot_names);
-  size_t accesses = 0;
-  for (const LoweredPass& lp : lowered.passes) accesses += lp.accesses.size();
-  plan.accesses.reserve(accesses);
+  plan.accesses.reserve(lowered.access_count());
   plan.passes.reserve(order.size());
   for (int index : order) {
     LoweredPass& lp = lowered.passes[index];

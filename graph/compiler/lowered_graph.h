@@ -98,6 +98,13 @@ struct LoweredGraph {
   // (node, node_params) for each node of a static schema, in lowering order: what its cache key
   // covers, kept so the plan does not build the params again.
   CachedVector<std::pair<int, JsonValue>> static_params;
+
+  // Every pass's accesses together: what later phases reserve room for.
+  size_t access_count() const {
+    size_t count = 0;
+    for (const LoweredPass& pass : passes) count += pass.accesses.size();
+    return count;
+  }
 };
 
 }  // namespace lg

@@ -15,8 +15,7 @@ PassDependencies pass_dependencies(const LoweredGraph& lowered) {
   CachedVector<int> last_writer(lowered.resources.size(), -1), first_reader(lowered.resources.size(), -1);
   CachedVector<Reader> readers;
   // Each access adds at most one reader, and mostly one dependency or none.
-  size_t accesses = 0;
-  for (const LoweredPass& pass : lowered.passes) accesses += pass.accesses.size();
+  const size_t accesses = lowered.access_count();
   readers.reserve(accesses);
   out.passes.reserve(accesses);
   auto depend = [&](int p, int on) {
@@ -52,7 +51,7 @@ CachedVector<int> schedule(const LoweredGraph& lowered) {
   CachedVector<int> depth(count, 0);
   for (int p = 0; p < count; ++p)
     for (int q : before[p]) depth[p] = std::max(depth[p], depth[q] + 1);
-  CachedVector<std::pair<int, int>> keyed;  // (-depth, place in the list): a stable sort, one buffer
+  std::vector<std::pair<int, int>> keyed;  // (-depth, place in the list): a stable sort, one buffer
   for (int p = 0; p < count; ++p) {
     std::span<int> list = before[p];
     if (list.size() < 2) continue;  // most passes: nothing to order

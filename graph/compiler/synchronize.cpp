@@ -95,9 +95,7 @@ CachedVector<Barrier> synchronize(const LoweredGraph& lowered, const CachedVecto
                                   const MemoryLayout& memory) {
   const size_t count = lowered.resources.size();
   CachedVector<Group> groups;
-  size_t accesses = 0;  // each starts at most one group: room for all, no regrowth
-  for (int p : order) accesses += lowered.passes[p].accesses.size();
-  groups.reserve(accesses);
+  groups.reserve(lowered.access_count());              // each access starts at most one group: no regrowth
   CachedVector<int> head(count, -1), tail(count, -1);  // per resource: its first and last group
   std::vector<std::pair<int, AccessInfo>> uses;       // one pass's uses, one per resource
   for (int pos = 0; pos < static_cast<int>(order.size()); ++pos) {
