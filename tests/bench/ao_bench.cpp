@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/raytrace/world_mesh.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
 #include "nodes/occlusion/reference/scene_reference.h"
 #include "tests/occlusion/ao_render.h"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numeric>
 
-#include "nodes/occlusion/raytrace/ray_offset.h"
+#include "nodes/raytrace/ray_offset.h"
 
 namespace lg::test {
 

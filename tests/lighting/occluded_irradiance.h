@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "nodes/env/common/cube_map.h"
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/raytrace/ray_scene.h"
 
 namespace lg::test {
 

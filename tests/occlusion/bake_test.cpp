@@ -13,7 +13,7 @@
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
 #include "nodes/occlusion/bake/bake_run.h"
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/raytrace/world_mesh.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"

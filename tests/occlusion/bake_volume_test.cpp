@@ -12,8 +12,8 @@
 
 #include "api/renderer.h"
 #include "nodes/occlusion/bake/volume_lookup.h"
-#include "nodes/occlusion/raytrace/world_mesh.h"
-#include "nodes/occlusion/reference/camera_pixels.h"
+#include "nodes/raytrace/world_mesh.h"
+#include "nodes/raytrace/camera_pixels.h"
 #include "nodes/occlusion/reference/scene_reference.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/occlusion/ao_render.h"

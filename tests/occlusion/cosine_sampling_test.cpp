@@ -1,7 +1,7 @@
 // Stratified cosine sampling: every cell of the equal-area partition holds exactly one sample,
 // the directions follow the cosine law, the frame is orthonormal, and the jitter is a function
 // of (seed, index) alone.
-#include "nodes/occlusion/raytrace/cosine_sampling.h"
+#include "nodes/raytrace/cosine_sampling.h"
 
 #include <gtest/gtest.h>
 

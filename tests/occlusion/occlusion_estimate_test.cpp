@@ -2,7 +2,7 @@
 // exactly), the inside of a closed box (0 exactly), convex objects alone (1 exactly), a wall
 // beside a floor and a ceiling with max distance and falloff (analytic, within Monte Carlo
 // noise), and bit-identical results over any split of a batch.
-#include "nodes/occlusion/raytrace/occlusion_estimate.h"
+#include "nodes/occlusion/estimate/occlusion_estimate.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
-#include "nodes/occlusion/raytrace/cosine_sampling.h"
+#include "nodes/raytrace/cosine_sampling.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/occlusion/ray_test_scenes.h"
 

@@ -1,5 +1,5 @@
 // parallel_for: every index once, on any thread count, and a body's exception reaches the caller.
-#include "nodes/occlusion/raytrace/parallel_for.h"
+#include "nodes/raytrace/parallel_for.h"
 
 #include <gtest/gtest.h>
 

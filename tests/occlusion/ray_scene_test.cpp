@@ -1,6 +1,6 @@
 // RayScene: closest hits with distance, normal and primitive, occlusion within t_max, world
 // transforms of draws, empty and degenerate geometry, and errors for bad input.
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/raytrace/ray_scene.h"
 
 #include <gtest/gtest.h>
 

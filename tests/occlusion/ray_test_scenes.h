@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/raytrace/ray_scene.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg::test {

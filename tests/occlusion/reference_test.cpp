@@ -7,8 +7,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "nodes/occlusion/raytrace/ray_scene.h"
-#include "nodes/occlusion/reference/camera_pixels.h"
+#include "nodes/raytrace/ray_scene.h"
+#include "nodes/raytrace/camera_pixels.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
 #include "nodes/occlusion/reference/scene_reference.h"
 #include "runtime/scene/make_scene_view.h"

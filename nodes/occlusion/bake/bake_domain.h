@@ -24,8 +24,8 @@
 #include <string_view>
 #include <vector>
 
-#include "nodes/occlusion/raytrace/occlusion_estimate.h"
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/occlusion/estimate/occlusion_estimate.h"
+#include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
 

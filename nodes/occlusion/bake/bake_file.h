@@ -14,8 +14,8 @@
 
 #include "nodes/occlusion/bake/bake_domain.h"
 #include "nodes/occlusion/bake/bake_run.h"
-#include "nodes/occlusion/raytrace/occlusion_estimate.h"
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/occlusion/estimate/occlusion_estimate.h"
+#include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
 

@@ -2,7 +2,7 @@
 // estimate_sphere_visibility (volume points), batches of points spread over all cores.
 #include "nodes/occlusion/bake/bake_run.h"
 
-#include "nodes/occlusion/raytrace/parallel_for.h"
+#include "nodes/raytrace/parallel_for.h"
 
 namespace lg {
 

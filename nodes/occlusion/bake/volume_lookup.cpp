@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "nodes/occlusion/bake/bake_run.h"
-#include "nodes/occlusion/raytrace/parallel_for.h"
+#include "nodes/raytrace/parallel_for.h"
 
 namespace lg {
 

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "nodes/occlusion/bake/bake_domain.h"
-#include "nodes/occlusion/raytrace/occlusion_estimate.h"
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/occlusion/estimate/occlusion_estimate.h"
+#include "nodes/raytrace/ray_scene.h"
 
 namespace lg {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "nodes/occlusion/bake/bake_file.h"
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
 namespace {

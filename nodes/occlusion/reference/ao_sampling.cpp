@@ -3,8 +3,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "nodes/occlusion/raytrace/cosine_sampling.h"
-#include "nodes/occlusion/raytrace/occlusion_estimate.h"
+#include "nodes/raytrace/cosine_sampling.h"
+#include "nodes/occlusion/estimate/occlusion_estimate.h"
 
 namespace lg {
 

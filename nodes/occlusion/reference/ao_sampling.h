@@ -2,7 +2,7 @@
 // maximum distance and GTAO's falloff ramp), the directions of a pixel's rays (the same ones
 // whatever the geometry is traced against, so the full-scene and height-field references differ
 // only by what they trace), and how hit distances fold into visibility k_A, a bent normal and
-// its cone. The bakes' estimator (nodes/occlusion/raytrace/occlusion_estimate.h) has its own
+// its cone. The bakes' estimator (nodes/occlusion/estimate/occlusion_estimate.h) has its own
 // obscurance curve; GTAO's linear ramp is what these references must match.
 #pragma once
 
@@ -30,7 +30,7 @@ struct AoSettings {
 double occlusion_weight(double distance, const AoSettings& settings);
 
 // `settings.rays` cosine-distributed unit directions about unit `normal`, stratified
-// (nodes/occlusion/raytrace/cosine_sampling.h), jittered by the seed and `pixel` (y * width + x)
+// (nodes/raytrace/cosine_sampling.h), jittered by the seed and `pixel` (y * width + x)
 // alone: every reference gives a pixel the same directions about the same normal.
 std::vector<glm::dvec3> cosine_directions(glm::dvec3 normal, const AoSettings& settings, uint64_t pixel);
 

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "nodes/occlusion/raytrace/parallel_for.h"
-#include "nodes/occlusion/reference/camera_pixels.h"
+#include "nodes/raytrace/parallel_for.h"
+#include "nodes/raytrace/camera_pixels.h"
 
 namespace lg {
 namespace {

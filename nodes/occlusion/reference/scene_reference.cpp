@@ -5,10 +5,10 @@
 #include <limits>
 #include <optional>
 
-#include "nodes/occlusion/raytrace/parallel_for.h"
-#include "nodes/occlusion/raytrace/ray_offset.h"
-#include "nodes/occlusion/raytrace/world_mesh.h"
-#include "nodes/occlusion/reference/camera_pixels.h"
+#include "nodes/raytrace/parallel_for.h"
+#include "nodes/raytrace/ray_offset.h"
+#include "nodes/raytrace/world_mesh.h"
+#include "nodes/raytrace/camera_pixels.h"
 
 namespace lg {
 namespace {

@@ -1,13 +1,13 @@
 // The camera-view ray-traced reference on the full scene geometry: for the camera and frame
 // size of a GPU render, one primary ray per pixel centre (camera_pixels.h, the rasterizer's
 // projection), then AoSettings::rays stratified cosine rays about the surface's interpolated
-// shading normal (what the G-buffer stores), traced with Embree (nodes/occlusion/raytrace) on
+// shading normal (what the G-buffer stores), traced with Embree (nodes/raytrace) on
 // all cores, for k_A, the bent normal and its cone.
 #pragma once
 
 #include <cstdint>
 
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/raytrace/ray_scene.h"
 #include "nodes/occlusion/reference/ao_image.h"
 #include "nodes/occlusion/reference/ao_sampling.h"
 #include "runtime/scene/scene_view.h"

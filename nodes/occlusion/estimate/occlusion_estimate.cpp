@@ -1,6 +1,6 @@
 // estimate_occlusion(): N stratified cosine rays per point, summed in sample order in double
 // precision so the result does not depend on how points are spread over threads.
-#include "nodes/occlusion/raytrace/occlusion_estimate.h"
+#include "nodes/occlusion/estimate/occlusion_estimate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "nodes/occlusion/raytrace/cosine_sampling.h"
-#include "nodes/occlusion/raytrace/parallel_for.h"
-#include "nodes/occlusion/raytrace/ray_offset.h"
+#include "nodes/raytrace/cosine_sampling.h"
+#include "nodes/raytrace/parallel_for.h"
+#include "nodes/raytrace/ray_offset.h"
 
 namespace lg {
 namespace {

@@ -1,5 +1,5 @@
 // Stratified cosine-weighted hemisphere samples from hashed jitter (cosine_sampling.h).
-#include "nodes/occlusion/raytrace/cosine_sampling.h"
+#include "nodes/raytrace/cosine_sampling.h"
 
 #include <algorithm>
 #include <cmath>

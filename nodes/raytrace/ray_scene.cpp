@@ -1,6 +1,6 @@
 // RayScene: one Embree triangle geometry holding every triangle, in robust (watertight) mode so
 // rays through shared edges of closed meshes cannot slip between triangles.
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/raytrace/ray_scene.h"
 
 #include <embree3/rtcore.h>
 
@@ -10,7 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
 

@@ -26,7 +26,7 @@
 #include <span>
 #include <vector>
 
-#include "nodes/occlusion/raytrace/ray_scene.h"
+#include "nodes/raytrace/ray_scene.h"
 
 namespace lg {
 

@@ -1,6 +1,6 @@
 // parallel_for(): std::thread workers pulling blocks of indices from an atomic counter; and in
 // batches with progress reports between them.
-#include "nodes/occlusion/raytrace/parallel_for.h"
+#include "nodes/raytrace/parallel_for.h"
 
 #include <algorithm>
 #include <atomic>

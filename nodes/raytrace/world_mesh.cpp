@@ -1,5 +1,5 @@
 // make_world_mesh(): the SceneView's draws flattened into one world-space vertex list.
-#include "nodes/occlusion/raytrace/world_mesh.h"
+#include "nodes/raytrace/world_mesh.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

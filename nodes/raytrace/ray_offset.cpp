@@ -1,6 +1,6 @@
 // offset_ray_origin(): step each coordinate by whole units in the last place, away from the
 // surface, so that the step is relative to the coordinate's own precision.
-#include "nodes/occlusion/raytrace/ray_offset.h"
+#include "nodes/raytrace/ray_offset.h"
 
 #include <bit>
 #include <cmath>

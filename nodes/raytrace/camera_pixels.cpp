@@ -1,4 +1,4 @@
-#include "nodes/occlusion/reference/camera_pixels.h"
+#include "nodes/raytrace/camera_pixels.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
