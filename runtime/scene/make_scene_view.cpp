@@ -124,7 +124,9 @@ SceneView make_scene_view(const World& world, float aspect_ratio, const SceneVie
     view.has_environment = true;
     view.environment = {world.get<EnvironmentLight>(env).path, world.get<EnvironmentLight>(env).intensity};
   }
-  view.irradiance_volumes = static_cast<int>(world.count<IrradianceVolume>());
+  world.each<IrradianceVolume>([&](Entity e, const IrradianceVolume& v) {
+    view.irradiance_volumes.push_back({world.world_matrix(e), v.size, v.probe_counts, e.id()});
+  });
   view.reflection_probes = static_cast<int>(world.count<ReflectionProbe>());
   if (Entity post = first_with<PostProcessSettings>(world); !post.is_null())
     view.exposure = world.get<PostProcessSettings>(post).exposure;

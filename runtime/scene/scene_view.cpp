@@ -30,15 +30,15 @@ SceneSummary SceneView::summary() const {
   s.shadows = false;
   for (const auto& d : directional_lights) s.shadows |= d.casts_shadows;
   s.environment = has_environment;
-  s.irradiance_volumes = irradiance_volumes;
+  s.irradiance_volumes = int(irradiance_volumes.size());
   s.reflection_probes = reflection_probes;
   // Only the materials something is drawn with.
   s.glossy_materials = false;
   for (const auto& d : draws) {
     const PbrMaterial& m = material_of(d);
     s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f;
-    s.baked_occlusion |= d.mesh >= 0 && size_t(d.mesh) < meshes.size() && meshes[size_t(d.mesh)] &&
-                         meshes[size_t(d.mesh)]->occlusion;
+    s.baked_occlusion |=
+        d.mesh >= 0 && size_t(d.mesh) < meshes.size() && meshes[size_t(d.mesh)] && meshes[size_t(d.mesh)]->occlusion;
   }
   s.aperture = camera.aperture;
   s.focus_distance = camera.focus_distance;

@@ -109,6 +109,14 @@ struct RectLightData {  // one-sided lights emit toward cross(half_x, half_y)
   bool two_sided = false;
 };
 
+// A box of probes on a regular grid, centred on its entity (the IrradianceVolume component).
+struct IrradianceVolumeData {
+  glm::mat4 world{1.0f};  // the entity's frame
+  glm::vec3 size{1.0f};   // of the box, in that frame
+  glm::ivec3 probe_counts{4};
+  uint64_t entity = 0;  // Entity::id()
+};
+
 struct EnvironmentData {
   std::string path;        // an HDR/EXR file; empty: the procedural sky of the graph
   float intensity = 1.0f;  // multiplies the environment's radiance
@@ -129,7 +137,8 @@ struct SceneView {
   std::vector<RectLightData> rect_lights;
   bool has_environment = false;
   EnvironmentData environment;
-  int irradiance_volumes = 0, reflection_probes = 0;
+  std::vector<IrradianceVolumeData> irradiance_volumes;
+  int reflection_probes = 0;
   float exposure = 0.0f;  // EV from the world's PostProcessSettings
 
   // The draw's material, or the default PbrMaterial when it has none (material -1, which the ECS

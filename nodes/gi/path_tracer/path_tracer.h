@@ -1,11 +1,7 @@
 // The path-traced reference every global-illumination node is measured against: for each pixel
 // centre of the camera (the G-buffer's pixel geometry, nodes/raytrace/camera_pixels.h), N paths
-// with next-event estimation at every vertex (each light of PathLights and the environment
-// sampled on its own) and BRDF sampling, the two combined by multiple importance sampling
-// (power heuristic), Russian roulette after a few bounces. Materials, lights and environment are
-// the raster path's (surface_material.h, path_lights.h, environment_map.h); every surface is
-// two-sided, shaded on the side the ray arrives from, and reflects only into the geometric
-// hemisphere it is seen from.
+// of path_transport.h. Materials, lights and environment are the raster path's
+// (surface_material.h, path_lights.h, environment_map.h).
 //
 // Random numbers are hashes of (seed, pixel, sample, dimension), so a pixel's value does not
 // depend on which rows or threads computed it: a chunked run merges bit-identically.

@@ -1,0 +1,201 @@
+#include "nodes/gi/path_tracer/path_transport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "nodes/gi/path_tracer/microfacet_brdf.h"
+#include "nodes/raytrace/camera_hit.h"
+#include "nodes/raytrace/cosine_sampling.h"
+#include "nodes/raytrace/ray_offset.h"
+
+namespace lg {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double power_heuristic(double pdf, double other) {
+  const double a = pdf * pdf, b = other * other;
+  return a + b > 0.0 ? a / (a + b) : 0.0;
+}
+
+// A surface point as shading sees it: normals on the side the ray came from.
+struct Vertex {
+  glm::dvec3 position, geometric;
+  BrdfSurface brdf;
+  glm::dvec3 emission;
+};
+
+Vertex make_vertex(const PathScene& scene, const RayHit& hit, glm::dvec3 position, glm::dvec3 ray_direction) {
+  const SurfaceAttributes attributes = scene.surfaces().at(hit.primitive, position);
+  const SceneView& view = scene.view();
+  const SurfaceMaterial material = sample_material(view, view.draws[attributes.draw], attributes.uv);
+  glm::dvec3 geometric(hit.normal);
+  if (glm::dot(geometric, ray_direction) > 0.0) geometric = -geometric;
+  const glm::dvec3 shading = glm::dot(attributes.normal, geometric) < 0.0 ? -attributes.normal : attributes.normal;
+  return Vertex{position, geometric, make_brdf_surface(shading, material), material.emissive};
+}
+
+// Random dimensions of a bounce: lobe choice, BRDF direction (2), roulette, then 2 per light
+// and 2 for the environment.
+constexpr uint32_t kLightDimensions = 4;
+
+}  // namespace
+
+double PathRandom::get(uint32_t bounce, uint32_t dimension) const {
+  return hashed_uniform(seed_, path_, bounce * per_bounce_ + dimension);
+}
+
+// The path's current end and how light arriving there reaches the path's start: through the
+// first vertex's two lobes (their BRDF x cos / pdf), times the throughput of the rest.
+struct PathTransport::State {
+  Vertex vertex;
+  glm::dvec3 view;  // unit, from the end back along the path
+  glm::dvec3 diffuse{0.0}, specular{0.0};
+  glm::dvec3 throughput{1.0};
+  bool at_first = true;  // the end is the camera's visible surface
+
+  // Light `c` arriving at the end (after the first vertex's lobes are known).
+  void add(PathValue& out, bool scene_light, glm::dvec3 c) const {
+    if (at_first && scene_light) {
+      out.direct += (diffuse + specular) * c;
+    } else {
+      out.indirect_diffuse += diffuse * throughput * c;
+      out.specular += specular * throughput * c;
+    }
+  }
+};
+
+PathTransport::PathTransport(const PathScene& scene, uint32_t max_bounces, uint32_t russian_roulette_after)
+    : scene_(scene), max_bounces_(max_bounces), russian_roulette_after_(russian_roulette_after) {}
+
+uint32_t PathTransport::dimensions_per_bounce() const {
+  return kLightDimensions + 2 * uint32_t(scene_.lights().count()) + 2;
+}
+
+bool PathTransport::visible(glm::dvec3 position, glm::dvec3 geometric, glm::dvec3 direction, double distance) const {
+  if (!(glm::dot(direction, geometric) > 0.0)) return false;
+  const glm::vec3 origin = offset_ray_origin(glm::vec3(position), glm::vec3(geometric));
+  const float t_max = std::isinf(distance) ? std::numeric_limits<float>::infinity() : float(distance);
+  return !scene_.rays().occluded(origin, glm::vec3(direction), t_max);
+}
+
+// Next-event estimation at the end, then the BRDF's own sample and the segment it starts.
+bool PathTransport::step(State& s, uint32_t bounce, const PathRandom& random, PathValue& out) const {
+  const Vertex& v = s.vertex;
+  const BrdfSurface& brdf = v.brdf;
+  const double p_specular = specular_lobe_probability(brdf, s.view);
+  auto brdf_pdf = [&](glm::dvec3 l) {
+    return p_specular * specular_pdf(brdf, s.view, l) + (1.0 - p_specular) * diffuse_pdf(brdf, l);
+  };
+  // Light `weight` arriving from direction l, reflected toward the path's start.
+  auto reflect = [&](glm::dvec3 l, glm::dvec3 weight, bool scene_light) {
+    const BrdfCosine f = evaluate_brdf(brdf, s.view, l);
+    if (s.at_first) {
+      if (scene_light)
+        out.direct += f.sum() * weight;
+      else
+        out.indirect_diffuse += f.diffuse * weight, out.specular += f.specular * weight;
+    } else {
+      s.add(out, scene_light, f.sum() * weight);
+    }
+  };
+
+  const PathLights& lights = scene_.lights();
+  for (size_t i = 0; i < lights.count(); ++i) {
+    const std::optional<LightSample> ls =
+        lights.sample(i, v.position, random.pair(bounce, kLightDimensions + 2 * uint32_t(i)));
+    if (!ls || !visible(v.position, v.geometric, ls->direction, ls->distance)) continue;
+    const double mis = ls->pdf > 0.0 ? power_heuristic(ls->pdf, brdf_pdf(ls->direction)) : 1.0;
+    reflect(ls->direction, ls->weight * mis, lights.is_scene_light(i));
+  }
+  if (const EnvironmentMap* env = scene_.environment()) {
+    const auto es = env->sample(random.pair(bounce, kLightDimensions + 2 * uint32_t(lights.count())));
+    if (es && visible(v.position, v.geometric, es->direction, kInfinity))
+      reflect(es->direction, es->radiance / es->pdf * power_heuristic(es->pdf, brdf_pdf(es->direction)), false);
+  }
+
+  const glm::dvec3 l = random.get(bounce, 0) < p_specular ? sample_specular(brdf, s.view, random.pair(bounce, 1))
+                                                          : sample_diffuse(brdf, random.pair(bounce, 1));
+  if (!(glm::dot(l, v.geometric) > 0.0)) return false;  // below the surface: absorbed
+  const double pdf = brdf_pdf(l);
+  const BrdfCosine f = evaluate_brdf(brdf, s.view, l);
+  if (!(pdf > 0.0) || f.sum() == glm::dvec3(0.0)) return false;
+  if (s.at_first)
+    s.diffuse = f.diffuse / pdf, s.specular = f.specular / pdf;
+  else
+    s.throughput *= f.sum() / pdf;
+  const glm::dvec3 origin(offset_ray_origin(glm::vec3(v.position), glm::vec3(v.geometric)));
+  const bool more = segment(s, origin, l, pdf, bounce, random, out, nullptr);
+  s.at_first = false;
+  return more;
+}
+
+// The ray from `origin` along l: the lights it crosses and the environment or surface it ends
+// at. `pdf` is the density l was drawn with by a BRDF whose vertex also ran next-event
+// estimation; 0 for a probe's ray, whose start ran none: then nothing is weighted, and the
+// scene's lights it crosses are left out (they are direct light to whatever the probe lights).
+bool PathTransport::segment(State& s, glm::dvec3 origin, glm::dvec3 l, double pdf, uint32_t bounce,
+                            const PathRandom& random, PathValue& out, ProbeRay* first_hit) const {
+  const std::optional<RayHit> hit =
+      scene_.rays().intersect(glm::vec3(origin), glm::vec3(l), std::numeric_limits<float>::infinity());
+  const double t = hit ? double(hit->distance) : kInfinity;
+  const PathLights& lights = scene_.lights();
+  lights.each_crossed(origin, l, t, [&](size_t i, const LightCrossing& c) {
+    const bool scene_light = lights.is_scene_light(i);
+    if (pdf > 0.0)
+      s.add(out, scene_light, c.radiance * power_heuristic(pdf, c.pdf));
+    else if (!scene_light)
+      s.add(out, false, c.radiance);
+  });
+  if (first_hit) *first_hit = ProbeRay{{}, t, hit && glm::dot(glm::dvec3(hit->normal), l) > 0.0};
+  if (!hit) {
+    if (const EnvironmentMap* env = scene_.environment())
+      s.add(out, false, env->radiance(l) * (pdf > 0.0 ? power_heuristic(pdf, env->pdf(l)) : 1.0));
+    return false;
+  }
+  s.vertex = make_vertex(scene_, *hit, origin + l * t, l);
+  s.view = -l;
+  s.add(out, false, s.vertex.emission);  // emissive surfaces are not light-sampled: counted in full
+  if (pdf > 0.0 && bounce + 1 >= russian_roulette_after_) {
+    const glm::dvec3 total = (s.diffuse + s.specular) * s.throughput;
+    const double survive = std::min(std::max({total.r, total.g, total.b}), 0.95);
+    if (!(random.get(bounce, 3) < survive)) return false;
+    s.throughput /= survive;
+  }
+  return true;
+}
+
+PathValue PathTransport::camera_path(glm::dvec3 eye, glm::dvec3 direction, bool cull_backfaces,
+                                     const PathRandom& random) const {
+  PathValue out;
+  const std::optional<CameraHit> hit = first_camera_hit(scene_.rays(), eye, direction, cull_backfaces);
+  if (!hit) {  // the environment, with the sky's sun: what the camera sees without a reflection
+    if (const EnvironmentMap* env = scene_.environment()) out.emission += env->radiance(direction);
+    scene_.lights().each_crossed(eye, direction, kInfinity, [&](size_t i, const LightCrossing& c) {
+      if (!scene_.lights().is_scene_light(i)) out.emission += c.radiance;
+    });
+    return out;
+  }
+  State s{make_vertex(scene_, hit->hit, hit->position, direction), -direction};
+  out.emission = s.vertex.emission;
+  for (uint32_t bounce = 0; bounce < max_bounces_; ++bounce)
+    if (!step(s, bounce, random, out)) break;
+  return out;
+}
+
+ProbeRay PathTransport::probe_ray(glm::dvec3 origin, glm::dvec3 direction, const PathRandom& random) const {
+  PathValue out;
+  ProbeRay ray;
+  State s{};
+  s.at_first = false;
+  s.diffuse = glm::dvec3(1.0);  // all that arrives lands in indirect_diffuse
+  if (segment(s, origin, direction, 0.0, 0, random, out, &ray))
+    for (uint32_t bounce = 0; bounce < max_bounces_; ++bounce)
+      if (!step(s, bounce, random, out)) break;
+  ray.radiance = out.indirect_diffuse;
+  return ray;
+}
+
+}  // namespace lg

@@ -1,0 +1,68 @@
+// The path tracer's light transport, shared by the reference image (path_tracer.h) and the
+// probe bakes: paths with next-event estimation at every vertex (each light of PathLights and
+// the environment on its own) and BRDF sampling, combined by multiple importance sampling (power
+// heuristic), Russian roulette after a few bounces. Every surface is two-sided, shaded on the
+// side the ray arrives from, and reflects only into the geometric hemisphere it is seen from.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "nodes/gi/path_tracer/path_scene.h"
+
+namespace lg {
+
+// One path's random numbers: hashes of (seed, path, dimension), so that a path's value does not
+// depend on which thread or chunk traced it.
+class PathRandom {
+ public:
+  PathRandom(uint64_t seed, uint64_t path, uint32_t per_bounce) : seed_(seed), path_(path), per_bounce_(per_bounce) {}
+  double get(uint32_t bounce, uint32_t dimension) const;
+  glm::dvec2 pair(uint32_t bounce, uint32_t dimension) const {
+    return {get(bounce, dimension), get(bounce, dimension + 1)};
+  }
+
+ private:
+  uint64_t seed_, path_;
+  uint32_t per_bounce_;
+};
+
+// A camera path's value split at the visible surface (path_tracer.h defines each part).
+struct PathValue {
+  glm::dvec3 emission{0.0}, direct{0.0}, indirect_diffuse{0.0}, specular{0.0};
+  glm::dvec3 radiance() const { return emission + direct + indirect_diffuse + specular; }
+};
+
+// What a probe sees along one ray: the radiance arriving other than straight from the scene's
+// lights (the environment, or the surface met with all it emits and reflects), and how far the
+// surface is (infinite on a miss) and whether the ray met its back.
+struct ProbeRay {
+  glm::dvec3 radiance{0.0};
+  double distance = 0.0;
+  bool back_face = false;
+};
+
+class PathTransport {
+ public:
+  // max_bounces: surface interactions per path (1: direct light only); Russian roulette may end
+  // a path once it has made `russian_roulette_after` of them.
+  PathTransport(const PathScene& scene, uint32_t max_bounces, uint32_t russian_roulette_after = 3);
+
+  // The random dimensions one bounce uses (for PathRandom).
+  uint32_t dimensions_per_bounce() const;
+  PathValue camera_path(glm::dvec3 eye, glm::dvec3 direction, bool cull_backfaces, const PathRandom& random) const;
+  ProbeRay probe_ray(glm::dvec3 origin, glm::dvec3 direction, const PathRandom& random) const;
+
+ private:
+  struct State;
+  bool step(State& s, uint32_t bounce, const PathRandom& random, PathValue& out) const;
+  bool segment(State& s, glm::dvec3 origin, glm::dvec3 l, double pdf, uint32_t bounce, const PathRandom& random,
+               PathValue& out, ProbeRay* first_hit) const;
+  bool visible(glm::dvec3 position, glm::dvec3 geometric, glm::dvec3 direction, double distance) const;
+
+  const PathScene& scene_;
+  uint32_t max_bounces_, russian_roulette_after_;
+};
+
+}  // namespace lg
