@@ -198,4 +198,12 @@ ProbeRay PathTransport::probe_ray(glm::dvec3 origin, glm::dvec3 direction, const
   return ray;
 }
 
+std::optional<VisibleSurface> PathTransport::visible_surface(glm::dvec3 eye, glm::dvec3 direction,
+                                                             bool cull_backfaces) const {
+  const std::optional<CameraHit> hit = first_camera_hit(scene_.rays(), eye, direction, cull_backfaces);
+  if (!hit) return std::nullopt;
+  const Vertex v = make_vertex(scene_, hit->hit, hit->position, direction);
+  return VisibleSurface{v.position, v.brdf.normal, v.brdf.diffuse_color};
+}
+
 }  // namespace lg

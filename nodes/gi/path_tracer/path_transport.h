@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 
 #include "nodes/gi/path_tracer/path_scene.h"
 
@@ -43,6 +44,12 @@ struct ProbeRay {
   bool back_face = false;
 };
 
+// What the G-buffer holds at a pixel, as the path tracer sees it: the visible surface's position,
+// its shading normal on the camera's side, and its diffuse colour (base colour x (1 - metal)).
+struct VisibleSurface {
+  glm::dvec3 position, normal, diffuse_color;
+};
+
 class PathTransport {
  public:
   // max_bounces: surface interactions per path (1: direct light only); Russian roulette may end
@@ -53,6 +60,7 @@ class PathTransport {
   uint32_t dimensions_per_bounce() const;
   PathValue camera_path(glm::dvec3 eye, glm::dvec3 direction, bool cull_backfaces, const PathRandom& random) const;
   ProbeRay probe_ray(glm::dvec3 origin, glm::dvec3 direction, const PathRandom& random) const;
+  std::optional<VisibleSurface> visible_surface(glm::dvec3 eye, glm::dvec3 direction, bool cull_backfaces) const;
 
  private:
   struct State;
