@@ -1,5 +1,7 @@
 #include "nodes/lighting/deferred/deferred_kernel.h"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/vec4.hpp>
 #include <optional>
 #include <stdexcept>
@@ -33,6 +35,9 @@ struct GpuDirectional {
 struct GpuPoint {
   glm::vec4 position_range, intensity;
 };
+struct GpuSpot {
+  glm::vec4 position_range, direction_angle_scale, intensity_angle_offset;
+};
 struct GpuSphere {
   glm::vec4 center_radius, radiance;
 };
@@ -42,6 +47,15 @@ struct GpuTube {
 struct GpuRect {
   glm::vec4 center_two_sided, half_x, half_y, radiance;
 };
+
+// The cone as glTF's falloff wants it: the ramp is cos(angle) * scale + offset, 0 at the outer
+// cone and 1 at the inner; an inner cone as wide as the outer one is kept 0.001 apart in
+// cosine (the spec's guard), a hard but finite edge.
+GpuSpot gpu_spot(const SpotLightData& l) {
+  const float cos_outer = std::cos(l.outer_cone_angle);
+  const float scale = 1.0f / std::max(0.001f, std::cos(l.inner_cone_angle) - cos_outer);
+  return {glm::vec4(l.position, l.range), glm::vec4(l.direction, scale), glm::vec4(l.intensity, -cos_outer * scale)};
+}
 
 // The first directional light that casts shadows owns the shadow map, or -1.
 int shadow_caster(const SceneView& scene) {
@@ -68,11 +82,12 @@ class DeferredKernel final : public NodeKernel {
 
  private:
   struct Buffers {
-    HostBuffer constants, directional, points, spheres, tubes, rects, worlds;
+    HostBuffer constants, directional, points, spots, spheres, tubes, rects, worlds;
     explicit Buffers(Context& gpu, const std::string& id)
         : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
           directional(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           points(gpu, id + " point lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          spots(gpu, id + " spot lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           spheres(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           tubes(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           rects(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
@@ -103,6 +118,8 @@ class DeferredKernel final : public NodeKernel {
     std::vector<GpuPoint> points;
     for (const auto& l : scene.point_lights)
       points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, 0.0f)});
+    std::vector<GpuSpot> spots;
+    for (const auto& l : scene.spot_lights) spots.push_back(gpu_spot(l));
     std::vector<GpuSphere> spheres;
     for (const auto& l : scene.sphere_lights)
       spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
@@ -120,8 +137,10 @@ class DeferredKernel final : public NodeKernel {
     constants_.counts[2] = uint32_t(spheres.size());
     constants_.counts[3] = uint32_t(tubes.size());
     constants_.counts2[0] = uint32_t(rects.size());
+    constants_.counts2[1] = uint32_t(spots.size());
     buffers_->directional.write(directional);
     buffers_->points.write(points);
+    buffers_->spots.write(spots);
     buffers_->spheres.write(spheres);
     buffers_->tubes.write(tubes);
     buffers_->rects.write(rects);
@@ -188,6 +207,7 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(6, color.view()));
     writes.push_back(storage_buffer(7, buffers_->directional.handle()));
     writes.push_back(storage_buffer(8, buffers_->points.handle()));
+    writes.push_back(storage_buffer(9, buffers_->spots.handle()));
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width,
                      color.desc().height);
   }

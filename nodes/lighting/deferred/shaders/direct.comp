@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Directional and point lights on every G-buffer texel, with the shadow map for the first
+// Directional, point and spot lights on every G-buffer texel, with the shadow map for the first
 // shadow-casting directional light; writes (and so clears) the node's output.
 #include "nodes/lighting/deferred/shaders/surface.glsl"
 
@@ -10,6 +10,7 @@ layout(binding = 5) uniform sampler2D shadow_map;
 layout(binding = 6, rgba16f) uniform writeonly image2D color;
 layout(std430, binding = 7) readonly buffer Directional { DirectionalLight directional[]; };
 layout(std430, binding = 8) readonly buffer Points { PointLight points[]; };
+layout(std430, binding = 9) readonly buffer Spots { SpotLight spots[]; };
 
 // 3x3 percentage-closer filtering: the fraction of taps nearer the light than p is shadowed.
 // Reversed depth: a larger stored value is nearer the light.
@@ -30,6 +31,16 @@ float sun_visibility(Surface s) {
   return lit / 9.0;
 }
 
+// A point light's radiance toward the eye: intensity over distance squared, with a smooth
+// window to 0 at the range (Karis 2013; range 0: none) so a cut-off light shows no edge.
+vec3 punctual(Surface s, vec4 position_range, vec3 intensity) {
+  vec3 to_light = position_range.xyz - s.position;
+  float d2 = max(dot(to_light, to_light), 1e-8);
+  float range = position_range.w;
+  float window = range > 0.0 ? pow(clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0), 2.0) : 1.0;
+  return brdf_cosine(s, to_light * inversesqrt(d2)) * intensity * (window / d2);
+}
+
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(texel, imageSize(color)))) return;
@@ -43,12 +54,16 @@ void main() {
     }
     for (uint i = 0; i < counts.y; ++i) {
       PointLight light = points[i];
-      vec3 to_light = light.position_range.xyz - s.position;
-      float d2 = max(dot(to_light, to_light), 1e-8);
-      float range = light.position_range.w;
-      // A smooth window to 0 at the range (Karis 2013), so a cut-off light shows no edge.
-      float window = range > 0.0 ? pow(clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0), 2.0) : 1.0;
-      radiance += brdf_cosine(s, to_light * inversesqrt(d2)) * light.intensity.rgb * (window / d2);
+      radiance += punctual(s, light.position_range, light.intensity.rgb);
+    }
+    for (uint i = 0; i < counts2.y; ++i) {
+      SpotLight light = spots[i];
+      vec3 l = normalize(light.position_range.xyz - s.position);
+      // glTF KHR_lights_punctual's falloff: the square of a linear ramp in the cosine of the
+      // angle to the axis, 0 at the outer cone and 1 from the inner cone in.
+      float ramp = clamp(dot(light.direction_angle_scale.xyz, -l) * light.direction_angle_scale.w +
+                             light.intensity_angle_offset.w, 0.0, 1.0);
+      radiance += punctual(s, light.position_range, light.intensity_angle_offset.rgb * (ramp * ramp));
     }
   }
   imageStore(color, texel, vec4(finite_or_zero(radiance), 1.0));

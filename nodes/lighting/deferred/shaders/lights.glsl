@@ -13,6 +13,11 @@ struct PointLight {
   vec4 position_range;  // range 0: no cut-off
   vec4 intensity;
 };
+struct SpotLight {
+  vec4 position_range;          // range 0: no cut-off
+  vec4 direction_angle_scale;   // xyz: unit, the cone's axis; w: 1 / (cos inner - cos outer)
+  vec4 intensity_angle_offset;  // rgb: W/sr on the axis; w: -cos outer * the scale
+};
 struct SphereLight {
   vec4 center_radius;
   vec4 radiance;
@@ -34,7 +39,7 @@ layout(std140, binding = 0) uniform Constants {
   mat4 shadow_from_world;  // to the shadow map's clip space (reversed depth)
   vec4 shadow;             // 1 / map size, 1 when the map was drawn, normal offset (world units), depth bias
   uvec4 counts;            // directional, point, sphere, tube (the rectangles' count is in counts2)
-  uvec4 counts2;           // rectangles
+  uvec4 counts2;           // rectangles, spots
 };
 
 // Surfaces the G-buffer holds: depth > 0 (0 is the far plane, where no surface was drawn).
