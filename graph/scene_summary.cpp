@@ -10,10 +10,11 @@ namespace lg {
 namespace {
 
 constexpr std::array<std::string_view, static_cast<size_t>(SceneFeature::count)> feature_names = {
-    "directional_lights", "point_lights",       "sphere_lights",     "tube_lights",
-    "rectangle_lights",   "area_lights",        "shadow_casting_lights", "environment_light",
-    "irradiance_volumes", "reflection_probes",  "glossy_materials",  "thin_lens_camera",
-    "baked_occlusion"};
+    "directional_lights", "point_lights",          "spot_lights",
+    "sphere_lights",      "tube_lights",           "rectangle_lights",
+    "area_lights",        "shadow_casting_lights", "local_shadow_casting_lights",
+    "environment_light",  "irradiance_volumes",    "reflection_probes",
+    "glossy_materials",   "thin_lens_camera",      "baked_occlusion"};
 
 // One field of the summary file: where it lives and how it is read.
 struct Field {
@@ -58,10 +59,12 @@ const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
       {"lights", "directional", count_field(&SceneSummary::directional_lights)},
       {"lights", "point", count_field(&SceneSummary::point_lights)},
+      {"lights", "spot", count_field(&SceneSummary::spot_lights)},
       {"lights", "sphere", count_field(&SceneSummary::sphere_lights)},
       {"lights", "tube", count_field(&SceneSummary::tube_lights)},
       {"lights", "rectangle", count_field(&SceneSummary::rectangle_lights)},
       {"lights", "shadows", bool_field(&SceneSummary::shadows)},
+      {"lights", "local_shadows", bool_field(&SceneSummary::local_shadows)},
       {"environment", "present", bool_field(&SceneSummary::environment)},
       {"probes", "irradiance_volumes", count_field(&SceneSummary::irradiance_volumes)},
       {"probes", "reflection_probes", count_field(&SceneSummary::reflection_probes)},
@@ -85,11 +88,13 @@ std::string scene_lacks_reason(SceneFeature f) {
   switch (f) {
     case SceneFeature::directional_lights: return "the scene has no directional lights";
     case SceneFeature::point_lights: return "the scene has no point lights";
+    case SceneFeature::spot_lights: return "the scene has no spot lights";
     case SceneFeature::sphere_lights: return "the scene has no sphere lights";
     case SceneFeature::tube_lights: return "the scene has no tube lights";
     case SceneFeature::rectangle_lights: return "the scene has no rectangle lights";
     case SceneFeature::area_lights: return "the scene has no area lights";
     case SceneFeature::shadow_casting_lights: return "no light in the scene casts shadows";
+    case SceneFeature::local_shadow_casting_lights: return "no point or spot light in the scene casts shadows";
     case SceneFeature::environment_light: return "the scene has no environment light";
     case SceneFeature::irradiance_volumes: return "the scene has no irradiance volumes";
     case SceneFeature::reflection_probes: return "the scene has no reflection probes";
@@ -105,11 +110,13 @@ bool SceneSummary::has(SceneFeature f) const {
   switch (f) {
     case SceneFeature::directional_lights: return directional_lights > 0;
     case SceneFeature::point_lights: return point_lights > 0;
+    case SceneFeature::spot_lights: return spot_lights > 0;
     case SceneFeature::sphere_lights: return sphere_lights > 0;
     case SceneFeature::tube_lights: return tube_lights > 0;
     case SceneFeature::rectangle_lights: return rectangle_lights > 0;
     case SceneFeature::area_lights: return sphere_lights + tube_lights + rectangle_lights > 0;
     case SceneFeature::shadow_casting_lights: return shadows && directional_lights + point_lights > 0;
+    case SceneFeature::local_shadow_casting_lights: return local_shadows && point_lights + spot_lights > 0;
     case SceneFeature::environment_light: return environment;
     case SceneFeature::irradiance_volumes: return irradiance_volumes > 0;
     case SceneFeature::reflection_probes: return reflection_probes > 0;

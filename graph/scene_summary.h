@@ -16,11 +16,13 @@ namespace lg {
 enum class SceneFeature : uint8_t {
   directional_lights,
   point_lights,
+  spot_lights,
   sphere_lights,
   tube_lights,
   rectangle_lights,
   area_lights,  // any of sphere, tube, rectangle
   shadow_casting_lights,
+  local_shadow_casting_lights,  // a point or spot light that casts shadows
   environment_light,
   irradiance_volumes,
   reflection_probes,
@@ -38,10 +40,12 @@ struct SceneSummary {
   std::string name = "default";
   int directional_lights = 1;
   int point_lights = 0;
+  int spot_lights = 0;
   int sphere_lights = 1;
   int tube_lights = 1;
   int rectangle_lights = 0;
   bool shadows = true;
+  bool local_shadows = false;  // whether the point and spot lights cast shadows
   bool environment = true;
   int irradiance_volumes = 0;
   int reflection_probes = 0;

@@ -1,5 +1,5 @@
 // The components an entity of the world (world.h) may have. Lights and cameras live in their
-// entity's local frame: cameras, directional lights and rectangle lights aim down local -Z
+// entity's local frame: cameras, directional, spot and rectangle lights aim down local -Z
 // (up is +Y; a rectangle spans local X and Y), tubes lie along local X. Colours are linear Rec.709;
 // `intensity` multiplies `color` and has the unit of the matching field of scene_view.h.
 #pragma once
@@ -52,6 +52,18 @@ struct PointLight {
   glm::vec3 color{1.0f};
   float intensity = 1.0f;  // W/sr
   float range = 0.0f;      // 0: no cut-off
+  bool casts_shadows = true;
+};
+
+// A point light limited to a cone about local -Z, as glTF's KHR_lights_punctual spot: full
+// intensity within `inner_cone_angle` of the axis, falling to 0 at `outer_cone_angle`.
+struct SpotLight {
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;               // W/sr, on the axis
+  float range = 0.0f;                   // 0: no cut-off
+  float inner_cone_angle = 0.0f;        // radians from the axis, 0 to outer_cone_angle
+  float outer_cone_angle = 0.7853982f;  // radians from the axis, up to pi/2 (glTF's default pi/4)
+  bool casts_shadows = true;
 };
 
 struct SphereLight {

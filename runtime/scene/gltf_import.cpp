@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/gtx/matrix_decompose.hpp>
 #include <map>
@@ -298,6 +299,21 @@ class GltfImporter {
     world_.add<Camera>(e, camera);
   }
 
+  // The spec's bounds: 0 <= innerConeAngle < outerConeAngle <= pi/2.
+  static SpotLight spot_light(const tinygltf::Light& light, int index, glm::vec3 color, float intensity) {
+    const double inner = light.spot.innerConeAngle, outer = light.spot.outerConeAngle;
+    if (!(inner >= 0.0 && inner < outer && outer <= glm::half_pi<double>()))
+      fail("light " + std::to_string(index) + " (a spot) has cone angles inner " + std::to_string(inner) + ", outer " +
+           std::to_string(outer) + "; expected 0 <= innerConeAngle < outerConeAngle <= pi/2");
+    SpotLight spot;
+    spot.color = color;
+    spot.intensity = intensity;
+    spot.range = static_cast<float>(light.range);
+    spot.inner_cone_angle = static_cast<float>(inner);
+    spot.outer_cone_angle = static_cast<float>(outer);
+    return spot;
+  }
+
   void add_light(const tinygltf::Node& node, Entity e) {
     auto ext = node.extensions.find("KHR_lights_punctual");
     if (ext == node.extensions.end() || !ext->second.Has("light")) return;
@@ -308,8 +324,10 @@ class GltfImporter {
     auto intensity = static_cast<float>(light.intensity);
     if (light.type == "directional")
       world_.add<DirectionalLight>(e, {color, intensity, 0.00465f, true});
-    else if (light.type == "point" || light.type == "spot")
+    else if (light.type == "point")
       world_.add<PointLight>(e, {color, intensity, static_cast<float>(light.range)});
+    else if (light.type == "spot")
+      world_.add<SpotLight>(e, spot_light(light, ref.GetNumberAsInt(), color, intensity));
   }
 
   World& world_;

@@ -46,8 +46,8 @@ void add_framing_camera(World& world) {
 
 void add_viewing_defaults(World& world) {
   if (world.count<Camera>() == 0) add_framing_camera(world);
-  bool lit = world.count<DirectionalLight>() + world.count<PointLight>() + world.count<SphereLight>() +
-                 world.count<TubeLight>() + world.count<RectLight>() >
+  bool lit = world.count<DirectionalLight>() + world.count<PointLight>() + world.count<SpotLight>() +
+                 world.count<SphereLight>() + world.count<TubeLight>() + world.count<RectLight>() >
              0;
   if (!lit) {
     Entity sun = world.create("sun");

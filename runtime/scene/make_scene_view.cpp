@@ -66,7 +66,16 @@ void add_lights(const World& world, SceneView& view) {
                                        l.angular_radius, l.casts_shadows});
   });
   world.each<PointLight>([&](Entity e, const PointLight& l) {
-    view.point_lights.push_back({point(world.world_matrix(e), glm::vec3(0.0f)), l.color * l.intensity, l.range});
+    view.point_lights.push_back(
+        {point(world.world_matrix(e), glm::vec3(0.0f)), l.color * l.intensity, l.range, l.casts_shadows});
+  });
+  world.each<SpotLight>([&](Entity e, const SpotLight& l) {
+    glm::mat4 m = world.world_matrix(e);
+    glm::vec3 d = vector(m, {0.0f, 0.0f, -1.0f});
+    float length = glm::length(d);
+    view.spot_lights.push_back({point(m, glm::vec3(0.0f)), length > 0.0f ? d / length : glm::vec3(0.0f, -1.0f, 0.0f),
+                                l.color * l.intensity, l.range, l.inner_cone_angle, l.outer_cone_angle,
+                                l.casts_shadows});
   });
   world.each<SphereLight>([&](Entity e, const SphereLight& l) {
     glm::mat4 m = world.world_matrix(e);

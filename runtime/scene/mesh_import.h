@@ -10,9 +10,10 @@
 // normals (generated when missing), TEXCOORD_0 (float or normalised integers), indices of
 // any integer type; metallic-roughness materials (factors, emissive, base colour texture
 // decoded to RGBA8; the metallic-roughness, normal and occlusion textures are ignored);
-// perspective cameras (orthographic ones are skipped); KHR_lights_punctual directional and
-// point lights, spot lights as point lights (their cone is dropped), intensities taken as the
-// project's units (directional: irradiance, point: W/sr). Sparse accessors, skins and morph
+// perspective cameras (orthographic ones are skipped); KHR_lights_punctual directional, point
+// and spot lights (with their inner and outer cone angles; angles outside the spec's
+// 0 <= inner < outer <= pi/2 are an error), intensities taken as the project's units
+// (directional: irradiance, point and spot: W/sr). Sparse accessors, skins and morph
 // targets are not supported. Buffers and images must lie in the file's folder or below.
 //
 // OBJ: positions, normals (generated when any corner lacks one), uvs (v flipped to glTF's

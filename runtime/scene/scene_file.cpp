@@ -22,9 +22,9 @@ namespace {
 constexpr double max_length = 1e6, max_power = 1e9;
 
 const std::vector<std::string> entity_keys = {
-    "name",       "parent",     "transform",         "model",           "shape",
-    "material",   "occlusion",  "camera",            "directional_light", "point_light",
-    "sphere_light", "tube_light", "rect_light",      "irradiance_volume", "reflection_probe"};
+    "name",       "parent",     "transform",         "model",           "shape",      "material",
+    "occlusion",  "camera",     "directional_light", "point_light",     "spot_light", "sphere_light",
+    "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
 
 class SceneFileReader {
  public:
@@ -391,13 +391,35 @@ class SceneFileReader {
       f.boolean("shadows", l.casts_shadows);
       world_.add<DirectionalLight>(e, l);
     });
-    with("point_light", {"color", "intensity", "range"}, [&](const JsonFields& f) {
+    with("point_light", {"color", "intensity", "range", "shadows"}, [&](const JsonFields& f) {
       PointLight l;
       f.vec3("color", l.color, 0, max_power);
       f.number("intensity", l.intensity, 0, max_power, "W/sr");
       f.number("range", l.range, 0, max_length, "metres");
+      f.boolean("shadows", l.casts_shadows);
       world_.add<PointLight>(e, l);
     });
+    with("spot_light", {"color", "intensity", "range", "inner_angle", "outer_angle", "shadows"},
+         [&](const JsonFields& f) {
+           SpotLight l;
+           f.vec3("color", l.color, 0, max_power);
+           f.number("intensity", l.intensity, 0, max_power, "W/sr");
+           f.number("range", l.range, 0, max_length, "metres");
+           float inner = glm::degrees(l.inner_cone_angle), outer = glm::degrees(l.outer_cone_angle);
+           const size_t errors_before = d_.error_count();
+           f.number("inner_angle", inner, 0, 90, "degrees");
+           f.number("outer_angle", outer, 0, 90, "degrees");
+           // Compared only when both were read: a rejected value left at its default would
+           // give a second, misleading error.
+           if (d_.error_count() == errors_before && inner > outer)
+             f.error_at(f.get("inner_angle") ? "inner_angle" : "outer_angle",
+                        "'inner_angle' (" + format_number(inner) + " degrees) must not exceed 'outer_angle' (" +
+                            format_number(outer) + " degrees)");
+           l.inner_cone_angle = glm::radians(inner);
+           l.outer_cone_angle = glm::radians(outer);
+           f.boolean("shadows", l.casts_shadows);
+           world_.add<SpotLight>(e, l);
+         });
     with("sphere_light", {"color", "radiance", "radius"}, [&](const JsonFields& f) {
       SphereLight l;
       f.vec3("color", l.color, 0, max_power);

@@ -24,11 +24,15 @@ SceneSummary SceneView::summary() const {
   s.name = name;
   s.directional_lights = static_cast<int>(directional_lights.size());
   s.point_lights = static_cast<int>(point_lights.size());
+  s.spot_lights = static_cast<int>(spot_lights.size());
   s.sphere_lights = static_cast<int>(sphere_lights.size());
   s.tube_lights = static_cast<int>(tube_lights.size());
   s.rectangle_lights = static_cast<int>(rect_lights.size());
   s.shadows = false;
   for (const auto& d : directional_lights) s.shadows |= d.casts_shadows;
+  s.local_shadows = false;
+  for (const auto& l : point_lights) s.local_shadows |= l.casts_shadows;
+  for (const auto& l : spot_lights) s.local_shadows |= l.casts_shadows;
   s.environment = has_environment;
   s.irradiance_volumes = int(irradiance_volumes.size());
   s.reflection_probes = reflection_probes;

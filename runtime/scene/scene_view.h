@@ -86,6 +86,19 @@ struct PointLightData {
   glm::vec3 position{0.0f};
   glm::vec3 intensity{1.0f};  // W/sr per channel
   float range = 0.0f;         // 0: no cut-off
+  bool casts_shadows = true;
+};
+
+// A point light within a cone: the glTF spot's angular falloff (deferred README) times the
+// point light's range window and inverse square.
+struct SpotLightData {
+  glm::vec3 position{0.0f};
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit, the cone's axis, the way the light travels
+  glm::vec3 intensity{1.0f};               // W/sr per channel, on the axis
+  float range = 0.0f;                      // 0: no cut-off
+  float inner_cone_angle = 0.0f;           // radians from the axis
+  float outer_cone_angle = 0.7853982f;     // radians from the axis, at most pi/2
+  bool casts_shadows = true;
 };
 
 // Uniform Lambertian emitters; `radiance` is W/(m^2 sr) per channel (see
@@ -132,6 +145,7 @@ struct SceneView {
   std::vector<DrawItem> draws;
   std::vector<DirectionalLightData> directional_lights;
   std::vector<PointLightData> point_lights;
+  std::vector<SpotLightData> spot_lights;
   std::vector<SphereLightData> sphere_lights;
   std::vector<TubeLightData> tube_lights;
   std::vector<RectLightData> rect_lights;

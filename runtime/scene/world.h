@@ -104,11 +104,11 @@ class World {
   uint64_t asset_revision() const { return asset_revision_; }
 
  private:
-  using Sets =
-      std::tuple<ComponentSet<Name>, ComponentSet<Transform>, ComponentSet<Camera>, ComponentSet<MeshRenderer>,
-                 ComponentSet<DirectionalLight>, ComponentSet<PointLight>, ComponentSet<SphereLight>,
-                 ComponentSet<TubeLight>, ComponentSet<RectLight>, ComponentSet<EnvironmentLight>,
-                 ComponentSet<IrradianceVolume>, ComponentSet<ReflectionProbe>, ComponentSet<PostProcessSettings>>;
+  using Sets = std::tuple<ComponentSet<Name>, ComponentSet<Transform>, ComponentSet<Camera>, ComponentSet<MeshRenderer>,
+                          ComponentSet<DirectionalLight>, ComponentSet<PointLight>, ComponentSet<SpotLight>,
+                          ComponentSet<SphereLight>, ComponentSet<TubeLight>, ComponentSet<RectLight>,
+                          ComponentSet<EnvironmentLight>, ComponentSet<IrradianceVolume>, ComponentSet<ReflectionProbe>,
+                          ComponentSet<PostProcessSettings>>;
 
   template <class T>
   ComponentSet<T>& set() {

@@ -37,8 +37,10 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   const PlanNode* light = test::plan_node(plan, "light");
   ASSERT_NE(light, nullptr);
   EXPECT_EQ(light->state, NodeState::Kind::active);
-  EXPECT_EQ(dropped(plan, "light"),
-            (std::vector<std::pair<std::string, std::string>>{{"area", "the scene has no area lights"}}));
+  const std::pair<std::string, std::string> no_local_shadows{"local_shadows",
+                                                             "no point or spot light in the scene casts shadows"};
+  EXPECT_EQ(dropped(plan, "light"), (std::vector<std::pair<std::string, std::string>>{
+                                        no_local_shadows, {"area", "the scene has no area lights"}}));
   EXPECT_EQ(pass_at(plan, "light/area"), -1);
   EXPECT_GE(pass_at(plan, "light/direct"), 0);
   // light.color is now written once, by direct, and read by ibl.
@@ -49,7 +51,9 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
     for (const auto& a : plan.accesses_of(p)) writers += a.resource == color && usage_writes(a.usage);
   EXPECT_EQ(writers, 1);
   EXPECT_NE(
-      plan_to_text(plan).find("passes dropped:\n  light/area (lighting.deferred): the scene has no area lights\n"),
+      plan_to_text(plan).find("passes dropped:\n  light/local_shadows (lighting.deferred): no point or spot light in "
+                              "the scene casts shadows\n  light/area (lighting.deferred): the scene has no area "
+                              "lights\n"),
       std::string::npos)
       << plan_to_text(plan);
   expect_nothing_read_before_written(plan);
@@ -57,7 +61,7 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   // The default room has a sphere and a tube light: the pass stays.
   Plan room = test::compile_example("examples/default.json");
   EXPECT_GE(pass_at(room, "light/area"), 0);
-  EXPECT_TRUE(dropped(room, "light").empty());
+  EXPECT_EQ(dropped(room, "light"), (std::vector<std::pair<std::string, std::string>>{no_local_shadows}));
 }
 
 TEST(CompilerSpecialization, PinholeCameraBypassesDepthOfField) {
@@ -127,8 +131,9 @@ TEST(CompilerSpecialization, NoShadowCastersDropsTheShadowPass) {
       CompileOptions o;
       o.scene = scene;
       Plan plan = test::compile_ok(test::load_example(path), builtin_registry(), o);
-      EXPECT_EQ(dropped(plan, "light"),
-                (std::vector<std::pair<std::string, std::string>>{{"shadows", "no light in the scene casts shadows"}}));
+      EXPECT_EQ(dropped(plan, "light"), (std::vector<std::pair<std::string, std::string>>{
+                                            {"shadows", "no light in the scene casts shadows"},
+                                            {"local_shadows", "no point or spot light in the scene casts shadows"}}));
       EXPECT_EQ(pass_at(plan, "light/shadows"), -1);
       // The shadow map is neither drawn nor sampled, so it takes no memory.
       int map = resource_at(plan, "light/shadow_map");
@@ -139,6 +144,29 @@ TEST(CompilerSpecialization, NoShadowCastersDropsTheShadowPass) {
       for (const auto& b : plan.barriers) EXPECT_NE(b.resource, map) << "a barrier for a resource nobody uses";
       expect_nothing_read_before_written(plan);
     }
+}
+
+// The default scene has no point or spot light, so the default graph neither draws nor keeps
+// the local shadow atlas; a spot light with shadows brings both back.
+TEST(CompilerSpecialization, LocalShadowsCostNothingWithoutPointOrSpotShadows) {
+  SceneSummary spot = default_scene_summary();
+  spot.spot_lights = 1;
+  spot.local_shadows = true;
+  for (const auto& path : test::example_paths()) {
+    SCOPED_TRACE(path);
+    CompileOptions o;
+    Plan plain = test::compile_ok(test::load_example(path), builtin_registry(), o);
+    EXPECT_EQ(pass_at(plain, "light/local_shadows"), -1);
+    const int atlas = resource_at(plain, "light/local_shadow_atlas");
+    if (atlas >= 0) EXPECT_EQ(plain.resources[atlas].placement.block, -1);
+    o.scene = spot;
+    Plan lit = test::compile_ok(test::load_example(path), builtin_registry(), o);
+    if (pass_at(lit, "light/direct") < 0) continue;  // a graph without deferred lighting
+    EXPECT_GE(pass_at(lit, "light/local_shadows"), 0);
+    EXPECT_LT(pass_at(lit, "light/local_shadows"), pass_at(lit, "light/direct"));
+    EXPECT_GE(lit.resources[resource_at(lit, "light/local_shadow_atlas")].placement.block, 0);
+    expect_nothing_read_before_written(lit);
+  }
 }
 
 TEST(CompilerSpecialization, NoEnvironmentBypassesImageBasedLighting) {

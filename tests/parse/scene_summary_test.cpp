@@ -68,7 +68,8 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   auto s = summary_from(R"({
     "format": "lumagraph-scene-summary/1",
     "name": "all fields",
-    "lights": { "directional": 0, "point": 3, "sphere": 0, "tube": 0, "rectangle": 2, "shadows": false },
+    "lights": { "directional": 0, "point": 3, "spot": 5, "sphere": 0, "tube": 0, "rectangle": 2, "shadows": false,
+                "local_shadows": true },
     "environment": { "present": false },
     "probes": { "irradiance_volumes": 4, "reflection_probes": 1000000 },
     "materials": { "glossy": false },
@@ -79,10 +80,12 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   EXPECT_EQ(s->name, "all fields");
   EXPECT_EQ(s->directional_lights, 0);
   EXPECT_EQ(s->point_lights, 3);
+  EXPECT_EQ(s->spot_lights, 5);
   EXPECT_EQ(s->sphere_lights, 0);
   EXPECT_EQ(s->tube_lights, 0);
   EXPECT_EQ(s->rectangle_lights, 2);
   EXPECT_FALSE(s->shadows);
+  EXPECT_TRUE(s->local_shadows);
   EXPECT_FALSE(s->environment);
   EXPECT_EQ(s->irradiance_volumes, 4);
   EXPECT_EQ(s->reflection_probes, 1000000);
@@ -91,6 +94,8 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   EXPECT_EQ(s->focus_distance, 1.5);
   // And the features follow from them.
   EXPECT_TRUE(s->has(SceneFeature::area_lights));  // the rectangle lights
+  EXPECT_TRUE(s->has(SceneFeature::spot_lights));
+  EXPECT_TRUE(s->has(SceneFeature::local_shadow_casting_lights));
   EXPECT_FALSE(s->has(SceneFeature::shadow_casting_lights));
   EXPECT_TRUE(s->has(SceneFeature::thin_lens_camera));
   EXPECT_FALSE(s->has(SceneFeature::environment_light));
@@ -112,7 +117,7 @@ TEST(ParseSceneSummary, EveryWrongKeyAndValueIsReportedWithItsPlace) {
   Diagnostics d("scene.json");
   auto s = summary_from(R"({
   "format": "lumagraph-scene-summary/1",
-  "lights": { "directional": "1", "point": -1, "sphere": 1.5, "shadows": 1, "spot": 2 },
+  "lights": { "directional": "1", "point": -1, "sphere": 1.5, "shadows": 1, "spots": 2 },
   "camera": { "aperture": -0.1, "focus_distance": "far" },
   "environment": true,
   "materials": { "glossy": "yes" },
@@ -125,22 +130,23 @@ TEST(ParseSceneSummary, EveryWrongKeyAndValueIsReportedWithItsPlace) {
   d.sort_by_position();
   const std::string count = "expected a whole number from 0 to 1000000";
   const std::string length = "expected a length in metres from 0 to 1000000";
-  EXPECT_EQ(lines(d), (std::vector<std::string>{
-                          "scene.json:3:30: error: " + count + " (/lights/directional)",
-                          "scene.json:3:44: error: " + count + " (/lights/point)",
-                          "scene.json:3:58: error: " + count + " (/lights/sphere)",
-                          "scene.json:3:74: error: expected true or false (/lights/shadows)",
-                          "scene.json:3:85: error: unknown key 'spot' in lights; expected directional, point, sphere, tube, "
-                          "rectangle, shadows (/lights/spot)",
-                          "scene.json:4:27: error: " + length + " (/camera/aperture)",
-                          "scene.json:4:51: error: " + length + " (/camera/focus_distance)",
-                          "scene.json:5:18: error: expected an object, found a boolean (/environment)",
-                          "scene.json:6:28: error: expected true or false (/materials/glossy)",
-                          "scene.json:7:37: error: " + count + " (/probes/irradiance_volumes)",
-                          "scene.json:8:10: error: unknown key 'sky'; expected format, name, lights, environment, probes, "
-                          "materials, occlusion or camera (/sky)",
-                          "scene.json:9:11: error: expected a string (/name)",
-                      }));
+  EXPECT_EQ(lines(d),
+            (std::vector<std::string>{
+                "scene.json:3:30: error: " + count + " (/lights/directional)",
+                "scene.json:3:44: error: " + count + " (/lights/point)",
+                "scene.json:3:58: error: " + count + " (/lights/sphere)",
+                "scene.json:3:74: error: expected true or false (/lights/shadows)",
+                "scene.json:3:86: error: unknown key 'spots' in lights; expected directional, point, spot, sphere, "
+                "tube, rectangle, shadows, local_shadows (/lights/spots)",
+                "scene.json:4:27: error: " + length + " (/camera/aperture)",
+                "scene.json:4:51: error: " + length + " (/camera/focus_distance)",
+                "scene.json:5:18: error: expected an object, found a boolean (/environment)",
+                "scene.json:6:28: error: expected true or false (/materials/glossy)",
+                "scene.json:7:37: error: " + count + " (/probes/irradiance_volumes)",
+                "scene.json:8:10: error: unknown key 'sky'; expected format, name, lights, environment, probes, "
+                "materials, occlusion or camera (/sky)",
+                "scene.json:9:11: error: expected a string (/name)",
+            }));
 }
 
 struct SummaryCase {

@@ -1,10 +1,12 @@
 // Every example graph renders on the default world and on the gallery world (every light kind,
-// a thin-lens camera) with zero validation messages, synchronization validation included, over
-// three frames (history and cached passes in play), to finite images. Bloom keeps the frame's
+// a thin-lens camera), the default graph also on the spot-lit stage, with zero validation messages, synchronization
+// validation included, over three frames (history and cached passes in play), to finite images. Bloom keeps the frame's
 // energy: it only moves radiance into the blur.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "api/renderer.h"
@@ -47,11 +49,15 @@ INSTANTIATE_TEST_SUITE_P(Examples, ExampleRender,
                                            Case{"examples/post.json", ""},
                                            Case{"examples/minimal.json", "examples/worlds/gallery.json"},
                                            Case{"examples/default.json", "examples/worlds/gallery.json"},
-                                           Case{"examples/post.json", "examples/worlds/gallery.json"}),
+                                           Case{"examples/post.json", "examples/worlds/gallery.json"},
+                                           Case{"examples/default.json", "examples/worlds/spot-stage.json"}),
                          [](const auto& info) {
-                           std::string graph = std::string(info.param.graph).substr(9);
-                           graph = graph.substr(0, graph.size() - 5);
-                           return graph + (*info.param.world ? "OnGallery" : "OnDefaultWorld");
+                           std::string graph = std::filesystem::path(info.param.graph).stem().string();
+                           std::string world = std::filesystem::path(info.param.world).stem().string();
+                           std::erase(world, '-');  // test names are alphanumeric
+                           if (world.empty()) return graph + "OnDefaultWorld";
+                           world[0] = char(std::toupper(static_cast<unsigned char>(world[0])));
+                           return graph + "On" + world;
                          });
 
 double total(const std::vector<float>& rgba) {

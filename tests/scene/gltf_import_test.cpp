@@ -106,6 +106,53 @@ TEST(GltfImport, ParentsRootNodesUnderTheGivenEntity) {
   EXPECT_NEAR(make_scene_view(w, 1.0f).camera.position.y, 11.0f, 1e-5f);
 }
 
+// The fixture's point light made a KHR_lights_punctual spot with `cone`, its node turned to aim
+// down (-90 degrees about X takes -Z to -Y).
+std::string spot_variant(const std::string& name, const std::string& cone) {
+  std::string text = replaced(test::read_bytes(fixture("scene.gltf")), R"({"type": "point", "intensity": 5.0,)",
+                              R"({"type": "spot", "spot": )" + cone + R"(, "intensity": 5.0,)");
+  text = replaced(text, R"({"name": "lamp", "translation": [0, 3, 0],)",
+                  R"({"name": "lamp", "translation": [0, 3, 0], "rotation": [-0.70710678, 0, 0, 0.70710678],)");
+  return write_variant(name + ".gltf", text);
+}
+
+TEST(GltfImport, SpotLightKeepsItsCone) {
+  World w;
+  import_gltf(w, spot_variant("spot", R"({"innerConeAngle": 0.3, "outerConeAngle": 0.6})"));
+  SceneView v = make_scene_view(w, 1.0f);
+  EXPECT_TRUE(v.point_lights.empty());
+  ASSERT_EQ(v.spot_lights.size(), 1u);
+  const SpotLightData& spot = v.spot_lights[0];
+  expect_near(spot.position, {0, 3, 0});
+  expect_near(spot.direction, {0, -1, 0});
+  expect_near(spot.intensity, glm::vec3(5.0f));
+  EXPECT_FLOAT_EQ(spot.range, 10.0f);
+  EXPECT_FLOAT_EQ(spot.inner_cone_angle, 0.3f);
+  EXPECT_FLOAT_EQ(spot.outer_cone_angle, 0.6f);
+  EXPECT_TRUE(v.summary().has(SceneFeature::spot_lights));
+}
+
+TEST(GltfImport, SpotLightWithoutAnglesTakesTheSpecsDefaults) {
+  World w;
+  import_gltf(w, spot_variant("spot_defaults", "{}"));
+  const SceneView v = make_scene_view(w, 1.0f);
+  ASSERT_EQ(v.spot_lights.size(), 1u);
+  EXPECT_FLOAT_EQ(v.spot_lights[0].inner_cone_angle, 0.0f);
+  EXPECT_FLOAT_EQ(v.spot_lights[0].outer_cone_angle, 0.7853982f);  // pi / 4
+}
+
+TEST(GltfImport, SpotLightConeOutsideTheSpecIsAnError) {
+  for (const char* cone :
+       {R"({"innerConeAngle": 0.6, "outerConeAngle": 0.6})", R"({"innerConeAngle": 0.2, "outerConeAngle": 1.7})",
+        R"({"innerConeAngle": -0.1, "outerConeAngle": 0.5})"}) {
+    std::string path = spot_variant("bad_spot", cone);
+    World w;
+    std::string message = error_of([&] { import_gltf(w, path); });
+    EXPECT_EQ(message.rfind(path + ": error: light 1 (a spot) has cone angles", 0), 0u) << message;
+    EXPECT_NE(message.find("expected 0 <= innerConeAngle < outerConeAngle <= pi/2"), std::string::npos) << message;
+  }
+}
+
 struct BrokenGltf {
   const char* name;
   const char* from;

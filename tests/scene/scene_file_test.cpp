@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <iostream>
 
 #include "runtime/scene/load_world.h"
@@ -63,6 +64,9 @@ const char* every_kind = R"({
     {"name": "sun", "transform": {"rotation": [0.0, 0.0, 0.0, 1.0]},
      "directional_light": {"color": [1, 1, 1], "irradiance": 3, "angular_radius": 0.27, "shadows": false}},
     {"name": "bulb", "point_light": {"intensity": 10, "range": 5}},
+    {"name": "cone", "transform": {"position": [0, 3, 0], "look_at": [0, 0, 0]},
+     "spot_light": {"color": [1, 0.5, 0.25], "intensity": 12, "range": 8, "inner_angle": 15, "outer_angle": 25,
+                    "shadows": false}},
     {"name": "orb", "transform": {"position": [1, 2, 3]}, "sphere_light": {"radiance": 20, "radius": 0.1}},
     {"name": "tube", "tube_light": {"color": [0.5, 0.5, 1], "radiance": 8, "length": 2, "radius": 0.05}},
     {"name": "panel", "rect_light": {"radiance": 4, "width": 2, "height": 1, "two_sided": true}},
@@ -80,6 +84,17 @@ TEST(SceneFile, EveryKindOfEntityLoads) {
   SceneSummary s = v.summary();
   EXPECT_EQ(s.directional_lights, 2);  // the sun and the glTF file's
   EXPECT_EQ(s.point_lights, 2);        // the bulb and the glTF file's
+  EXPECT_EQ(s.spot_lights, 1);
+  EXPECT_TRUE(s.has(SceneFeature::spot_lights));
+  ASSERT_EQ(v.spot_lights.size(), 1u);
+  const SpotLightData& cone = v.spot_lights[0];
+  EXPECT_NEAR(glm::distance(cone.position, glm::vec3(0, 3, 0)), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::distance(cone.direction, glm::vec3(0, -1, 0)), 0.0f, 1e-5f);  // toward look_at
+  EXPECT_EQ(cone.intensity, glm::vec3(12.0f, 6.0f, 3.0f));
+  EXPECT_FLOAT_EQ(cone.range, 8.0f);
+  EXPECT_NEAR(cone.inner_cone_angle, glm::radians(15.0f), 1e-6f);
+  EXPECT_NEAR(cone.outer_cone_angle, glm::radians(25.0f), 1e-6f);
+  EXPECT_FALSE(cone.casts_shadows);
   EXPECT_EQ(s.sphere_lights, 1);
   EXPECT_EQ(s.tube_lights, 1);
   EXPECT_EQ(s.rectangle_lights, 1);
@@ -159,6 +174,31 @@ TEST(SceneFile, EveryErrorIsReportedWithItsPosition) {
             "(/entities/7/camera/vertical_fov)");
   EXPECT_EQ(errors[14], "15:80: error: 'two_sided' must be true or false, found 1 (/entities/7/rect_light/two_sided)");
   EXPECT_EQ(errors.size(), 15u) << testing::PrintToString(errors);
+}
+
+TEST(SceneFile, SpotLightAnglesAreChecked) {
+  std::vector<std::string> errors = errors_of(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "a", "spot_light": {"inner_angle": 40, "outer_angle": 30}},
+    {"name": "b", "spot_light": {"inner_angle": 60}},
+    {"name": "c", "spot_light": {"outer_angle": 95, "inner_angle": 50}},
+    {"name": "d", "spot_light": {"inner_angle": -1, "intensity": -5, "shadows": "on"}}
+  ]})");
+  EXPECT_EQ(errors, (std::vector<std::string>{
+                        "2:49: error: 'inner_angle' (40 degrees) must not exceed 'outer_angle' (30 degrees) "
+                        "(/entities/0/spot_light/inner_angle)",
+                        // The default outer angle is 45 degrees, as glTF's.
+                        "3:49: error: 'inner_angle' (60 degrees) must not exceed 'outer_angle' (45 degrees) "
+                        "(/entities/1/spot_light/inner_angle)",
+                        // Out of range alone: the comparison would test inner against a default.
+                        "4:49: error: 'outer_angle' must be a number from 0 to 90 (degrees), found 95 "
+                        "(/entities/2/spot_light/outer_angle)",
+                        "5:49: error: 'inner_angle' must be a number from 0 to 90 (degrees), found -1 "
+                        "(/entities/3/spot_light/inner_angle)",
+                        "5:66: error: 'intensity' must be a number from 0 to 1e+09 (W/sr), found -5 "
+                        "(/entities/3/spot_light/intensity)",
+                        "5:81: error: 'shadows' must be true or false, found a string "
+                        "(/entities/3/spot_light/shadows)"}))
+      << testing::PrintToString(errors);
 }
 
 // Euler angles are yaw (Y), pitch (X), roll (Z) applied as R = Ry Rx Rz; quaternions are
@@ -292,7 +332,10 @@ TEST(SceneFile, ExampleWorldsLoad) {
     World w = load_world(entry.path().string(), options);
     SceneView v = make_scene_view(w, 16.0f / 9.0f);
     EXPECT_FALSE(v.draws.empty()) << entry.path();
-    EXPECT_FALSE(v.directional_lights.empty()) << entry.path();
+    const SceneSummary s = v.summary();
+    EXPECT_GT(
+        s.directional_lights + s.point_lights + s.spot_lights + s.sphere_lights + s.tube_lights + s.rectangle_lights, 0)
+        << entry.path() << " is lit";
     ++loaded;
   }
   EXPECT_GE(loaded, 1u);
@@ -303,6 +346,7 @@ TEST(SceneFile, GalleryHasEveryLightKind) {
   SceneSummary s = make_scene_view(w, 16.0f / 9.0f).summary();
   EXPECT_EQ(s.directional_lights, 1);
   EXPECT_EQ(s.point_lights, 1);
+  EXPECT_EQ(s.spot_lights, 1);
   EXPECT_EQ(s.sphere_lights, 1);
   EXPECT_EQ(s.tube_lights, 1);
   EXPECT_EQ(s.rectangle_lights, 1);

@@ -1,5 +1,7 @@
 #include "nodes/lighting/deferred/deferred_kernel.h"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/vec4.hpp>
 #include <optional>
 #include <stdexcept>
@@ -7,7 +9,9 @@
 
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/lighting/deferred/local_shadows.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/descriptors.h"
@@ -26,12 +30,20 @@ struct Constants {
   glm::vec4 shadow;  // 1 / map size, map drawn, normal offset, depth bias
   uint32_t counts[4];
   uint32_t counts2[4];
+  glm::vec4 local_shadow;  // 1 when the atlas was drawn, its views' near plane
 };
 struct GpuDirectional {
   glm::vec4 direction, irradiance;
 };
 struct GpuPoint {
   glm::vec4 position_range, intensity;
+};
+struct GpuSpot {
+  glm::vec4 position_range, direction_angle_scale, intensity_angle_offset, shadow;
+};
+struct GpuShadowView {
+  glm::mat4 clip_from_world;
+  glm::vec4 tile;
 };
 struct GpuSphere {
   glm::vec4 center_radius, radiance;
@@ -43,6 +55,23 @@ struct GpuRect {
   glm::vec4 center_two_sided, half_x, half_y, radiance;
 };
 
+// The cone as glTF's falloff wants it: the ramp is cos(angle) * scale + offset, 0 at the outer
+// cone and 1 at the inner; an inner cone as wide as the outer one is kept 0.001 apart in
+// cosine (the spec's guard), a hard but finite edge.
+GpuSpot gpu_spot(const SpotLightData& l, int first_view, int views) {
+  const float cos_outer = std::cos(l.outer_cone_angle);
+  const float scale = 1.0f / std::max(0.001f, std::cos(l.inner_cone_angle) - cos_outer);
+  return {glm::vec4(l.position, l.range), glm::vec4(l.direction, scale), glm::vec4(l.intensity, -cos_outer * scale),
+          glm::vec4(float(first_view), float(views), 0.0f, 0.0f)};
+}
+
+// One view of a depth pass: a matrix into clip space and the square of the map it draws into.
+struct DepthView {
+  glm::mat4 clip_from_world;
+  glm::uvec2 origin;
+  uint32_t size;
+};
+
 // The first directional light that casts shadows owns the shadow map, or -1.
 int shadow_caster(const SceneView& scene) {
   for (size_t i = 0; i < scene.directional_lights.size(); ++i)
@@ -52,12 +81,16 @@ int shadow_caster(const SceneView& scene) {
 
 class DeferredKernel final : public NodeKernel {
  public:
-  explicit DeferredKernel(const PlanNode&) {}
+  explicit DeferredKernel(const PlanNode& node)
+      : shadow_budget_(static_cast<uint32_t>(param_number(node, "shadow_budget"))),
+        atlas_size_(static_cast<uint32_t>(param_number(node, "local_shadow_atlas_size"))) {}
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
     if (pass == "shadows")
       record_shadows(ctx);
+    else if (pass == "local_shadows")
+      record_local_shadows(ctx);
     else if (pass == "direct")
       record_direct(ctx);
     else if (pass == "area")
@@ -68,15 +101,17 @@ class DeferredKernel final : public NodeKernel {
 
  private:
   struct Buffers {
-    HostBuffer constants, directional, points, spheres, tubes, rects, worlds;
+    HostBuffer constants, directional, points, spots, spheres, tubes, rects, worlds, shadow_views;
     explicit Buffers(Context& gpu, const std::string& id)
         : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
           directional(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           points(gpu, id + " point lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          spots(gpu, id + " spot lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           spheres(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           tubes(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
           rects(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          worlds(gpu, id + " draw transforms", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
+          worlds(gpu, id + " draw transforms", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+          shadow_views(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
   };
 
   // Once per frame, before the frame's first pass of this node: the constants and light lists.
@@ -90,7 +125,8 @@ class DeferredKernel final : public NodeKernel {
       bounds_version_ = scene.version;
     }
     const int caster = shadow_caster(scene);
-    shadow_drawn_ = false;
+    shadow_drawn_ = local_drawn_ = false;
+    local_ = plan_local_shadows(scene, shadow_budget_, atlas_size_);
     Constants c{};
     if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
     constants_ = c;
@@ -101,8 +137,16 @@ class DeferredKernel final : public NodeKernel {
       directional.push_back({glm::vec4(l.direction, int(i) == caster ? 1.0f : 0.0f), glm::vec4(l.irradiance, 0.0f)});
     }
     std::vector<GpuPoint> points;
-    for (const auto& l : scene.point_lights)
-      points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, 0.0f)});
+    for (size_t i = 0; i < scene.point_lights.size(); ++i) {
+      const auto& l = scene.point_lights[i];
+      points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, float(local_.point_first_view[i]))});
+    }
+    std::vector<GpuSpot> spots;
+    for (size_t i = 0; i < scene.spot_lights.size(); ++i)
+      spots.push_back(gpu_spot(scene.spot_lights[i], local_.spot_first_view[i], local_.spot_view_count[i]));
+    std::vector<GpuShadowView> views;
+    for (const LocalShadowView& v : local_.views)
+      views.push_back({v.clip_from_world, glm::vec4(glm::vec2(v.origin), float(v.size), v.texel_per_distance)});
     std::vector<GpuSphere> spheres;
     for (const auto& l : scene.sphere_lights)
       spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
@@ -120,12 +164,15 @@ class DeferredKernel final : public NodeKernel {
     constants_.counts[2] = uint32_t(spheres.size());
     constants_.counts[3] = uint32_t(tubes.size());
     constants_.counts2[0] = uint32_t(rects.size());
+    constants_.counts2[1] = uint32_t(spots.size());
     buffers_->directional.write(directional);
     buffers_->points.write(points);
+    buffers_->spots.write(spots);
     buffers_->spheres.write(spheres);
     buffers_->tubes.write(tubes);
     buffers_->rects.write(rects);
     buffers_->worlds.write(worlds);
+    buffers_->shadow_views.write(views);
   }
 
   void record_shadows(PassContext& ctx) {
@@ -139,10 +186,25 @@ class DeferredKernel final : public NodeKernel {
     const float world_per_texel = 2.0f * 0.5f * glm::length(bounds_->hi - bounds_->lo) / float(size);
     constants_.shadow = glm::vec4(1.0f / float(size), 1.0f, 1.5f * world_per_texel, 2.0f / float(size));
     shadow_drawn_ = true;
+    draw_depth(ctx, map, {{constants_.shadow_from_world, glm::uvec2(0), size}});
+  }
 
-    // Reversed depth: 0 is farthest from the light.
+  // Every view of the point and spot lights the budget chose, each into its tile of the atlas.
+  void record_local_shadows(PassContext& ctx) {
+    prepare(ctx);
+    std::vector<DepthView> views;
+    for (const LocalShadowView& v : local_.views) views.push_back({v.clip_from_world, v.origin, v.size});
+    draw_depth(ctx, ctx.image("tmp.local_shadow_atlas"), views);
+    constants_.local_shadow = glm::vec4(1.0f, local_shadow_near, 0.0f, 0.0f);
+    local_drawn_ = true;
+  }
+
+  // Clears `map` and draws every draw's depth into each view's square of it (reversed depth:
+  // 0, the clear value, is farthest from the light).
+  void draw_depth(PassContext& ctx, Image& map, const std::vector<DepthView>& views) {
+    const SceneView& scene = ctx.scene();
     VkRenderingAttachmentInfo depth = cleared_attachment(map.view(), {.depthStencil = {0.0f, 0}});
-    const VkRenderingInfo rendering = rendering_info(size, size, {}, &depth);
+    const VkRenderingInfo rendering = rendering_info(map.desc().width, map.desc().height, {}, &depth);
 
     GraphicsPipelineDesc desc;
     desc.name = ctx.pass().name;
@@ -158,12 +220,17 @@ class DeferredKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    set_viewport(cmd, size, size);
     const DescriptorWrite writes[] = {storage_buffer(0, buffers_->worlds.handle())};
     bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-      push_constants(cmd, pipeline, ShadowPush{constants_.shadow_from_world, i, {}});
-      draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
+    for (const DepthView& view : views) {
+      const VkViewport viewport{float(view.origin.x), float(view.origin.y), float(view.size), float(view.size), 0, 1};
+      const VkRect2D scissor{{int32_t(view.origin.x), int32_t(view.origin.y)}, {view.size, view.size}};
+      vkCmdSetViewport(cmd, 0, 1, &viewport);
+      vkCmdSetScissor(cmd, 0, 1, &scissor);
+      for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+        push_constants(cmd, pipeline, ShadowPush{view.clip_from_world, i, {}});
+        draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
+      }
     }
     vkCmdEndRendering(cmd);
   }
@@ -177,6 +244,7 @@ class DeferredKernel final : public NodeKernel {
   void record_direct(PassContext& ctx) {
     prepare(ctx);
     if (!shadow_drawn_) constants_.shadow = glm::vec4(0.0f);
+    if (!local_drawn_) constants_.local_shadow = glm::vec4(0.0f);
     Image& color = ctx.image("out.color");
     constants_.camera = camera_constants(ctx.scene().camera, color.desc().width, color.desc().height);
     buffers_->constants.write_value(constants_);
@@ -188,6 +256,12 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(6, color.view()));
     writes.push_back(storage_buffer(7, buffers_->directional.handle()));
     writes.push_back(storage_buffer(8, buffers_->points.handle()));
+    writes.push_back(storage_buffer(9, buffers_->spots.handle()));
+    // Without the local shadow pass (no point or spot light casts shadows) any depth image binds;
+    // local_shadow.x = 0 skips it.
+    Image& atlas = ctx.has("tmp.local_shadow_atlas") ? ctx.image("tmp.local_shadow_atlas") : ctx.image("in.gbuffer", 0);
+    writes.push_back(sampled_image(10, atlas.view(), ctx.nearest_sampler()));
+    writes.push_back(storage_buffer(11, buffers_->shadow_views.handle()));
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width,
                      color.desc().height);
   }
@@ -210,12 +284,14 @@ class DeferredKernel final : public NodeKernel {
     uint32_t pad[3];
   };
 
+  const uint32_t shadow_budget_, atlas_size_;
   std::optional<Buffers> buffers_;
   Constants constants_{};
   std::optional<Bounds> bounds_;
   uint64_t bounds_version_ = 0;
   uint64_t prepared_frame_ = ~uint64_t{0};
-  bool shadow_drawn_ = false;
+  LocalShadows local_;
+  bool shadow_drawn_ = false, local_drawn_ = false;
 };
 
 }  // namespace

@@ -11,7 +11,18 @@ struct DirectionalLight {
 };
 struct PointLight {
   vec4 position_range;  // range 0: no cut-off
-  vec4 intensity;
+  vec4 intensity;       // w: its first shadow view, -1 for none (six views, a cube)
+};
+struct SpotLight {
+  vec4 position_range;          // range 0: no cut-off
+  vec4 direction_angle_scale;   // xyz: unit, the cone's axis; w: 1 / (cos inner - cos outer)
+  vec4 intensity_angle_offset;  // rgb: W/sr on the axis; w: -cos outer * the scale
+  vec4 shadow;                  // x: first shadow view, -1 for none; y: its views, 1 or 6 (a cube)
+};
+// One view of a point or spot light in the local shadow atlas (local_shadows.h).
+struct ShadowView {
+  mat4 clip_from_world;  // reversed Z: depth near / distance along the view
+  vec4 tile;             // x, y: corner in the atlas, texels; z: edge, texels; w: texel size at distance 1
 };
 struct SphereLight {
   vec4 center_radius;
@@ -34,7 +45,8 @@ layout(std140, binding = 0) uniform Constants {
   mat4 shadow_from_world;  // to the shadow map's clip space (reversed depth)
   vec4 shadow;             // 1 / map size, 1 when the map was drawn, normal offset (world units), depth bias
   uvec4 counts;            // directional, point, sphere, tube (the rectangles' count is in counts2)
-  uvec4 counts2;           // rectangles
+  uvec4 counts2;           // rectangles, spots
+  vec4 local_shadow;       // 1 when the local shadow atlas was drawn, the views' near plane
 };
 
 // Surfaces the G-buffer holds: depth > 0 (0 is the far plane, where no surface was drawn).

@@ -1,5 +1,5 @@
 #version 460
-// Depth from the directional light: positions only, into the shadow map's clip space.
+// Depth from a light: positions only, into the clip space of the shadow map or atlas tile.
 layout(location = 0) in vec3 position;
 
 layout(std430, binding = 0) readonly buffer Worlds { mat4 worlds[]; };
