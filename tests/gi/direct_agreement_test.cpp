@@ -14,23 +14,13 @@
 #include "nodes/gi/path_tracer/path_tracer.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/render/deferred_graph.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
 namespace {
 
 constexpr FrameSize kFrame{64, 48};
-
-Graph deferred_graph() {
-  Diagnostics d("direct-agreement-test.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
-      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ],
-    "outputs": [ "light.color" ] })",
-                                                d);
-  if (!graph) throw std::runtime_error(d.to_string());
-  return std::move(*graph);
-}
 
 void place(World& world, Entity e, glm::vec3 position, glm::quat rotation = {1.0f, 0.0f, 0.0f, 0.0f}) {
   Transform& t = world.add(e, Transform{});
@@ -78,7 +68,7 @@ Comparison compare(float roughness, uint32_t spp) {
   options.device.validation = true;
   options.alias = false;  // light.color is read back after the frame
   Renderer renderer(options);
-  renderer.set_graph(deferred_graph());
+  renderer.set_graph(deferred_lighting_graph());
   renderer.render(world, kFrame);
   auto messages = renderer.context().take_validation_messages();
   EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);

@@ -13,26 +13,13 @@
 #include "graph/graph_io.h"
 #include "nodes/lighting/deferred/local_shadows.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/render/deferred_graph.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
 namespace {
 
 constexpr FrameSize kFrame{96, 64};
-
-Graph lighting_graph(int budget) {
-  Diagnostics d("local-shadow-test.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
-      { "id": "gbuf", "type": "scene.gbuffer" },
-      { "id": "light", "type": "lighting.deferred",
-        "params": { "shadow_budget": )" + std::to_string(budget) +
-                                                    R"(, "local_shadow_atlas_size": 3072 } } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ],
-    "outputs": [ "light.color" ] })",
-                                                d);
-  if (!graph) throw std::runtime_error(d.to_string());
-  return std::move(*graph);
-}
 
 void add_box(World& world, glm::vec3 center, glm::vec3 size) {
   Entity e = world.create();
@@ -92,7 +79,8 @@ std::vector<float> render_rooms(const Case& c, int budget, bool camera_in_b) {
   options.device.validation = true;
   options.alias = false;  // the lighting is read back after the frame
   Renderer renderer(options);
-  renderer.set_graph(lighting_graph(budget));
+  renderer.set_graph(deferred_lighting_graph(R"({ "shadow_budget": )" + std::to_string(budget) +
+                                             R"(, "local_shadow_atlas_size": 3072 })"));
   World world = sealed_rooms(camera_in_b);
   c.add_light(world);
   renderer.render(world, kFrame);

@@ -9,23 +9,13 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/render/deferred_graph.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
 namespace {
 
 constexpr FrameSize kFrame{96, 64};
-
-Graph lighting_graph() {
-  Diagnostics d("non-finite-light-test.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
-      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ],
-    "outputs": [ "light.color" ] })",
-                                                d);
-  if (!graph) throw std::runtime_error(d.to_string());
-  return std::move(*graph);
-}
 
 // A floor seen from above, a point light with a NaN red channel and a sphere light with an
 // infinite green one, both over the floor.
@@ -53,7 +43,7 @@ TEST(NonFiniteLight, OneBadChannelLeavesTheLightingFinite) {
   options.device.validation = true;
   options.alias = false;  // the lighting is read back after the frame
   Renderer renderer(options);
-  renderer.set_graph(lighting_graph());
+  renderer.set_graph(deferred_lighting_graph());
   renderer.render(floor_with_broken_lights(), kFrame);
   auto messages = renderer.context().take_validation_messages();
   EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);

@@ -12,6 +12,7 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/render/deferred_graph.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -23,17 +24,6 @@ constexpr double kCameraHeight = 4.0, kLightHeight = 2.0, kIntensity = 10.0;
 constexpr double kInnerDegrees = 20.0, kOuterDegrees = 30.0;
 const double kVerticalFov = Camera{}.vertical_fov;
 constexpr double kRelative = 2e-3;  // justified in EveryPixelFollowsTheConeFalloff
-
-Graph lighting_graph() {
-  Diagnostics d("spot-light-test.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
-      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ],
-    "outputs": [ "light.color" ] })",
-                                                d);
-  if (!graph) throw std::runtime_error(d.to_string());
-  return std::move(*graph);
-}
 
 // A white floor of roughness 1 (its specular barely depends on the view) at y = 0; the camera
 // and the spot light above its origin, both looking straight down.
@@ -103,7 +93,7 @@ class SpotLightRender : public testing::Test {
     options.device.validation = true;
     options.alias = false;  // the lighting is read back after the frame
     renderer_ = std::make_unique<Renderer>(options);
-    renderer_->set_graph(lighting_graph());
+    renderer_->set_graph(deferred_lighting_graph());
     renderer_->render(floor_under_spot(), kFrame);
     auto messages = renderer_->context().take_validation_messages();
     EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
