@@ -46,7 +46,7 @@ class GbufferKernel final : public NodeKernel {
     GpuScene& gpu_scene = ctx.gpu_scene();
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       const DrawItem& d = scene.draws[i];
-      const int texture = scene.material_of(d).base_color_texture;
+      const int texture = scene.material_of(d).base_color_texture.texture;
       Image& base_color = texture >= 0 ? gpu_scene.texture(texture) : gpu_scene.white_texture();
       const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
                                         sampled_image(2, base_color.view(), ctx.linear_sampler())};
