@@ -71,7 +71,7 @@ struct TextureRef {
   int texcoord = 0;  // 0: MeshData::uvs, 1: MeshData::uvs1
   glm::vec2 offset{0.0f}, scale{1.0f};
   float rotation = 0.0f;
-  TextureSampling sampling;
+  TextureSampling sampling{};
 };
 
 enum class AlphaMode : uint8_t { opaque, mask, blend };
@@ -83,13 +83,13 @@ struct PbrMaterial {
   float roughness = 0.5f;      // perceptual roughness (alpha = roughness^2); multiplies the texture's G
   float metalness = 0.0f;      // multiplies the metallic-roughness texture's B
   glm::vec3 emissive{0.0f};  // radiance, linear RGB (KHR_materials_emissive_strength folded in); multiplies the texture
-  TextureRef base_color_texture;          // sRGB
-  TextureRef metallic_roughness_texture;  // linear: G roughness, B metalness
-  TextureRef normal_texture;              // linear, tangent space
-  float normal_scale = 1.0f;              // scales the normal texture's x and y
-  TextureRef occlusion_texture;           // linear: R is the ambient (IBL) occlusion
-  float occlusion_strength = 1.0f;        // occlusion = 1 + strength * (R - 1)
-  TextureRef emissive_texture;            // sRGB
+  TextureRef base_color_texture{};          // sRGB
+  TextureRef metallic_roughness_texture{};  // linear: G roughness, B metalness
+  TextureRef normal_texture{};              // linear, tangent space
+  float normal_scale = 1.0f;                // scales the normal texture's x and y
+  TextureRef occlusion_texture{};           // linear: R is the ambient (IBL) occlusion
+  float occlusion_strength = 1.0f;          // occlusion = 1 + strength * (R - 1)
+  TextureRef emissive_texture{};            // sRGB
   AlphaMode alpha_mode = AlphaMode::opaque;
   float alpha_cutoff = 0.5f;  // MASK: alpha below it is not drawn
   bool double_sided = false;  // both sides drawn, the back with its normal flipped

@@ -41,15 +41,23 @@ class GbufferKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    const Pipeline& pipeline = this->pipeline(ctx, targets);
     set_viewport(cmd, w, h);
     GpuScene& gpu_scene = ctx.gpu_scene();
+    const Pipeline* variants[2][2] = {};  // [alpha mask][double-sided], looked up once a frame
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       const DrawItem& d = scene.draws[i];
-      const int texture = scene.material_of(d).base_color_texture.texture;
-      Image& base_color = texture >= 0 ? gpu_scene.texture(texture) : gpu_scene.white_texture();
-      const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
-                                        sampled_image(2, base_color.view(), ctx.linear_sampler())};
+      const PbrMaterial& m = scene.material_of(d);
+      const auto maps = material_maps(m);
+      DescriptorWrite writes[2 + material_map_count] = {uniform_buffer(0, camera_->handle()),
+                                                        storage_buffer(1, draws_->handle())};
+      for (uint32_t t = 0; t < material_map_count; ++t)
+        writes[2 + t] =
+            sampled_image(2 + t, gpu_scene.texture(maps[t]->texture).view(), gpu_scene.sampler(maps[t]->sampling));
+      // BLEND is drawn as opaque until a forward pass for transparent surfaces exists.
+      const bool mask = m.alpha_mode == AlphaMode::mask;
+      const Pipeline*& variant = variants[mask][m.double_sided];
+      if (!variant) variant = &pipeline(ctx, targets, mask, m.double_sided);
+      const Pipeline& pipeline = *variant;
       bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       push_constants(cmd, pipeline, i);
       draw_mesh(cmd, gpu_scene.mesh(d.mesh));
@@ -58,19 +66,22 @@ class GbufferKernel final : public NodeKernel {
   }
 
  private:
-  const Pipeline& pipeline(PassContext& ctx, Image* const* targets) {
+  // One of four variants, cached by the pipeline cache: with the alpha test or without, culling
+  // back faces as the node's param says or (double-sided materials) not at all.
+  const Pipeline& pipeline(PassContext& ctx, Image* const* targets, bool alpha_mask, bool double_sided) {
     GraphicsPipelineDesc desc;
     desc.name = ctx.pass().name;
     desc.vertex_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.vert");
-    desc.fragment_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.frag");
-    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                     {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+    desc.fragment_shader = node_shader(alpha_mask ? "nodes/scene/gbuffer/shaders/gbuffer_masked.frag"
+                                                  : "nodes/scene/gbuffer/shaders/gbuffer.frag");
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    for (uint32_t t = 0; t < material_map_count; ++t)
+      desc.bindings.push_back({2 + t, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     desc.push_constant_bytes = sizeof(uint32_t);
-    use_gpu_vertices(desc);
+    use_gpu_vertices(desc, true);
     // Meshes wind counter-clockwise seen from outside; the projection flips y for Vulkan, which
     // keeps that winding counter-clockwise in framebuffer terms: the pipeline's default front face.
-    desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    desc.cull = cull_backfaces_ && !double_sided ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
     for (int c = 1; c < 5; ++c) desc.color_formats.push_back(targets[c]->desc().format);
     desc.depth_format = targets[0]->desc().format;
     desc.depth_test = desc.depth_write = true;
