@@ -1,5 +1,7 @@
 #include "cli/args.h"
 
+#include <cstdio>
+
 namespace lg::cli {
 
 std::optional<std::string> Args::value(const std::string& option) const {
@@ -37,8 +39,10 @@ std::optional<Args> parse_args(const std::vector<std::string>& argv, const ArgSp
       args.flags.insert(name);
     } else if (spec.options.contains(name)) {
       std::string value;
-      if (eq != std::string::npos) value = arg.substr(eq + 1);
-      else if (k + 1 < argv.size()) value = argv[++k];
+      if (eq != std::string::npos)
+        value = arg.substr(eq + 1);
+      else if (k + 1 < argv.size())
+        value = argv[++k];
       else {
         *error = "'" + name + "' needs a value";
         return std::nullopt;
@@ -54,6 +58,24 @@ std::optional<Args> parse_args(const std::vector<std::string>& argv, const ArgSp
     }
   }
   return args;
+}
+
+bool parse_unsigned(const std::string& text, uint64_t max, uint64_t& value) {
+  char tail = 0;
+  unsigned long long v = 0;
+  if (text.empty() || text[0] == '-' || std::sscanf(text.c_str(), "%llu%c", &v, &tail) != 1 || v > max) return false;
+  value = v;
+  return true;
+}
+
+bool parse_chunk(const std::string& text, uint32_t max_count, uint32_t& index, uint32_t& count) {
+  unsigned i = 0, n = 0;
+  char tail = 0;
+  if (text.empty() || text[0] == '-' || std::sscanf(text.c_str(), "%u/%u%c", &i, &n, &tail) != 2 || n == 0 || i >= n ||
+      n > max_count)
+    return false;
+  index = i, count = n;
+  return true;
 }
 
 }  // namespace lg::cli

@@ -2,6 +2,7 @@
 // (`--size 1920x1080` or `--size=1920x1080`). Unknown options are usage errors.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -11,8 +12,8 @@
 namespace lg::cli {
 
 struct ArgSpec {
-  std::set<std::string> flags;    // "--json"
-  std::set<std::string> options;  // "--scene" (takes a value)
+  std::set<std::string> flags;       // "--json"
+  std::set<std::string> options;     // "--scene" (takes a value)
   std::set<std::string> repeatable;  // options that may appear more than once
 };
 
@@ -25,6 +26,11 @@ struct Args {
   std::optional<std::string> value(const std::string& option) const;
   std::vector<std::string> values(const std::string& option) const;
 };
+
+// An unsigned decimal integer up to `max` (no sign, nothing after it).
+bool parse_unsigned(const std::string& text, uint64_t max, uint64_t& value);
+// "I/N" with 0 <= I < N <= max_count: chunk I of N.
+bool parse_chunk(const std::string& text, uint32_t max_count, uint32_t& index, uint32_t& count);
 
 // Parses argv after the command name; on a usage error returns nullopt and sets `error`.
 std::optional<Args> parse_args(const std::vector<std::string>& argv, const ArgSpec& spec, std::string* error);

@@ -1,9 +1,6 @@
 // `lumagraph bake`: ambient occlusion and bent normals of a mesh or scene baked with Embree per
 // vertex, per lightmap texel or in a volume, whole or one chunk at a time, and `lumagraph bake
 // merge` to assemble the chunks (docs/bake-format.md, docs/baking.md).
-#include <unistd.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -12,6 +9,7 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/progress_line.h"
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
 #include "nodes/occlusion/bake/bake_run.h"
@@ -62,14 +60,6 @@ ArgSpec bake_arg_spec() {
       {"--help"},
       {"--mode", "--rays", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out", "--asset-root"},
       {"--asset-root"}};
-}
-
-bool parse_unsigned(const std::string& text, uint64_t max, uint64_t& value) {
-  char tail = 0;
-  unsigned long long v = 0;
-  if (text.empty() || text[0] == '-' || std::sscanf(text.c_str(), "%llu%c", &v, &tail) != 1 || v > max) return false;
-  value = v;
-  return true;
 }
 
 struct BakeOptions {
@@ -128,40 +118,12 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   }
   if (o.resolution[0] == 0) o.resolution = {o.mode == BakeMode::texel ? 512u : 32u, 0, 0};
   if (auto chunk = args.value("--chunk")) {
-    unsigned i = 0, count = 0;
-    char tail = 0;
-    if (std::sscanf(chunk->c_str(), "%u/%u%c", &i, &count, &tail) != 2 || count == 0 || i >= count ||
-        count > max_bake_chunks)
+    if (!parse_chunk(*chunk, max_bake_chunks, o.chunk_index, o.chunk_count))
       return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_bake_chunks) + "; got '" + *chunk + "'";
-    o.chunk_index = i, o.chunk_count = count, o.chunked = true;
+    o.chunked = true;
   }
   return std::nullopt;
 }
-
-// "\rbake [###########             ]  45%  1134 of 2503 points  0.4 s, 0.5 s left" on a terminal,
-// nothing otherwise.
-class ProgressLine {
- public:
-  explicit ProgressLine(uint64_t total) : total_(total), shown_(isatty(STDERR_FILENO)) {}
-  void update(uint64_t done) const {
-    if (!shown_ || total_ == 0) return;
-    constexpr int width = 24;
-    const int filled = int(width * done / total_);
-    const double elapsed = seconds(), left = done > 0 ? elapsed * double(total_ - done) / double(done) : 0.0;
-    std::fprintf(stderr, "\rbake [%.*s%*s] %3d%%  %llu of %llu points  %.1f s, %.1f s left ", filled,
-                 "########################", width - filled, "", int(100 * done / total_),
-                 static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_), elapsed, left);
-  }
-  void finish() const {
-    if (shown_ && total_ > 0) std::fputc('\n', stderr);
-  }
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-
- private:
-  uint64_t total_;
-  bool shown_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 int merge_command(const std::vector<std::string>& parts, const std::string& out) {
   if (parts.empty()) return usage_error("bake", "merge needs the part files to merge");
@@ -238,7 +200,7 @@ int bake_command(const std::vector<std::string>& argv) {
       make_bake_header(*domain, mesh, input, options.occlusion, options.seed, options.chunk_index, options.chunk_count);
   if (options.mode == BakeMode::texel) file.lightmap_uvs = domain->lightmap_uvs();
   const PointRange range = file.header.range;
-  ProgressLine progress(range.size());
+  ProgressLine progress("bake", "points", range.size());
   file.data =
       run_bake(*scene, *domain, options.occlusion, options.seed, range, [&](uint64_t done) { progress.update(done); });
   progress.finish();

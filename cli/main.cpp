@@ -16,6 +16,7 @@ commands:
   validate GRAPH    check a graph file and report every error
   nodes             list the node types, their ports and params
   bake MESH         bake ambient occlusion and bent normals (vertex, texel, volume)
+  reference [SCENE] path-trace the ground truth that global illumination is measured against
 
 `lumagraph COMMAND --help` describes each command. With no GRAPH, render and compile use
 the embedded default graph (examples/default.json) and the embedded default scene.
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
   if (command == "validate") return validate_command(rest);
   if (command == "nodes") return nodes_command(rest);
   if (command == "bake") return bake_command(rest);
+  if (command == "reference") return reference_command(rest);
   std::fprintf(stderr, "lumagraph: unknown command '%s'\n\n%s", command.c_str(), help);
   return exit_usage;
 }

@@ -123,15 +123,15 @@ std::optional<RayHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direction,
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(embree_->scene, &context, &query);
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  return make_hit(query.ray.tfar, query.hit.primID, direction);
+  return make_hit(query.ray.tfar, query.hit.primID, {query.hit.u, query.hit.v}, direction);
 }
 
-RayHit RayScene::make_hit(float distance, uint32_t primitive, glm::vec3 direction) const {
+RayHit RayScene::make_hit(float distance, uint32_t primitive, glm::vec2 barycentric, glm::vec3 direction) const {
   const std::array<glm::vec3, 3> corners = triangle(primitive);
   // Our own normal rather than Embree's Ng, so that its orientation is the documented one.
   const glm::vec3 n = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
   const float length = glm::length(n);
-  return RayHit{distance, length > 0.0f ? n / length : -direction, primitive};
+  return RayHit{distance, length > 0.0f ? n / length : -direction, primitive, barycentric};
 }
 
 bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float t_max) const {
@@ -186,7 +186,8 @@ void RayScene::intersect_packet(glm::vec3 origin, std::span<const glm::vec3> dir
   for (size_t i = 0; i < directions.size(); ++i)
     hits[i] = query.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID
                   ? std::nullopt
-                  : std::optional(make_hit(query.ray.tfar[i], query.hit.primID[i], directions[i]));
+                  : std::optional(make_hit(query.ray.tfar[i], query.hit.primID[i], {query.hit.u[i], query.hit.v[i]},
+                                           directions[i]));
 }
 
 }  // namespace lg

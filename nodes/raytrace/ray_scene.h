@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
@@ -18,9 +19,10 @@
 namespace lg {
 
 struct RayHit {
-  float distance = 0.0f;   // along the (unit) ray direction
-  glm::vec3 normal{0.0f};  // unit geometric normal, the side counter-clockwise triangles face
-  uint32_t primitive = 0;  // index into the scene's triangles (draws in order, then each mesh's)
+  float distance = 0.0f;        // along the (unit) ray direction
+  glm::vec3 normal{0.0f};       // unit geometric normal, the side counter-clockwise triangles face
+  uint32_t primitive = 0;       // index into the scene's triangles (draws in order, then each mesh's)
+  glm::vec2 barycentric{0.0f};  // weights of the triangle's second and third corners at the hit
 };
 
 class RayScene {
@@ -58,7 +60,7 @@ class RayScene {
 
  private:
   void build();
-  RayHit make_hit(float distance, uint32_t primitive, glm::vec3 direction) const;
+  RayHit make_hit(float distance, uint32_t primitive, glm::vec2 barycentric, glm::vec3 direction) const;
 
   std::vector<glm::vec3> positions_;
   std::vector<uint32_t> indices_;

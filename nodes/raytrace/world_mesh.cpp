@@ -30,9 +30,12 @@ WorldMesh make_world_mesh(const SceneView& view) {
       const glm::vec3 n = normal_matrix * mesh.normals[v];
       const float length = glm::length(n);
       out.normals.push_back(std::isfinite(length) && length > 1e-20f ? n / length : glm::vec3(0.0f));
+      out.uvs.push_back(mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v]);
     }
+    const uint32_t first_triangle = uint32_t(out.triangle_count());
     for (uint32_t i : mesh.indices) out.indices.push_back(base + i);
-    out.parts.push_back({mesh.name, base, uint32_t(mesh.positions.size())});
+    out.parts.push_back(
+        {mesh.name, base, uint32_t(mesh.positions.size()), first_triangle, uint32_t(mesh.indices.size() / 3)});
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -16,9 +17,11 @@ struct WorldMesh {
   struct Part {
     std::string name;  // the mesh's name
     uint32_t first_vertex = 0, vertex_count = 0;
+    uint32_t first_triangle = 0, triangle_count = 0;
   };
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;  // one per position; (0, 0, 0) where the transformed normal is degenerate
+  std::vector<glm::vec2> uvs;      // one per position; (0, 0) where the mesh has none
   std::vector<uint32_t> indices;   // three per triangle
   std::vector<Part> parts;         // one per draw
 
@@ -28,8 +31,8 @@ struct WorldMesh {
 // Throws std::invalid_argument for a malformed mesh or a non-finite position, naming the mesh.
 WorldMesh make_world_mesh(const SceneView& view);
 
-// FNV-1a over the positions, normals and indices (bytes as stored): equal for the same input
-// read on any machine of the same float format.
+// FNV-1a over the positions, normals and indices (bytes as stored; not the uvs, which no bake
+// reads): equal for the same input read on any machine of the same float format.
 uint64_t world_mesh_hash(const WorldMesh& mesh);
 
 }  // namespace lg

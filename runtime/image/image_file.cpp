@@ -83,7 +83,8 @@ ImageData load_image(const std::string& path) {
   return out;
 }
 
-void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba, bool compress) {
+void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba,
+                const ImageSaveOptions& options) {
   if (rgba.size() != uint64_t(width) * height * 4)
     throw ImageFileError(path + ": error: " + std::to_string(rgba.size()) + " floats do not make a " +
                          std::to_string(width) + "x" + std::to_string(height) + " RGBA image");
@@ -93,7 +94,7 @@ void save_image(const std::string& path, uint32_t width, uint32_t height, std::s
   if (ext == ".png")
     type = OIIO::TypeDesc::UINT8;
   else if (ext == ".exr")
-    type = OIIO::TypeDesc::HALF;
+    type = options.full_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
   else if (ext == ".hdr")
     type = OIIO::TypeDesc::FLOAT, channels = 3;
   else
@@ -109,7 +110,7 @@ void save_image(const std::string& path, uint32_t width, uint32_t height, std::s
   auto out = OIIO::ImageOutput::create(temporary.string());
   if (!out) throw ImageFileError(path + ": error: cannot write this format: " + OIIO::geterror());
   OIIO::ImageSpec spec(int(width), int(height), channels, type);
-  if (ext == ".exr") spec.attribute("compression", compress ? "zip" : "none");
+  if (ext == ".exr") spec.attribute("compression", options.compress ? "zip" : "none");
   bool ok =
       out->open(temporary.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
   std::error_code ec;

@@ -50,10 +50,14 @@ class ImageReader {
 
 ImageData load_image(const std::string& path);
 
-// The format follows the extension: .png (8-bit, clamped to [0, 1]), .exr (half float), .hdr.
-// EXR files are zip-compressed unless `compress` is false (much faster to write and read for
-// large scratch files).
+struct ImageSaveOptions {
+  bool compress = true;     // EXR: zip; off is much faster to write and read for large scratch files
+  bool full_float = false;  // EXR: 32-bit floats rather than half (references keep their precision)
+};
+
+// The format follows the extension: .png (8-bit, clamped to [0, 1]), .exr (half float unless
+// full_float), .hdr.
 void save_image(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba,
-                bool compress = true);
+                const ImageSaveOptions& options = {});
 
 }  // namespace lg

@@ -91,7 +91,7 @@ WrittenImage write_test_image(const std::string& path, uint64_t seed) {
       for (int c = 0; c < 3; ++c) written.mean[c] += texel[c] * solid_angle / (4 * std::numbers::pi);
     }
   }
-  save_image(path, kWidth, kHeight, rgba, /*compress=*/false);
+  save_image(path, kWidth, kHeight, rgba, {.compress = false});
   return written;
 }
 

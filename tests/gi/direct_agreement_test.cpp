@@ -1,0 +1,122 @@
+// The reference's direct AOV against lighting.deferred on lavapipe: a grey floor under a
+// rectangle, a sphere, a tube, a point and a directional light, nothing casting shadows on it.
+// Diffuse is exact in both (the deferred node's area formulas are closed forms), so what
+// differs is the reference's noise, the deferred node's representative-point specular for area
+// lights, and the G-buffer's 8-bit albedo and 16-bit float output.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "api/renderer.h"
+#include "graph/graph_io.h"
+#include "nodes/gi/path_tracer/path_tracer.h"
+#include "runtime/scene/make_scene_view.h"
+#include "runtime/scene/mesh_generators.h"
+#include "tests/runtime/gpu_test.h"
+
+namespace lg::test {
+namespace {
+
+constexpr FrameSize kFrame{64, 48};
+
+Graph deferred_graph() {
+  Diagnostics d("direct-agreement-test.json");
+  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ],
+    "outputs": [ "light.color" ] })",
+                                                d);
+  if (!graph) throw std::runtime_error(d.to_string());
+  return std::move(*graph);
+}
+
+void place(World& world, Entity e, glm::vec3 position, glm::quat rotation = {1.0f, 0.0f, 0.0f, 0.0f}) {
+  Transform& t = world.add(e, Transform{});
+  t.position = position, t.rotation = rotation;
+}
+
+World lit_floor(float roughness) {
+  World world;
+  Entity floor = world.create("floor");
+  PbrMaterial grey;
+  grey.base_color = glm::vec4(0.6f, 0.6f, 0.6f, 1.0f), grey.roughness = roughness;
+  const int material = world.add_material(grey);
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(12.0f, 12.0f)), material});
+  world.add(floor, Transform{});
+  Entity camera = world.create("camera");
+  world.add(camera, Camera{.vertical_fov = 1.0f});
+  place(world, camera, {0.0f, 3.0f, 2.5f}, look_rotation({0.0f, -0.8f, -0.6f}));
+  Entity rect = world.create("rect");
+  world.add(rect, RectLight{.intensity = 4.0f, .width = 0.8f, .height = 0.5f});
+  place(world, rect, {-0.8f, 1.0f, -0.5f}, look_rotation({0.2f, -1.0f, 0.1f}));
+  Entity sphere = world.create("sphere");
+  world.add(sphere, SphereLight{.color = {1.0f, 0.8f, 0.6f}, .intensity = 20.0f, .radius = 0.15f});
+  place(world, sphere, {0.9f, 0.6f, 0.0f});
+  Entity tube = world.create("tube");
+  world.add(tube, TubeLight{.color = {0.6f, 0.8f, 1.0f}, .intensity = 15.0f, .length = 1.0f, .radius = 0.05f});
+  place(world, tube, {0.0f, 0.5f, 0.8f});
+  Entity point = world.create("point");
+  world.add(point, PointLight{.intensity = 0.5f});
+  place(world, point, {0.5f, 1.2f, -1.5f});
+  Entity sun = world.create("sun");
+  world.add(sun, DirectionalLight{.intensity = 0.5f});
+  place(world, sun, {0.0f, 0.0f, 0.0f}, look_rotation({0.3f, -1.0f, -0.4f}));
+  return world;
+}
+
+struct Comparison {
+  double relative_mean_error = 0.0;  // |mean(traced) - mean(raster)| / mean(raster)
+  double relative_rms_error = 0.0;   // RMS over pixels of (traced - raster), over mean(raster)
+  double relative_noise = 0.0;       // RMS of the traced standard errors, over mean(raster)
+};
+
+Comparison compare(float roughness, uint32_t spp) {
+  const World world = lit_floor(roughness);
+  RendererOptions options;
+  options.device.validation = true;
+  options.alias = false;  // light.color is read back after the frame
+  Renderer renderer(options);
+  renderer.set_graph(deferred_graph());
+  renderer.render(world, kFrame);
+  auto messages = renderer.context().take_validation_messages();
+  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
+  const std::vector<float> raster = renderer.executor().read_image("light.color");
+
+  const PathScene scene(make_scene_view(world, float(kFrame.width) / kFrame.height), PathEnvironment::none());
+  PathTracerOptions o;
+  o.width = kFrame.width, o.height = kFrame.height, o.samples_per_pixel = spp, o.max_bounces = 1;
+  const ReferenceImage traced = trace_reference(scene, o);
+  const auto& mean = traced.mean_of(ReferenceAov::direct);
+  const auto& error = traced.error_of(ReferenceAov::direct);
+  double raster_sum = 0.0, traced_sum = 0.0, squared = 0.0, noise = 0.0;
+  const size_t n = traced.pixel_count();
+  for (size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) {
+      raster_sum += raster[4 * i + c], traced_sum += mean[i][c];
+      squared += (mean[i][c] - raster[4 * i + c]) * (mean[i][c] - raster[4 * i + c]);
+      noise += double(error[i][c]) * error[i][c];
+    }
+  const double raster_mean = raster_sum / (3.0 * n);
+  return {std::abs(traced_sum - raster_sum) / raster_sum, std::sqrt(squared / (3.0 * n)) / raster_mean,
+          std::sqrt(noise / (3.0 * n)) / raster_mean};
+}
+
+// The reference's own noise is taken out of the per-pixel RMS difference (independent errors
+// add in squares): what is left, at most 4% of the mean, is the deferred node's approximation
+// (representative-point specular, 8-bit albedo, half-float output); the means agree to 1.5%.
+TEST(DirectAgreement, ReferenceDirectLightMatchesTheDeferredNode) {
+  for (float roughness : {1.0f, 0.5f}) {
+    const Comparison c = compare(roughness, 128);
+    const double systematic =
+        std::sqrt(std::max(0.0, c.relative_rms_error * c.relative_rms_error - c.relative_noise * c.relative_noise));
+    std::printf("roughness %.1f: mean %.4f, rms %.4f, reference noise %.4f, rest %.4f (relative)\n", roughness,
+                c.relative_mean_error, c.relative_rms_error, c.relative_noise, systematic);
+    EXPECT_LT(c.relative_mean_error, 0.015) << "roughness " << roughness;
+    EXPECT_LT(systematic, 0.04) << "roughness " << roughness;
+  }
+}
+
+}  // namespace
+}  // namespace lg::test
