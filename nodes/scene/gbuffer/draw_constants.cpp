@@ -15,7 +15,7 @@ void uv_transform_rows(const TextureRef& ref, glm::vec4 rows[2]) {
   // KHR_texture_transform: T(offset) R(rotation) S(scale), R = [cos sin; -sin cos].
   const float c = std::cos(ref.rotation), s = std::sin(ref.rotation);
   rows[0] = {c * ref.scale.x, s * ref.scale.y, ref.offset.x, float(ref.texcoord)};
-  rows[1] = {-s * ref.scale.x, c * ref.scale.y, ref.offset.y, 0.0f};
+  rows[1] = {-s * ref.scale.x, c * ref.scale.y, ref.offset.y, ref.texture >= 0 ? 1.0f : 0.0f};
 }
 
 std::vector<DrawConstants> draw_constants(const SceneView& scene) {

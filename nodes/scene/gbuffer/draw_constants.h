@@ -22,7 +22,7 @@ struct DrawConstants {
   glm::vec4 material;  // perceptual roughness, metalness, normal scale (0: no normal map), occlusion strength
   glm::vec4 alpha;     // x: alpha cutoff of MASK materials (0 otherwise)
   // Per MaterialTexture, the two rows of KHR_texture_transform's 2x3 matrix (uv' = M (u, v, 1)),
-  // the texcoord set (0 or 1) in the first row's w.
+  // the texcoord set (0 or 1) in the first row's w, 1 in the second's where the texture exists.
   glm::vec4 uv_transforms[2 * material_map_count];
 };
 

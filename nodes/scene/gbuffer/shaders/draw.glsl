@@ -17,7 +17,8 @@ struct Draw {
   vec4 base_color;     // linear RGBA, multiplies the texture and the vertex colour
   vec4 material;       // perceptual roughness, metalness, normal scale (0: no normal map), occlusion strength
   vec4 alpha;          // x: alpha cutoff of MASK materials
-  // Per texture two rows of its 2x3 uv transform; the first row's w is its texcoord set.
+  // Per texture two rows of its 2x3 uv transform; the first row's w is its texcoord set, the
+  // second's 1 where the material has the texture.
   vec4 uv_transforms[8];
 };
 

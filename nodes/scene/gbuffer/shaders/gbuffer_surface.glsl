@@ -32,6 +32,12 @@ vec2 map_uv(Draw d, int map) {
   return vec2(dot(row0.xyz, uv), dot(row1.xyz, uv));
 }
 
+// Texture `map` at its uv, or `absent` where the material has none: the branch is the same for
+// the whole draw, so untextured materials (the default world's) pay no texture fetch.
+vec4 sample_map(Draw d, int map, sampler2D tex, vec4 absent) {
+  return d.uv_transforms[2 * map + 1].w > 0.5 ? texture(tex, map_uv(d, map)) : absent;
+}
+
 // The normal map applied to the unit geometric normal n (of the front face).
 vec3 mapped_normal(Draw d, vec3 n) {
   vec2 uv = map_uv(d, LG_NORMAL_MAP);
@@ -63,9 +69,9 @@ void main() {
   vec3 n = normalize(world_normal);
   if (d.material.z != 0.0) n = mapped_normal(d, n);
   if (!gl_FrontFacing) n = -n;  // a back face (double-sided, or culling off) shades its visible side
-  vec4 base = d.base_color * vertex_color * texture(base_color_texture, map_uv(d, LG_BASE_COLOR_MAP));
-  vec4 metal_rough = texture(metallic_roughness_texture, map_uv(d, LG_METALLIC_ROUGHNESS_MAP));
-  float occlusion = 1.0 + d.material.w * (texture(occlusion_texture, map_uv(d, LG_OCCLUSION_MAP)).r - 1.0);
+  vec4 base = d.base_color * vertex_color * sample_map(d, LG_BASE_COLOR_MAP, base_color_texture, vec4(1.0));
+  vec4 metal_rough = sample_map(d, LG_METALLIC_ROUGHNESS_MAP, metallic_roughness_texture, vec4(1.0));
+  float occlusion = 1.0 + d.material.w * (sample_map(d, LG_OCCLUSION_MAP, occlusion_texture, vec4(1.0)).r - 1.0);
 #ifdef LG_ALPHA_MASK
   // Last, so that every texture above is sampled with its derivatives from whole quads.
   if (base.a < d.alpha.x) discard;
