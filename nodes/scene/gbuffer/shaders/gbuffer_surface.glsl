@@ -1,9 +1,11 @@
-// The G-buffer's fragment stage (nodes/common/shaders/gbuffer.glsl): the glTF metal-rough
-// material sampled with each texture's texcoord set, uv transform and sampler; the normal map in
-// tangent space; vertex colours. With LG_ALPHA_MASK defined (gbuffer_masked.frag), fragments
-// whose alpha is below the material's cutoff are discarded; the opaque variant has no discard,
-// so that depth testing can happen before shading. The material's occlusion goes into the albedo
-// target's alpha for lighting.ibl.
+// The G-buffer's fragment stage (nodes/common/shaders/gbuffer.glsl). With LG_MATERIAL_MAPS
+// defined, the glTF metal-rough material sampled with each texture's texcoord set, uv
+// transform and sampler, the normal map in tangent space, and vertex colours; without, the
+// material's factors alone (gbuffer_plain.frag: what draws without textures or vertex colours
+// need, with fewer inputs to interpolate). With LG_ALPHA_MASK defined as well
+// (gbuffer_masked.frag), fragments whose alpha is below the material's cutoff are discarded;
+// the other variants have no discard, so that depth testing can happen before shading. The
+// material's occlusion goes into the albedo target's alpha for lighting.ibl.
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/scene/gbuffer/shaders/draw.glsl"
 
@@ -13,18 +15,21 @@ layout(binding = 4) uniform sampler2D normal_texture;              // tangent sp
 layout(binding = 5) uniform sampler2D occlusion_texture;           // R
 
 layout(location = 0) in vec3 world_normal;
-layout(location = 1) in vec4 texcoords;
 layout(location = 2) in vec4 clip_now;
 layout(location = 3) in vec4 clip_before;
+#ifdef LG_MATERIAL_MAPS
+layout(location = 1) in vec4 texcoords;
 layout(location = 4) in vec3 surface_position;
 layout(location = 5) in vec4 world_tangent;
 layout(location = 6) in vec4 vertex_color;
+#endif
 
 layout(location = 0) out vec4 out_normal;
 layout(location = 1) out vec4 out_albedo;
 layout(location = 2) out vec2 out_material;
 layout(location = 3) out vec2 out_motion;
 
+#ifdef LG_MATERIAL_MAPS
 // The uv that texture `map` of the draw reads: its set, through its transform.
 vec2 map_uv(Draw d, int map) {
   vec4 row0 = d.uv_transforms[2 * map], row1 = d.uv_transforms[2 * map + 1];
@@ -64,14 +69,21 @@ vec3 mapped_normal(Draw d, vec3 n) {
   return dot(mapped, mapped) > 1e-12 ? normalize(mapped) : n;
 }
 
+#endif
+
 void main() {
   Draw d = draws[draw_index];
   vec3 n = normalize(world_normal);
+#ifdef LG_MATERIAL_MAPS
   if (d.material.z != 0.0) n = mapped_normal(d, n);
-  if (!gl_FrontFacing) n = -n;  // a back face (double-sided, or culling off) shades its visible side
   vec4 base = d.base_color * vertex_color * sample_map(d, LG_BASE_COLOR_MAP, base_color_texture, vec4(1.0));
   vec4 metal_rough = sample_map(d, LG_METALLIC_ROUGHNESS_MAP, metallic_roughness_texture, vec4(1.0));
   float occlusion = 1.0 + d.material.w * (sample_map(d, LG_OCCLUSION_MAP, occlusion_texture, vec4(1.0)).r - 1.0);
+#else
+  vec4 base = d.base_color, metal_rough = vec4(1.0);
+  float occlusion = 1.0;
+#endif
+  if (!gl_FrontFacing) n = -n;  // a back face (double-sided, or culling off) shades its visible side
 #ifdef LG_ALPHA_MASK
   // Last, so that every texture above is sampled with its derivatives from whole quads.
   if (base.a < d.alpha.x) discard;
