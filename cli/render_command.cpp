@@ -111,6 +111,7 @@ int render_command(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid;
   }
+  for (const auto& w : world.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
   size_t validation_messages = 0;
   try {

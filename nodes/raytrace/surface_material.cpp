@@ -47,8 +47,8 @@ glm::dvec3 sample_srgb_texture(const TextureData& texture, glm::dvec2 uv) {
 SurfaceMaterial sample_material(const SceneView& view, const DrawItem& draw, glm::dvec2 uv) {
   const PbrMaterial& m = view.material_of(draw);
   glm::dvec3 color(m.base_color);
-  if (m.base_color_texture >= 0 && size_t(m.base_color_texture) < view.textures.size())
-    color *= sample_srgb_texture(*view.textures[m.base_color_texture], uv);
+  const int texture = m.base_color_texture.texture;
+  if (texture >= 0 && size_t(texture) < view.textures.size()) color *= sample_srgb_texture(*view.textures[texture], uv);
   SurfaceMaterial out;
   out.base_color = glm::clamp(color, 0.0, 1.0);
   out.roughness = std::clamp(double(m.roughness), 0.0, 1.0);

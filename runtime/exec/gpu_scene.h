@@ -1,38 +1,46 @@
 // The scene's meshes and textures on the device, for the kernels that draw or sample them:
 // per mesh an interleaved vertex buffer (GpuVertex) and a uint32 index buffer, per texture an
-// RGBA8 sRGB image in READ_ONLY_OPTIMAL, and a 1x1 white texture for materials without one.
+// RGBA8 image with its full mip chain in READ_ONLY_OPTIMAL (sRGB for colour textures, UNORM for
+// data), a 1x1 white texture for materials without one, and one sampler per distinct
+// TextureSampling the materials use (anisotropic where the device allows it).
 // update() uploads again only when SceneView::version changes.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/image.h"
+#include "runtime/gpu/sampler.h"
+#include "runtime/scene/scene_view.h"
 
 namespace lg {
 
 class Context;
 class Submitter;
 struct GraphicsPipelineDesc;
-struct MeshData;
-struct SceneView;
-struct TextureData;
 
-// One vertex as the vertex buffers hold it; uv is 0 for meshes without uvs.
+// One vertex as the vertex buffers hold it. What a mesh lacks is filled in: uvs 0, colour
+// white, tangent 0 (the G-buffer then takes its frame from screen-space derivatives).
 struct GpuVertex {
   float position[3];
   float normal[3];
   float uv[2];
+  float uv1[2] = {};
+  float tangent[4] = {};
+  float color[4] = {1, 1, 1, 1};
 };
-static_assert(sizeof(GpuVertex) == 32);
+static_assert(sizeof(GpuVertex) == 72);
 
 // Sets a pipeline's vertex input to GpuVertex buffers: position, normal and uv at locations 0,
-// 1 and 2 of binding 0.
-void use_gpu_vertices(GraphicsPipelineDesc& desc);
+// 1 and 2 of binding 0, and with `material_attributes` also uv1, tangent and colour at 3, 4
+// and 5 (a vertex shader is given only what it reads).
+void use_gpu_vertices(GraphicsPipelineDesc& desc, bool material_attributes = false);
 
 // A mesh without vertices has no buffers (null handles) and counts of 0.
 struct GpuMesh {
@@ -60,6 +68,8 @@ class GpuScene {
   // Texture `index` of SceneView::textures, or the white texture for -1.
   Image& texture(int index) { return index < 0 ? white_ : textures_.at(index); }
   Image& white_texture() { return white_; }
+  // The sampler for `sampling`, made on first use and kept while the GpuScene lives.
+  VkSampler sampler(const TextureSampling& sampling);
 
  private:
   GpuMesh upload(const MeshData& mesh);
@@ -71,6 +81,7 @@ class GpuScene {
   std::vector<GpuMesh> meshes_;
   std::vector<Image> textures_;
   Image white_;
+  std::vector<std::pair<TextureSampling, std::unique_ptr<Sampler>>> samplers_;  // a handful: searched in turn
 };
 
 }  // namespace lg

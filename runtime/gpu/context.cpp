@@ -54,14 +54,17 @@ Context::Context(const HostDevice& host)
   const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   if (queue_family_ >= count || (families[queue_family_].queueFlags & needed) != needed ||
       families[queue_family_].timestampValidBits == 0)
-    throw GpuError("the host's queue family " + std::to_string(queue_family_) + " lacks graphics, compute or timestamps");
+    throw GpuError("the host's queue family " + std::to_string(queue_family_) +
+                   " lacks graphics, compute or timestamps");
   timestamp_valid_bits_ = families[queue_family_].timestampValidBits;
   vkGetPhysicalDeviceProperties(physical_device_, &properties_);
   vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
   load_device_functions();
 }
 
-Context::~Context() { release(); }
+Context::~Context() {
+  release();
+}
 
 void Context::release() {
   if (!owned_) return;
@@ -147,6 +150,11 @@ void Context::create_device() {
   features13.synchronization2 = VK_TRUE;
   features13.maintenance4 = VK_TRUE;  // glslang's SPIR-V 1.6 compute shaders declare LocalSizeId
   auto features = vk_struct<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features13);
+  // Anisotropic filtering for material textures seen at grazing angles, where the device has it.
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(physical_device_, &supported);
+  features.features.samplerAnisotropy = supported.samplerAnisotropy;
+  if (supported.samplerAnisotropy) max_sampler_anisotropy_ = properties_.limits.maxSamplerAnisotropy;
 
   auto info = vk_struct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features);
   info.queueCreateInfoCount = 1;
@@ -178,6 +186,8 @@ void Context::set_name(VkObjectType type, uint64_t handle, const std::string& na
   set_object_name_(device_, &info);
 }
 
-void Context::wait_idle() const { vk_check(vkDeviceWaitIdle(device_), "vkDeviceWaitIdle"); }
+void Context::wait_idle() const {
+  vk_check(vkDeviceWaitIdle(device_), "vkDeviceWaitIdle");
+}
 
 }  // namespace lg

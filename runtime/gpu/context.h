@@ -19,8 +19,8 @@
 namespace lg {
 
 struct ContextOptions {
-  bool validation = false;        // Khronos validation layer + synchronization validation
-  std::string device_name{};      // a substring of the device's name; empty: the first suitable
+  bool validation = false;    // Khronos validation layer + synchronization validation
+  std::string device_name{};  // a substring of the device's name; empty: the first suitable
   std::string application_name = "lumagraph";
 };
 
@@ -56,6 +56,9 @@ class Context {
   std::string_view device_name() const { return properties_.deviceName; }
   double timestamp_period_ns() const { return properties_.limits.timestampPeriod; }
   uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
+  // The device's anisotropic filtering limit where this context enabled samplerAnisotropy (on
+  // its own device, when the device has it); 1 otherwise, a host's device included.
+  float max_sampler_anisotropy() const { return max_sampler_anisotropy_; }
 
   // Bytes of device memory allocated through Lumagraph and not yet freed.
   uint64_t device_memory_used() const { return memory_used_; }
@@ -89,6 +92,7 @@ class Context {
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
   uint32_t timestamp_valid_bits_ = 64;
+  float max_sampler_anisotropy_ = 1.0f;
   bool owned_ = true;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_properties_{};

@@ -11,9 +11,12 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/gtx/matrix_decompose.hpp>
 #include <map>
+#include <string_view>
+#include <utility>
 
 #include "runtime/scene/contained_path.h"
 #include "runtime/scene/mesh_import.h"
+#include "runtime/scene/mesh_tangents.h"
 #include "runtime/scene/mesh_tools.h"
 #include "runtime/scene/scene_error.h"
 
@@ -112,6 +115,7 @@ class GltfImporter {
       : world_(world), model_(model), stem_(std::move(stem)) {}
 
   std::vector<Entity> run(Entity parent) {
+    check_extensions();
     std::vector<int> roots;
     if (!model_.scenes.empty()) {
       int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
@@ -129,7 +133,26 @@ class GltfImporter {
     return made;
   }
 
+  // What the file uses that was left out, each once, in the order found.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
  private:
+  // A required extension the importer cannot read is an error; an optional one is a warning.
+  void check_extensions() {
+    static constexpr std::string_view supported[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                     "KHR_texture_transform"};
+    auto is_supported = [&](const std::string& name) {
+      return std::find(std::begin(supported), std::end(supported), name) != std::end(supported);
+    };
+    for (const auto& name : model_.extensionsRequired)
+      if (!is_supported(name))
+        fail("the file requires the extension " + name +
+             ", which is not supported (supported: KHR_lights_punctual, KHR_materials_emissive_strength, "
+             "KHR_texture_transform)");
+    for (const auto& name : model_.extensionsUsed)
+      if (!is_supported(name)) warn("the extension " + name + " is not supported and was ignored");
+  }
+
   Entity add_node(int index, Entity parent) {
     const auto& node = item(model_.nodes, index, "node");
     if (std::find(path_.begin(), path_.end(), index) != path_.end())
@@ -178,10 +201,17 @@ class GltfImporter {
     const auto& mesh = item(model_.meshes, index, "mesh");
     if (!meshes_.count(index)) {
       auto& primitives = meshes_[index];
-      for (size_t p = 0; p < mesh.primitives.size(); ++p)
-        if (mesh.primitives[p].mode == TINYGLTF_MODE_TRIANGLES)
-          primitives.push_back(
-              {world_.add_mesh(read_primitive(mesh, index, p)), material(mesh.primitives[p].material)});
+      for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        if (mesh.primitives[p].mode != TINYGLTF_MODE_TRIANGLES) continue;
+        const int m = material(mesh.primitives[p].material);
+        MeshData data = read_primitive(mesh, index, p);
+        // A normal map needs tangents; those of the file come first.
+        if (m >= 0 && data.tangents.empty()) {
+          const TextureRef& normal_map = world_.materials()[static_cast<size_t>(m)].normal_texture;
+          if (normal_map.texture >= 0) generate_tangents(data, normal_map.texcoord);
+        }
+        primitives.push_back({world_.add_mesh(std::move(data)), m});
+      }
     }
     const auto& primitives = meshes_[index];
     for (size_t p = 0; p < primitives.size(); ++p) {
@@ -220,12 +250,28 @@ class GltfImporter {
         out.normals.push_back(length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0.0f, 1.0f, 0.0f));
       }
     }
-    if (attribute("TEXCOORD_0") >= 0) {
-      ElementRange uv = elements(model_, attribute("TEXCOORD_0"), what + " TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-      if (uv.count != positions.count) fail(what + ": TEXCOORD_0 and POSITION counts differ");
-      for (size_t i = 0; i < uv.count; ++i) out.uvs.emplace_back(uv.component(i, 0), uv.component(i, 1));
+    read_uvs(attribute("TEXCOORD_0"), what + " TEXCOORD_0", positions.count, out.uvs);
+    read_uvs(attribute("TEXCOORD_1"), what + " TEXCOORD_1", positions.count, out.uvs1);
+    if (attribute("COLOR_0") >= 0) {
+      const int type = item(model_.accessors, attribute("COLOR_0"), what + " COLOR_0: accessor").type;
+      ElementRange c = elements(model_, attribute("COLOR_0"), what + " COLOR_0",
+                                type == TINYGLTF_TYPE_VEC3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4, unit_types);
+      if (c.count != positions.count) fail(what + ": COLOR_0 and POSITION counts differ");
+      for (size_t i = 0; i < c.count; ++i)
+        out.colors.emplace_back(c.component(i, 0), c.component(i, 1), c.component(i, 2),
+                                c.components == 4 ? c.component(i, 3) : 1.0);
+    }
+    if (attribute("TANGENT") >= 0) {
+      ElementRange t = elements(model_, attribute("TANGENT"), what + " TANGENT", TINYGLTF_TYPE_VEC4,
+                                {TINYGLTF_COMPONENT_TYPE_FLOAT});
+      if (t.count != positions.count) fail(what + ": TANGENT and POSITION counts differ");
+      for (size_t i = 0; i < t.count; ++i) {
+        glm::vec3 v(t.component(i, 0), t.component(i, 1), t.component(i, 2));
+        float length = glm::length(v);
+        if (!(length > 0.0f) || !std::isfinite(length))
+          fail(what + ": TANGENT " + std::to_string(i) + " is not a direction");
+        out.tangents.emplace_back(v / length, t.component(i, 3) < 0.0 ? -1.0f : 1.0f);
+      }
     }
     if (prim.indices >= 0) {
       ElementRange ix = elements(model_, prim.indices, what + " indices", TINYGLTF_TYPE_SCALAR,
@@ -242,6 +288,17 @@ class GltfImporter {
     return out;
   }
 
+  // Float or normalised unsigned integers, as glTF allows for uvs and colours.
+  static constexpr std::initializer_list<int> unit_types = {
+      TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+
+  void read_uvs(int accessor, const std::string& what, size_t count, std::vector<glm::vec2>& out) {
+    if (accessor < 0) return;
+    ElementRange uv = elements(model_, accessor, what, TINYGLTF_TYPE_VEC2, unit_types);
+    if (uv.count != count) fail(what + " and POSITION counts differ");
+    for (size_t i = 0; i < uv.count; ++i) out.emplace_back(uv.component(i, 0), uv.component(i, 1));
+  }
+
   int material(int index) {
     if (index < 0) return -1;
     if (auto found = materials_.find(index); found != materials_.end()) return found->second;
@@ -255,13 +312,120 @@ class GltfImporter {
     out.roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
     out.metalness = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
     out.emissive = vec3_or(m.emissiveFactor, glm::vec3(0.0f));
-    if (pbr.baseColorTexture.index >= 0) out.base_color_texture = texture(pbr.baseColorTexture.index);
+    if (auto strength = m.extensions.find("KHR_materials_emissive_strength"); strength != m.extensions.end()) {
+      const auto& value = strength->second.Get("emissiveStrength");
+      if (value.IsNumber() && value.GetNumberAsDouble() >= 0.0)
+        out.emissive *= static_cast<float>(value.GetNumberAsDouble());
+      else if (value.Type() != tinygltf::NULL_TYPE)
+        fail(out.name + ": emissiveStrength is not a number of 0 or more");
+    }
+    std::string where = "material " + std::to_string(index) + " ('" + out.name + "')";
+    out.base_color_texture = texture_ref(pbr.baseColorTexture, ColorSpace::srgb, where + " baseColorTexture");
+    out.metallic_roughness_texture =
+        texture_ref(pbr.metallicRoughnessTexture, ColorSpace::linear, where + " metallicRoughnessTexture");
+    out.normal_texture = texture_ref(m.normalTexture, ColorSpace::linear, where + " normalTexture");
+    out.normal_scale = static_cast<float>(m.normalTexture.scale);
+    out.occlusion_texture = texture_ref(m.occlusionTexture, ColorSpace::linear, where + " occlusionTexture");
+    out.occlusion_strength = std::clamp(static_cast<float>(m.occlusionTexture.strength), 0.0f, 1.0f);
+    out.emissive_texture = texture_ref(m.emissiveTexture, ColorSpace::srgb, where + " emissiveTexture");
+    if (m.alphaMode == "MASK")
+      out.alpha_mode = AlphaMode::mask;
+    else if (m.alphaMode == "BLEND")
+      out.alpha_mode = AlphaMode::blend;
+    else if (m.alphaMode != "OPAQUE")
+      fail(where + ": alphaMode '" + m.alphaMode + "' is not OPAQUE, MASK or BLEND");
+    out.alpha_cutoff = static_cast<float>(m.alphaCutoff);
+    if (!(out.alpha_cutoff >= 0.0f)) fail(where + ": alphaCutoff " + std::to_string(m.alphaCutoff) + " is below 0");
+    out.double_sided = m.doubleSided;
     return materials_[index] = world_.add_material(std::move(out));
   }
 
-  int texture(int index) {
+  // A material's texture: TextureInfo, NormalTextureInfo or OcclusionTextureInfo, with
+  // KHR_texture_transform. `what` names it in errors and warnings.
+  template <class Info>
+  TextureRef texture_ref(const Info& info, ColorSpace color_space, const std::string& what) {
+    TextureRef out;
+    if (info.index < 0) return out;
+    out.texture = texture(info.index, color_space);
+    out.sampling = sampling(item(model_.textures, info.index, what + ": texture").sampler, what);
+    out.texcoord = info.texCoord;
+    if (auto ext = info.extensions.find("KHR_texture_transform"); ext != info.extensions.end()) {
+      const tinygltf::Value& t = ext->second;
+      auto pair = [&](const char* key, glm::vec2 fallback) {
+        if (!t.Has(key)) return fallback;
+        const auto& v = t.Get(key);
+        if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+          fail(what + ": KHR_texture_transform " + key + " needs 2 numbers");
+        return glm::vec2(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
+      };
+      out.offset = pair("offset", out.offset);
+      out.scale = pair("scale", out.scale);
+      if (t.Has("rotation")) {
+        if (!t.Get("rotation").IsNumber()) fail(what + ": KHR_texture_transform rotation is not a number");
+        out.rotation = static_cast<float>(t.Get("rotation").GetNumberAsDouble());
+      }
+      if (t.Has("texCoord")) {
+        if (!t.Get("texCoord").IsInt()) fail(what + ": KHR_texture_transform texCoord is not an integer");
+        out.texcoord = t.Get("texCoord").GetNumberAsInt();
+      }
+    }
+    if (out.texcoord != 0 && out.texcoord != 1) {
+      warn(what + " uses TEXCOORD_" + std::to_string(out.texcoord) + "; only sets 0 and 1 are read, set 0 is used");
+      out.texcoord = 0;
+    }
+    return out;
+  }
+
+  TextureSampling sampling(int index, const std::string& what) {
+    TextureSampling out;
+    if (index < 0) return out;  // glTF: repeat, and filtering left to the renderer
+    const auto& s = item(model_.samplers, index, what + ": sampler");
+    auto wrap = [&](int mode, const char* axis) {
+      switch (mode) {
+        case TINYGLTF_TEXTURE_WRAP_REPEAT:
+          return TextureWrap::repeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+          return TextureWrap::clamp_to_edge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+          return TextureWrap::mirrored_repeat;
+      }
+      fail(what + ": sampler " + std::to_string(index) + " has an unknown " + axis + " " + std::to_string(mode));
+    };
+    out.wrap_u = wrap(s.wrapS, "wrapS");
+    out.wrap_v = wrap(s.wrapT, "wrapT");
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.mag = TextureFilter::nearest;
+    switch (s.minFilter) {
+      case TINYGLTF_TEXTURE_FILTER_NEAREST:
+        out.min = TextureFilter::nearest, out.mip = MipFilter::none;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_LINEAR:
+        out.mip = MipFilter::none;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+        out.min = TextureFilter::nearest, out.mip = MipFilter::nearest;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+        out.mip = MipFilter::nearest;
+        break;
+      case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+        out.min = TextureFilter::nearest;
+        break;
+      default:  // LINEAR_MIPMAP_LINEAR, or not given
+        break;
+    }
+    return out;
+  }
+
+  void warn(const std::string& message) {
+    if (std::find(warnings_.begin(), warnings_.end(), message) == warnings_.end()) warnings_.push_back(message);
+  }
+
+  // Every image is decoded once per colour space it is used in (an image may serve as colour
+  // and data at once, though rarely).
+  int texture(int index, ColorSpace color_space) {
     const auto& t = item(model_.textures, index, "texture");
-    if (auto found = images_.find(t.source); found != images_.end()) return found->second;
+    const std::pair key(t.source, color_space);
+    if (auto found = images_.find(key); found != images_.end()) return found->second;
     const auto& image = item(model_.images, t.source, "texture " + std::to_string(index) + ": image");
     std::string what =
         "image " + std::to_string(t.source) + (image.uri.empty() ? "" : " ('" + image.uri.substr(0, 64) + "')");
@@ -275,6 +439,7 @@ class GltfImporter {
     out.name = image.name.empty() ? what : image.name;
     out.width = static_cast<uint32_t>(image.width);
     out.height = static_cast<uint32_t>(image.height);
+    out.color_space = color_space;
     out.rgba8.resize(texels * 4);
     for (size_t i = 0; i < texels; ++i) {
       // 16-bit values are little-endian: the high byte is the second.
@@ -286,7 +451,7 @@ class GltfImporter {
       for (int c = 0; c < 3; ++c) out.rgba8[i * 4 + static_cast<size_t>(c)] = channel(gray ? 0 : c);
       out.rgba8[i * 4 + 3] = channels == 2 ? channel(1) : channels == 4 ? channel(3) : 255;
     }
-    return images_[t.source] = world_.add_texture(std::move(out));
+    return images_[key] = world_.add_texture(std::move(out));
   }
 
   void add_camera(int index, Entity e) {
@@ -335,7 +500,9 @@ class GltfImporter {
   std::string stem_;
   std::vector<int> path_;  // the nodes from the root to the one being added
   std::map<int, std::vector<MeshRenderer>> meshes_;
-  std::map<int, int> materials_, images_;
+  std::map<int, int> materials_;
+  std::map<std::pair<int, ColorSpace>, int> images_;
+  std::vector<std::string> warnings_;  // each once, in the order found
 };
 
 // tinygltf reads the files a glTF file refers to through this (contained_path.h says why).
@@ -374,7 +541,10 @@ std::vector<Entity> import_gltf(World& world, const std::string& path, Entity pa
     throw SceneError(path, "not a valid glTF file: " + (error.empty() ? std::string("unknown error") : error));
   }
   try {
-    return GltfImporter(world, model, std::filesystem::path(path).stem().string()).run(parent);
+    GltfImporter importer(world, model, std::filesystem::path(path).stem().string());
+    std::vector<Entity> made = importer.run(parent);
+    for (const auto& w : importer.warnings()) world.warnings.push_back(path + ": " + w);
+    return made;
   } catch (const Malformed& m) {
     throw SceneError(path, m.message);
   }

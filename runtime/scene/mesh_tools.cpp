@@ -39,7 +39,11 @@ std::string mesh_problem(const MeshData& mesh) {
     if (i >= mesh.positions.size())
       return "index " + std::to_string(i) + " is out of range (" + std::to_string(mesh.positions.size()) + " vertices)";
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) return "normals are not one per vertex";
-  if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) return "uvs are not one per vertex";
+  auto per_vertex = [&](const auto& v) { return v.empty() || v.size() == mesh.positions.size(); };
+  if (!per_vertex(mesh.uvs)) return "uvs are not one per vertex";
+  if (!per_vertex(mesh.uvs1)) return "uvs of set 1 are not one per vertex";
+  if (!per_vertex(mesh.colors)) return "colours are not one per vertex";
+  if (!per_vertex(mesh.tangents)) return "tangents are not one per vertex";
   for (const auto& p : mesh.positions)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return "a vertex position is not finite";
   return {};

@@ -23,8 +23,8 @@ struct Bounds {
 // The box around the mesh's positions after `transform`.
 Bounds transformed_bounds(const MeshData& mesh, const glm::mat4& transform);
 
-// What is wrong with the mesh (index out of range, count not a multiple of 3, normals or uvs
-// not one per position, non-finite position), or empty when it is well formed.
+// What is wrong with the mesh (index out of range, count not a multiple of 3, normals, uvs,
+// colours or tangents not one per position, non-finite position), or empty when it is well formed.
 std::string mesh_problem(const MeshData& mesh);
 
 }  // namespace lg

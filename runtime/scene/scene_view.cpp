@@ -40,7 +40,8 @@ SceneSummary SceneView::summary() const {
   s.glossy_materials = false;
   for (const auto& d : draws) {
     const PbrMaterial& m = material_of(d);
-    s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f;
+    // A metallic-roughness texture can only lower the roughness factor and raise no metal above it.
+    s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f || m.metallic_roughness_texture.texture >= 0;
     s.baked_occlusion |=
         d.mesh >= 0 && size_t(d.mesh) < meshes.size() && meshes[size_t(d.mesh)] && meshes[size_t(d.mesh)]->occlusion;
   }

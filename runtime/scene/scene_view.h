@@ -31,27 +31,68 @@ namespace lg {
 struct MeshData {
   std::string name;
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;                  // one per position, unit length
-  std::vector<glm::vec2> uvs;                      // empty, or one per position
-  std::vector<uint32_t> indices;                   // three per triangle
+  std::vector<glm::vec3> normals;   // one per position, unit length
+  std::vector<glm::vec2> uvs;       // empty, or one per position (texcoord set 0)
+  std::vector<glm::vec2> uvs1;      // texcoord set 1: empty, or one per position
+  std::vector<glm::vec4> colors;    // linear RGBA multiplying the base colour: empty, or one per position
+  std::vector<glm::vec4> tangents;  // xyz unit, w = +-1 the bitangent's sign: empty, or one per position
+  std::vector<uint32_t> indices;    // three per triangle
   std::shared_ptr<const MeshOcclusion> occlusion;  // baked offline, or null (mesh_occlusion.h)
 };
 
-// An RGBA8 texture in sRGB (base colour) as decoded from a file, rows top to bottom.
+// How a texture's bytes are to be read: colour (base colour, emissive) is sRGB-encoded, data
+// (normals, metallic-roughness, occlusion) is linear.
+enum class ColorSpace : uint8_t { srgb, linear };
+
+// An RGBA8 texture as decoded from a file, rows top to bottom. The GPU builds its mip chain.
 struct TextureData {
   std::string name;
   uint32_t width = 0, height = 0;
   std::vector<uint8_t> rgba8;
+  ColorSpace color_space = ColorSpace::srgb;
 };
+
+enum class TextureWrap : uint8_t { repeat, clamp_to_edge, mirrored_repeat };
+enum class TextureFilter : uint8_t { nearest, linear };
+enum class MipFilter : uint8_t { none, nearest, linear };  // none: mip 0 only
+
+// glTF's sampler: wrap per axis, magnification, minification and the filter between mips.
+struct TextureSampling {
+  TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
+  TextureFilter mag = TextureFilter::linear, min = TextureFilter::linear;
+  MipFilter mip = MipFilter::linear;
+  friend bool operator==(const TextureSampling&, const TextureSampling&) = default;
+};
+
+// One texture as a material uses it: which texcoord set, KHR_texture_transform (uv' =
+// T(offset) R(rotation) S(scale) uv, rotation counter-clockwise in radians) and the sampler.
+struct TextureRef {
+  int texture = -1;  // index into SceneView::textures, or -1: none
+  int texcoord = 0;  // 0: MeshData::uvs, 1: MeshData::uvs1
+  glm::vec2 offset{0.0f}, scale{1.0f};
+  float rotation = 0.0f;
+  TextureSampling sampling{};
+};
+
+enum class AlphaMode : uint8_t { opaque, mask, blend };
 
 // glTF 2.0 metallic-roughness.
 struct PbrMaterial {
   std::string name;
-  glm::vec4 base_color{1.0f};  // linear; multiplies the texture
-  float roughness = 0.5f;      // perceptual roughness (alpha = roughness^2)
-  float metalness = 0.0f;
-  glm::vec3 emissive{0.0f};     // radiance, linear RGB
-  int base_color_texture = -1;  // index into SceneView::textures, or -1
+  glm::vec4 base_color{1.0f};  // linear; multiplies the texture and the vertex colours
+  float roughness = 0.5f;      // perceptual roughness (alpha = roughness^2); multiplies the texture's G
+  float metalness = 0.0f;      // multiplies the metallic-roughness texture's B
+  glm::vec3 emissive{0.0f};  // radiance, linear RGB (KHR_materials_emissive_strength folded in); multiplies the texture
+  TextureRef base_color_texture{};          // sRGB
+  TextureRef metallic_roughness_texture{};  // linear: G roughness, B metalness
+  TextureRef normal_texture{};              // linear, tangent space
+  float normal_scale = 1.0f;                // scales the normal texture's x and y
+  TextureRef occlusion_texture{};           // linear: R is the ambient (IBL) occlusion
+  float occlusion_strength = 1.0f;          // occlusion = 1 + strength * (R - 1)
+  TextureRef emissive_texture{};            // sRGB
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;  // MASK: alpha below it is not drawn
+  bool double_sided = false;  // both sides drawn, the back with its normal flipped
 };
 
 struct DrawItem {

@@ -26,6 +26,9 @@ class World {
   // The camera the view is seen through; when it is not alive with a Camera, make_scene_view()
   // takes the Camera entity with the lowest index.
   Entity active_camera;
+  // What importers left out of the files they read (an optional extension they do not support),
+  // one line each naming the file; the world loads without it.
+  std::vector<std::string> warnings;
 
   Entity create();
   Entity create(std::string name);  // with a Name component

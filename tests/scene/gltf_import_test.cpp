@@ -55,7 +55,7 @@ void check_fixture_world(const World& w) {
   EXPECT_FLOAT_EQ(m.metalness, 0.5f);
   EXPECT_FLOAT_EQ(m.roughness, 0.25f);
   expect_near(m.emissive, {0.1f, 0.2f, 0.3f});
-  ASSERT_EQ(m.base_color_texture, 0);
+  ASSERT_EQ(m.base_color_texture.texture, 0);
   const TextureData& t = *w.textures()[0];
   EXPECT_EQ(t.width, 2u);
   EXPECT_EQ(t.height, 1u);

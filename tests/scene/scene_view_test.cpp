@@ -229,7 +229,9 @@ TEST(SceneView, SummaryCountsWhatTheWorldHas) {
     c.aperture = 0.02f;
     c.focus_distance = 3.0f;
   });
-  int matte = w.add_material({"matte", glm::vec4(1.0f), 0.95f, 0.0f, glm::vec3(0.0f), -1});
+  PbrMaterial material;
+  material.roughness = 0.95f;
+  int matte = w.add_material(material);
   Entity e = w.create();
   w.add<MeshRenderer>(e, {w.add_mesh({}), matte});
   w.add<PointLight>(w.create());
@@ -253,7 +255,13 @@ TEST(SceneView, SummaryCountsWhatTheWorldHas) {
   EXPECT_TRUE(s.has(SceneFeature::thin_lens_camera));
   w.edit_material(matte).metalness = 0.1f;
   EXPECT_TRUE(make_scene_view(w, 1.0f).summary().glossy_materials);
-  w.edit_material(matte) = {"rough", glm::vec4(1.0f), 0.85f, 0.0f, glm::vec3(0.0f), -1};
+  material.roughness = 0.85f;
+  w.edit_material(matte) = material;
+  EXPECT_TRUE(make_scene_view(w, 1.0f).summary().glossy_materials);
+  // Rough factors, but a metallic-roughness texture may lower the roughness anywhere.
+  material.roughness = 1.0f;
+  material.metallic_roughness_texture.texture = 0;
+  w.edit_material(matte) = material;
   EXPECT_TRUE(make_scene_view(w, 1.0f).summary().glossy_materials);
 }
 

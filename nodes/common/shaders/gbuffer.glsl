@@ -1,6 +1,7 @@
 // How the G-buffer stores a surface (written by scene.gbuffer, read by every lighting pass):
-// normal as n * 0.5 + 0.5 in rgb10a2, albedo in rgba8 sRGB (the sampler decodes it),
-// perceptual roughness and metalness in rg8, motion as uv(now) - uv(last frame) in rg16f.
+// normal as n * 0.5 + 0.5 in rgb10a2, albedo in rgba8 sRGB (the sampler decodes it) with the
+// material's ambient occlusion (glTF occlusion texture; 1: none) in its alpha, which sRGB leaves
+// linear, perceptual roughness and metalness in rg8, motion as uv(now) - uv(last frame) in rg16f.
 #ifndef LG_GBUFFER_GLSL
 #define LG_GBUFFER_GLSL
 

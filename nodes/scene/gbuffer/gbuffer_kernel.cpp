@@ -1,5 +1,6 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -41,15 +42,26 @@ class GbufferKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    const Pipeline& pipeline = this->pipeline(ctx, targets);
     set_viewport(cmd, w, h);
     GpuScene& gpu_scene = ctx.gpu_scene();
+    const Pipeline* variants[3][2] = {};  // [Variant][double-sided], looked up once a frame
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       const DrawItem& d = scene.draws[i];
-      const int texture = scene.material_of(d).base_color_texture;
-      Image& base_color = texture >= 0 ? gpu_scene.texture(texture) : gpu_scene.white_texture();
-      const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
-                                        sampled_image(2, base_color.view(), ctx.linear_sampler())};
+      const PbrMaterial& m = scene.material_of(d);
+      const auto maps = material_maps(m);
+      DescriptorWrite writes[2 + material_map_count] = {uniform_buffer(0, camera_->handle()),
+                                                        storage_buffer(1, draws_->handle())};
+      for (uint32_t t = 0; t < material_map_count; ++t)
+        writes[2 + t] =
+            sampled_image(2 + t, gpu_scene.texture(maps[t]->texture).view(), gpu_scene.sampler(maps[t]->sampling));
+      // BLEND is drawn as opaque until a forward pass for transparent surfaces exists.
+      Variant kind = m.alpha_mode == AlphaMode::mask ? masked : textured;
+      if (kind == textured && scene.mesh_of(d).colors.empty() &&
+          std::all_of(maps.begin(), maps.end(), [](const TextureRef* t) { return t->texture < 0; }))
+        kind = plain;
+      const Pipeline*& variant = variants[kind][m.double_sided];
+      if (!variant) variant = &pipeline(ctx, targets, kind, m.double_sided);
+      const Pipeline& pipeline = *variant;
       bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       push_constants(cmd, pipeline, i);
       draw_mesh(cmd, gpu_scene.mesh(d.mesh));
@@ -58,19 +70,30 @@ class GbufferKernel final : public NodeKernel {
   }
 
  private:
-  const Pipeline& pipeline(PassContext& ctx, Image* const* targets) {
+  // Shader variants (gbuffer_surface.glsl): factors only for draws without textures or vertex
+  // colours (fewer inputs to interpolate), the whole material, or the whole material with the
+  // alpha test.
+  enum Variant { plain, textured, masked };
+
+  // One of six pipelines, cached by the pipeline cache: a Variant, culling back faces as the
+  // node's param says or (double-sided materials) not at all.
+  const Pipeline& pipeline(PassContext& ctx, Image* const* targets, Variant kind, bool double_sided) {
+    static constexpr const char* fragment_shaders[] = {"nodes/scene/gbuffer/shaders/gbuffer_plain.frag",
+                                                       "nodes/scene/gbuffer/shaders/gbuffer.frag",
+                                                       "nodes/scene/gbuffer/shaders/gbuffer_masked.frag"};
     GraphicsPipelineDesc desc;
     desc.name = ctx.pass().name;
-    desc.vertex_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.vert");
-    desc.fragment_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.frag");
-    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                     {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+    desc.vertex_shader = node_shader(kind == plain ? "nodes/scene/gbuffer/shaders/gbuffer_plain.vert"
+                                                   : "nodes/scene/gbuffer/shaders/gbuffer.vert");
+    desc.fragment_shader = node_shader(fragment_shaders[kind]);
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    for (uint32_t t = 0; t < material_map_count; ++t)
+      desc.bindings.push_back({2 + t, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     desc.push_constant_bytes = sizeof(uint32_t);
-    use_gpu_vertices(desc);
+    use_gpu_vertices(desc, kind != plain);
     // Meshes wind counter-clockwise seen from outside; the projection flips y for Vulkan, which
     // keeps that winding counter-clockwise in framebuffer terms: the pipeline's default front face.
-    desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+    desc.cull = cull_backfaces_ && !double_sided ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
     for (int c = 1; c < 5; ++c) desc.color_formats.push_back(targets[c]->desc().format);
     desc.depth_format = targets[0]->desc().format;
     desc.depth_test = desc.depth_write = true;

@@ -1,5 +1,11 @@
 // The kernel of scene.gbuffer: rasterizes every draw of the scene into depth, normal, albedo,
-// roughness/metalness and motion (layout in nodes/common/shaders/gbuffer.glsl).
+// roughness/metalness and motion (layout in nodes/common/shaders/gbuffer.glsl), with the glTF
+// metal-rough material (shaders/gbuffer_surface.glsl): its base colour, metallic-roughness,
+// normal and occlusion textures, vertex colours, the MASK alpha test (a pipeline variant with
+// the discard, so opaque draws keep early depth testing) and double-sided materials drawn
+// without culling; draws without textures or vertex colours take a plain variant that reads
+// the factors only. BLEND materials are drawn as opaque: a forward pass for them is still to
+// come. The emissive texture and factor are not drawn: the G-buffer has no channel for them.
 #pragma once
 
 #include <memory>

@@ -10,8 +10,10 @@
 // the AO input where linked, else the cone's own, through Jimenez et al.'s multi-bounce fit
 // with the diffuse albedo when asked. Specular: the prefiltered map at mip roughness (mips - 1)
 // along the reflection, through the split sum (ibl_shading.glsl), occluded when asked by the
-// cone-cone intersection with bent normals, else by Lagarde's form from AO. Pixels with no
-// surface (depth 0) show the prefiltered mip 0 along the view ray.
+// cone-cone intersection with bent normals, else by Lagarde's form from AO. The material's own
+// occlusion (its glTF occlusion texture, in the G-buffer albedo's alpha) multiplies the
+// diffuse visibility and, through Lagarde's form, the specular: image-based light only, never
+// direct light. Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
@@ -23,7 +25,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = 0) uniform CameraBlock { Camera camera; };
 layout(binding = 1) uniform sampler2D depth_tex;
 layout(binding = 2) uniform sampler2D normal_tex;
-layout(binding = 3) uniform sampler2D albedo_tex;    // sRGB: the sampler decodes it
+layout(binding = 3) uniform sampler2D albedo_tex;    // sRGB: the sampler decodes it; a: material occlusion
 layout(binding = 4) uniform sampler2D material_tex;  // r: perceptual roughness, g: metalness
 layout(binding = 5) uniform sampler2D direct_tex;
 layout(std430, binding = 6) readonly buffer Sh { vec4 sh[]; };
@@ -80,7 +82,9 @@ void main() {
   vec3 p = world_position(camera, texel, depth);
   vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
   vec3 v = normalize(eye - p);
-  vec3 albedo = texelFetch(albedo_tex, texel, 0).rgb;
+  vec4 albedo_occlusion = texelFetch(albedo_tex, texel, 0);
+  vec3 albedo = albedo_occlusion.rgb;
+  float material_occlusion = albedo_occlusion.a;
   vec2 material = texelFetch(material_tex, texel, 0).rg;
   float roughness = material.r, metalness = material.g;
   vec3 diffuse_color = albedo * (1.0 - metalness);
@@ -100,7 +104,9 @@ void main() {
   }
   // How much of the hemisphere's cosine weight is visible: the AO input, else the cone's own.
   float visibility = (flags & 4u) != 0u ? texelFetch(ao_tex, texel, 0).r : (cones ? 1.0 - cone_cos * cone_cos : 1.0);
-  vec3 occlusion = (flags & 32u) != 0u ? multi_bounce_occlusion(visibility, diffuse_color) : vec3(visibility);
+  float diffuse_visibility = visibility * material_occlusion;
+  vec3 occlusion =
+      (flags & 32u) != 0u ? multi_bounce_occlusion(diffuse_visibility, diffuse_color) : vec3(diffuse_visibility);
   vec3 irradiance_over_pi;  // of the open hemisphere, in the cone's shape when there is one
   if ((flags & 1u) != 0u)
     irradiance_over_pi = (cones ? sh_cone_irradiance(n, bent, cone_cos) : sh_irradiance(n)) / LG_SH_PI;
@@ -117,6 +123,7 @@ void main() {
     specular *= specular_occlusion_from_cone(n, r, bent, cone_cos, roughness);
   else if ((flags & 16u) != 0u && (flags & 4u) != 0u)
     specular *= specular_occlusion_from_ao(n_dot_v, visibility, roughness);
+  if (material_occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, material_occlusion, roughness);
 
   imageStore(color, texel, vec4(direct + intensity * (diffuse + specular), 1.0));
 }

@@ -1,15 +1,25 @@
-// What the G-buffer pass knows of one draw (std430; gbuffer_kernel.cpp fills it).
+// What the G-buffer pass knows of one draw (std430; draw_constants.cpp fills it).
 #ifndef LG_GBUFFER_DRAW_GLSL
 #define LG_GBUFFER_DRAW_GLSL
 
 #include "nodes/common/shaders/camera.glsl"
 
+// The material's textures, in the order of MaterialTexture (draw_constants.h).
+#define LG_BASE_COLOR_MAP 0
+#define LG_METALLIC_ROUGHNESS_MAP 1
+#define LG_NORMAL_MAP 2
+#define LG_OCCLUSION_MAP 3
+
 struct Draw {
   mat4 world;
   mat4 previous_world;
   mat4 normal_matrix;  // inverse transpose of world's upper 3x3
-  vec4 base_color;     // linear RGBA, multiplies the texture
-  vec4 material;       // perceptual roughness, metalness
+  vec4 base_color;     // linear RGBA, multiplies the texture and the vertex colour
+  vec4 material;       // perceptual roughness, metalness, normal scale (0: no normal map), occlusion strength
+  vec4 alpha;          // x: alpha cutoff of MASK materials
+  // Per texture two rows of its 2x3 uv transform; the first row's w is its texcoord set, the
+  // second's 1 where the material has the texture.
+  vec4 uv_transforms[8];
 };
 
 layout(std140, binding = 0) uniform CameraBlock { Camera camera; };

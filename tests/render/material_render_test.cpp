@@ -1,0 +1,203 @@
+// The glTF metal-rough material through the G-buffer and lighting, on the assets of
+// scripts/make-test-gltf (examples/gltf/) rendered at 96x96 with validation on. Each test fails
+// without the feature it names: the normal map (and generated tangents, and the screen-space
+// frame when a mesh has none), the MASK alpha test, double-sided materials, the
+// metallic-roughness texture through texcoord set 1 and KHR_texture_transform, vertex colours,
+// and the occlusion texture, which must darken image-based light only.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "api/renderer.h"
+#include "graph/graph_io.h"
+#include "runtime/scene/mesh_import.h"
+#include "tests/runtime/gpu_test.h"
+
+namespace lg::test {
+namespace {
+
+constexpr FrameSize kFrame{96, 96};
+
+World asset(const std::string& name) {
+  World world;
+  import_gltf(world, std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/gltf/" + name);
+  return world;
+}
+
+// The G-buffer and direct light, and with `ibl` the image-based light of a procedural sky
+// (without the multi-bounce fit, which would brighten occlusion by the albedo).
+Graph graph(bool ibl) {
+  Diagnostics d("material-render-test.json");
+  std::string text = ibl ? R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" },
+      { "id": "sky", "type": "env.sky" }, { "id": "sh", "type": "env.sh_project" },
+      { "id": "specular", "type": "env.specular_prefilter" }, { "id": "dfg", "type": "env.brdf_lut" },
+      { "id": "ibl", "type": "lighting.ibl", "params": { "multi_bounce": false } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" }, { "from": "gbuf.gbuffer", "to": "ibl.gbuffer" },
+      { "from": "light.color", "to": "ibl.direct" }, { "from": "sky.cube", "to": "sh.env" },
+      { "from": "sky.cube", "to": "specular.env" }, { "from": "sh.sh", "to": "ibl.sh" },
+      { "from": "specular.specular", "to": "ibl.specular" }, { "from": "dfg.lut", "to": "ibl.brdf_lut" } ],
+    "outputs": [ "ibl.color" ] })"
+                         : R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ],
+    "outputs": [ "light.color" ] })";
+  std::optional<Graph> g = parse_graph_text(text, d);
+  if (!g) throw std::runtime_error(d.to_string());
+  return std::move(*g);
+}
+
+// One frame of `world`; the images are read back by name afterwards.
+class Frame {
+ public:
+  explicit Frame(const World& world, bool ibl = false) : renderer_(options()) {
+    renderer_.set_graph(graph(ibl));
+    renderer_.render(world, kFrame);
+    auto messages = renderer_.context().take_validation_messages();
+    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
+  }
+  // Float RGBA of pixel (x, y) of a resource ("gbuf.gbuffer.normal", "light.color"...).
+  glm::vec4 at(const std::string& resource, int x, int y) {
+    auto found = images_.find(resource);
+    if (found == images_.end()) found = images_.emplace(resource, renderer_.executor().read_image(resource)).first;
+    const size_t i = (size_t(y) * kFrame.width + size_t(x)) * 4;
+    const auto& v = found->second;
+    return {v[i], v[i + 1], v[i + 2], v[i + 3]};
+  }
+  glm::vec3 normal(int x, int y) { return glm::normalize(glm::vec3(at("gbuf.gbuffer.normal", x, y)) * 2.0f - 1.0f); }
+
+ private:
+  static RendererOptions options() {
+    RendererOptions o;
+    o.device.validation = true;
+    o.alias = false;  // intermediate images are read back after the frame
+    return o;
+  }
+  Renderer renderer_;
+  std::map<std::string, std::vector<float>> images_;
+};
+
+// Also prints the largest difference, so that the margin under each tolerance is on record.
+void expect_near(glm::vec3 a, glm::vec3 b, float tolerance, const std::string& what) {
+  float largest = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(a[c], b[c], tolerance) << what << " component " << c;
+    largest = std::max(largest, std::abs(a[c] - b[c]));
+  }
+  std::cout << what << ": largest difference " << largest << " (tolerance " << tolerance << ")\n";
+}
+
+// The plane spans pixels 10 to 85 of the 96x96 frame (2 m at 3 m with a vertical field of
+// 0.8 rad); these lie well inside it, on its left and right halves, and in its middle.
+constexpr int kLeft = 25, kRight = 71, kMiddle = 48;
+
+// The normal texture holds (sin 30, 0, cos 30) in tangent space, the tangent along +X. Its
+// 8-bit texel and the G-buffer's 10-bit normal put the stored normal within 0.006 of it; 0.01.
+TEST(MaterialRender, NormalMapTiltsTheStoredNormal) {
+  const glm::vec3 want(0.5f, 0.0f, std::sqrt(3.0f) / 2.0f);
+  World world = asset("normal-mapped-plane.gltf");
+  Frame generated(world);  // tangents generated on import
+  for (int x : {kLeft, kMiddle, kRight}) expect_near(generated.normal(x, kMiddle), want, 0.01f, "generated tangents");
+  world.edit_mesh(0).tangents.clear();  // the G-buffer's own frame from screen-space derivatives
+  Frame derived(world);
+  for (int x : {kLeft, kMiddle, kRight}) expect_near(derived.normal(x, kMiddle), want, 0.01f, "derived frame");
+}
+
+// The lit plane must match a plane without a normal map whose geometry is tilted the same 30
+// degrees about its centre: at the centre both have the same point, normal, view and light, so
+// their direct light agrees up to the normal map's 8-bit quantisation (under 0.004 rad: under
+// 0.3% of n.l = 0.866, more with the specular lobe): 1%. Head-on, untilted, it would be 15% off.
+TEST(MaterialRender, NormalMappedLightingMatchesTiltedGeometry) {
+  World mapped = asset("normal-mapped-plane.gltf");
+  World tilted = asset("normal-mapped-plane.gltf");
+  tilted.edit_material(0).normal_texture.texture = -1;
+  tilted.each<MeshRenderer, Transform>([](Entity, MeshRenderer&, Transform& t) {
+    t.rotation = glm::angleAxis(glm::radians(30.0f), glm::vec3(0, 1, 0));  // +Z turns toward +X
+  });
+  Frame a(mapped), b(tilted);
+  for (int y : {kMiddle - 1, kMiddle})
+    for (int x : {kMiddle - 1, kMiddle}) {
+      const glm::vec3 lit_mapped(a.at("light.color", x, y)), lit_tilted(b.at("light.color", x, y));
+      ASSERT_GT(lit_tilted.g, 0.1f);
+      expect_near(lit_mapped / lit_tilted, glm::vec3(1.0f), 0.01f, "mapped / tilted at the centre");
+    }
+}
+
+// The quad's texture is transparent over uv 0.25-0.75 (nearest filtering): through the hole the
+// G-buffer holds the red wall 1 m behind, around it the green quad. 8-bit sRGB albedo: 0.01.
+TEST(MaterialRender, MaskCutsAHoleThroughToWhatIsBehind) {
+  Frame f(asset("cut-out-quad.gltf"));
+  const glm::vec3 wall(0.9f, 0.1f, 0.1f), quad(0.2f, 0.9f, 0.2f);
+  expect_near(glm::vec3(f.at("gbuf.gbuffer.albedo", kMiddle, kMiddle)), wall, 0.01f, "through the hole");
+  expect_near(glm::vec3(f.at("gbuf.gbuffer.albedo", 14, kMiddle)), quad, 0.01f, "the quad's opaque rim");
+  // Reversed Z: the wall, farther, has the smaller depth.
+  EXPECT_LT(f.at("gbuf.gbuffer.depth", kMiddle, kMiddle).r, f.at("gbuf.gbuffer.depth", 14, kMiddle).r);
+}
+
+// Turned to show its back, the double-sided quad still draws with cull_backfaces on (the
+// default), its normal flipped toward the camera; single-sided, it is culled and the wall shows.
+TEST(MaterialRender, DoubleSidedDrawsTheBackWithAFlippedNormal) {
+  World world = asset("cut-out-quad.gltf");
+  world.each<MeshRenderer, Transform>([](Entity, MeshRenderer& m, Transform& t) {
+    if (m.material == 0) t.rotation = glm::angleAxis(glm::radians(180.0f), glm::vec3(0, 1, 0));
+  });
+  Frame both(world);
+  expect_near(glm::vec3(both.at("gbuf.gbuffer.albedo", 14, kMiddle)), {0.2f, 0.9f, 0.2f}, 0.01f, "back of the quad");
+  expect_near(both.normal(14, kMiddle), {0, 0, 1}, 0.01f, "flipped normal");
+  world.edit_material(0).double_sided = false;
+  Frame culled(world);
+  expect_near(glm::vec3(culled.at("gbuf.gbuffer.albedo", 14, kMiddle)), {0.9f, 0.1f, 0.1f}, 0.01f, "culled");
+}
+
+// The ORM texture through set 1 and its transform: left half roughness 230/255, metal 0,
+// occlusion 64/255; right half roughness 51/255, metal 1, occlusion 1 (texels, nearest). rg8 and
+// the alpha of rgba8 store these within half a step: 0.003. Without the transform, or reading
+// set 0, the halves swap. Vertex colours halve the red of the base colour (0.9, 0.7, 0.3):
+// 8-bit sRGB storage, 0.01.
+TEST(MaterialRender, MetallicRoughnessOcclusionTexcoordSetTransformAndVertexColour) {
+  Frame f(asset("metal-rough-plane.gltf"));
+  const glm::vec4 left = f.at("gbuf.gbuffer.material", kLeft, kMiddle),
+                  right = f.at("gbuf.gbuffer.material", kRight, kMiddle);
+  EXPECT_NEAR(left.r, 230.0f / 255.0f, 0.003f);
+  EXPECT_NEAR(left.g, 0.0f, 0.003f);
+  EXPECT_NEAR(right.r, 51.0f / 255.0f, 0.003f);
+  EXPECT_NEAR(right.g, 1.0f, 0.003f);
+  EXPECT_NEAR(f.at("gbuf.gbuffer.albedo", kLeft, kMiddle).a, 64.0f / 255.0f, 0.003f);
+  EXPECT_NEAR(f.at("gbuf.gbuffer.albedo", kRight, kMiddle).a, 1.0f, 0.003f);
+  expect_near(glm::vec3(f.at("gbuf.gbuffer.albedo", kRight, kMiddle)), {0.9f * 128.0f / 255.0f, 0.7f, 0.3f}, 0.01f,
+              "base colour x vertex colour");
+}
+
+// Occlusion darkens the image-based light (ibl.color minus the direct light it adds) and leaves
+// the direct light as it was. On the left half (occlusion 64/255, a rough dielectric) the
+// diffuse IBL scales by 0.251 and the small specular by Lagarde's factor, which at roughness 0.9
+// facing the camera is the same 0.251. Both images are half floats near 0.5 (steps of 0.0005)
+// around an ambient term of about 0.06, so the ratio is known to about 0.015: 0.251 +- 0.02.
+// The direct light agrees to 1e-6.
+TEST(MaterialRender, OcclusionTextureDarkensOnlyImageBasedLight) {
+  World occluded = asset("metal-rough-plane.gltf");
+  World open = asset("metal-rough-plane.gltf");
+  open.edit_material(0).occlusion_texture.texture = -1;
+  for (World* w : {&occluded, &open}) w->add<EnvironmentLight>(w->create("sky"));  // the procedural sky
+  Frame a(occluded, true), b(open, true);
+  const glm::vec3 direct_a(a.at("light.color", kLeft, kMiddle)), direct_b(b.at("light.color", kLeft, kMiddle));
+  expect_near(direct_a, direct_b, 1e-6f, "direct light");
+  const glm::vec3 ambient_a = glm::vec3(a.at("ibl.color", kLeft, kMiddle)) - direct_a;
+  const glm::vec3 ambient_b = glm::vec3(b.at("ibl.color", kLeft, kMiddle)) - direct_b;
+  ASSERT_GT(ambient_b.g, 0.01f);
+  const glm::vec3 ratio = ambient_a / ambient_b;
+  std::cout << "ambient with / without occlusion: " << ratio.r << " " << ratio.g << " " << ratio.b << "\n";
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(ratio[c], 64.0f / 255.0f, 0.02f) << "channel " << c;
+  // The right half has occlusion 1: unchanged.
+  expect_near(glm::vec3(a.at("ibl.color", kRight, kMiddle)), glm::vec3(b.at("ibl.color", kRight, kMiddle)), 1e-6f,
+              "no occlusion");
+}
+
+}  // namespace
+}  // namespace lg::test
