@@ -1,6 +1,7 @@
 // `lumagraph bake`: ambient occlusion and bent normals of a mesh or scene baked with Embree per
 // vertex, per lightmap texel or in a volume, whole or one chunk at a time, and `lumagraph bake
-// merge` to assemble the chunks (docs/bake-format.md, docs/baking.md).
+// merge` to assemble the chunks (docs/bake-format.md, docs/baking.md). `--mode probes` goes to
+// probe_bake_command.cpp.
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -9,7 +10,9 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/probe_bake_command.h"
 #include "cli/progress_line.h"
+#include "nodes/gi/probes/probe_file.h"
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
 #include "nodes/occlusion/bake/bake_run.h"
@@ -21,6 +24,7 @@ namespace lg::cli {
 namespace {
 
 constexpr const char* help = R"(usage: lumagraph bake MESH_OR_SCENE --out PATH [options]
+       lumagraph bake SCENE --mode probes --out PATH.lgprobes [probe options]
        lumagraph bake merge PART... --out PATH
 
 Bakes ambient visibility k_A (cosine-weighted, stratified Monte Carlo with Embree on all cores)
@@ -47,19 +51,26 @@ options:
   --asset-root DIR      allow the scene file's paths under DIR (repeatable); the bakes a scene
                         file already names ("occlusion") are not read: a bake traces geometry
 
+--mode probes bakes every probe of every irradiance_volume of a scene file with the path
+tracer's transport (docs/probe-format.md): PATH.lgprobes, and PATH.vti (one volume) or
+PATH.0.vti, PATH.1.vti... beside it. Its options: --rays N (per probe, 1 to 1048576, default
+256), --bounces B (1 to 1024, default 3), --seed, --chunk, --asset-root as above, and
+  --graph GRAPH         the graph whose environment lights the scene (default: the embedded
+                        default graph), as `lumagraph reference`
+  --env FILE            environment (.hdr, .exr) for every env.load node of the graph
+
 `bake merge PART... --out PATH` checks that the parts are all the chunks of one bake, each
-once, and writes the whole bake, byte-identical to a single run with the same options.
+once, and writes the whole bake, byte-identical to a single run with the same options (occlusion
+or probe bakes alike).
 
 exit status: 0 baked, 1 usage error, 2 invalid input (mesh, scene or part files), 3 writing failed
 )";
 
-constexpr int exit_write = 3;
-
 ArgSpec bake_arg_spec() {
-  return {
-      {"--help"},
-      {"--mode", "--rays", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out", "--asset-root"},
-      {"--asset-root"}};
+  return {{"--help"},
+          {"--mode", "--rays", "--bounces", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out",
+           "--asset-root", "--graph", "--env"},
+          {"--asset-root"}};
 }
 
 struct BakeOptions {
@@ -75,9 +86,11 @@ struct BakeOptions {
 std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   if (auto mode = args.value("--mode")) {
     auto parsed = parse_bake_mode(*mode);
-    if (!parsed) return "--mode expects vertex, texel or volume; got '" + *mode + "'";
+    if (!parsed) return "--mode expects vertex, texel, volume or probes; got '" + *mode + "'";
     o.mode = *parsed;
   }
+  for (const char* probes_only : {"--bounces", "--graph", "--env"})
+    if (args.value(probes_only)) return std::string(probes_only) + " applies to --mode probes only";
   uint64_t n = 0;
   if (auto rays = args.value("--rays")) {
     if (!parse_unsigned(*rays, max_rays_per_point, n) || n == 0)
@@ -127,6 +140,7 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
 
 int merge_command(const std::vector<std::string>& parts, const std::string& out) {
   if (parts.empty()) return usage_error("bake", "merge needs the part files to merge");
+  if (is_probe_file(parts[0])) return probe_merge_command(parts, out);
   try {
     std::vector<BakeFile> files;
     for (const std::string& path : parts) files.push_back(read_bake_file(path));
@@ -174,9 +188,17 @@ int bake_command(const std::vector<std::string>& argv) {
     return merge_command({args->positional.begin() + 1, args->positional.end()}, *out);
   if (args->positional.size() != 1)
     return usage_error("bake", "expected one mesh or scene file, got " + std::to_string(args->positional.size()));
+  const std::string& input = args->positional[0];
+  if (args->value("--mode") == "probes") {
+    try {
+      return probe_bake_command(*args, input, load_world(input, world_load_options(*args, input)), *out);
+    } catch (const SceneError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return exit_invalid;
+    }
+  }
   BakeOptions options;
   if (auto bad = read_bake_options(*args, options)) return usage_error("bake", *bad);
-  const std::string& input = args->positional[0];
 
   WorldMesh mesh;
   std::optional<BakeDomain> domain;

@@ -36,6 +36,8 @@ struct ProbeData {
   std::array<glm::vec3, 6> ambient_cube{};
   std::array<glm::vec3, kProbeIrradianceTexels * kProbeIrradianceTexels> irradiance{};  // row by row
   std::array<glm::vec2, kProbeDistanceTexels * kProbeDistanceTexels> distance{};        // mean, mean square
+
+  bool operator==(const ProbeData&) const = default;
 };
 
 class ProbeGrid {

@@ -1,0 +1,20 @@
+// `lumagraph bake --mode probes` and the merge of its parts: the probes of every irradiance
+// volume of a scene baked with the path tracer's transport in the graph's environment, whole or
+// one chunk at a time (docs/probe-format.md, docs/baking.md). bake_command dispatches here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "runtime/scene/world.h"
+
+namespace lg::cli {
+
+// Bakes the probes of `world`, loaded from `input`, into `out`; returns the exit status.
+int probe_bake_command(const Args& args, const std::string& input, const World& world, const std::string& out);
+
+// Merges the .lgprobes parts into `out`; returns the exit status.
+int probe_merge_command(const std::vector<std::string>& parts, const std::string& out);
+
+}  // namespace lg::cli
