@@ -47,9 +47,16 @@ std::optional<PathEnvironment> load_graph_environment(const Args& args, const Sc
   compile_options.scene = view.summary();
   compile_options.frame = frame;
   compile_options.roots.roots = args.values("--asset-root");
-  if (graph && args.value("--env"))
+  if (graph && args.value("--env")) {
+    bool used = false;
     for (GraphNode& node : graph->nodes)
-      if (node.type == "env.load") node.params.set("path", std::filesystem::absolute(*args.value("--env")).string());
+      if (node.type == "env.load") {
+        node.params.set("path", std::filesystem::absolute(*args.value("--env")).string());
+        used = true;
+      }
+    if (!used)
+      std::fprintf(stderr, "lumagraph %s: warning: --env is not used: the graph has no env.load node\n", command);
+  }
   CompileResult compiled;
   if (graph) compiled = compile(*graph, builtin_registry(), compile_options, diagnostics);
   if (!compiled.plan) {
