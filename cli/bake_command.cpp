@@ -189,14 +189,8 @@ int bake_command(const std::vector<std::string>& argv) {
   if (args->positional.size() != 1)
     return usage_error("bake", "expected one mesh or scene file, got " + std::to_string(args->positional.size()));
   const std::string& input = args->positional[0];
-  if (args->value("--mode") == "probes") {
-    try {
-      return probe_bake_command(*args, input, load_world(input, world_load_options(*args, input)), *out);
-    } catch (const SceneError& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      return exit_invalid;
-    }
-  }
+  if (args->value("--mode") == "probes")
+    return probe_bake_command(*args, input, world_load_options(*args, input), *out);
   BakeOptions options;
   if (auto bad = read_bake_options(*args, options)) return usage_error("bake", *bad);
 

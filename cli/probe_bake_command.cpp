@@ -11,6 +11,7 @@
 #include "nodes/gi/probes/probe_outputs.h"
 #include "nodes/raytrace/world_mesh.h"
 #include "runtime/scene/make_scene_view.h"
+#include "runtime/scene/scene_error.h"
 
 namespace lg::cli {
 namespace {
@@ -48,7 +49,8 @@ std::optional<std::string> read_probe_options(const Args& args, ProbeOptions& o)
   return std::nullopt;
 }
 
-// Bakes the file's range of probes, volume by volume, into file.probes.
+// Bakes the file's range of probes, volume by volume, into file.probes. (bake_probes fills a
+// whole grid's storage; a chunk keeps only its own probes of it.)
 void bake_range(const PathScene& scene, ProbeFile& file, const ProgressLine& progress) {
   const ProbeFileHeader& h = file.header;
   const std::vector<uint64_t> first = h.first_probes();
@@ -83,13 +85,14 @@ int write_outputs(const std::string& out, const ProbeFile& file, bool whole) {
 
 }  // namespace
 
-int probe_bake_command(const Args& args, const std::string& input, const World& world, const std::string& out) {
+int probe_bake_command(const Args& args, const std::string& input, const WorldLoadOptions& load_options,
+                       const std::string& out) {
   ProbeOptions options;
   if (auto bad = read_probe_options(args, options)) return usage_error("bake", *bad);
   ProbeFile file;
   std::optional<PathScene> scene;
   try {
-    SceneView view = make_scene_view(world, 16.0f / 9.0f);
+    SceneView view = make_scene_view(load_world(input, load_options), 16.0f / 9.0f);
     if (view.irradiance_volumes.empty()) {
       std::fprintf(stderr,
                    "lumagraph bake: %s: error: the scene has no irradiance volume to bake; add an entity with an "
@@ -108,6 +111,9 @@ int probe_bake_command(const Args& args, const std::string& input, const World& 
         load_graph_environment(args, view, {1280, 720}, "bake", cull_backfaces);
     if (!environment) return exit_invalid;
     scene.emplace(std::move(view), std::move(*environment));
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return exit_invalid;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lumagraph bake: %s: error: %s\n", input.c_str(), e.what());
     return exit_invalid;

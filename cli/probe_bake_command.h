@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "cli/args.h"
-#include "runtime/scene/world.h"
+#include "runtime/scene/load_world.h"
 
 namespace lg::cli {
 
-// Bakes the probes of `world`, loaded from `input`, into `out`; returns the exit status.
-int probe_bake_command(const Args& args, const std::string& input, const World& world, const std::string& out);
+// Bakes the probes of the scene file `input`, loaded with `load_options`, into `out`; returns the
+// exit status.
+int probe_bake_command(const Args& args, const std::string& input, const WorldLoadOptions& load_options,
+                       const std::string& out);
 
 // Merges the .lgprobes parts into `out`; returns the exit status.
 int probe_merge_command(const std::vector<std::string>& parts, const std::string& out);

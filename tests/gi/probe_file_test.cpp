@@ -138,6 +138,10 @@ TEST(ProbeFile, DamagedFilesSayWhatIsWrong) {
   // JSON has no infinity: the writer leaves null, which the reader refuses.
   EXPECT_NE(read_error(encode_probe_file(bad)).find("header \"size\" must be a number"), std::string::npos);
   bad = random_bake();
+  bad.header.volumes[1].size.z = 0.0f;
+  EXPECT_NE(read_error(encode_probe_file(bad)).find("volume 1: size must be positive along every axis"),
+            std::string::npos);
+  bad = random_bake();
   bad.header.volumes.clear();
   EXPECT_NE(read_error(encode_probe_file(bad)).find("\"volumes\" must be an array of 1 to 65536 volumes"),
             std::string::npos);

@@ -128,6 +128,8 @@ ProbeFileHeader parse_header(const JsonValue& j, const HeaderReader& in) {
     IrradianceVolumeData volume;
     read_floats(v, "frame", &volume.world[0][0], 16, in);
     read_floats(v, "size", &volume.size.x, 3, in);
+    if (volume.size.x <= 0.0f || volume.size.y <= 0.0f || volume.size.z <= 0.0f)
+      in.fail(place + ": size must be positive along every axis");
     const glm::dvec3 counts = in.vec3(v, "probes");
     for (int a = 0; a < 3; ++a) {
       if (counts[a] < 1 || counts[a] > max_probes_per_axis || counts[a] != std::floor(counts[a]))
@@ -160,14 +162,14 @@ std::vector<uint64_t> ProbeFileHeader::first_probes() const {
   uint64_t at = 0;
   for (const IrradianceVolumeData& v : volumes) {
     first.push_back(at);
-    at += ProbeGrid(v).probe_count();
+    at += probe_count(v);
   }
   return first;
 }
 
 ProbeFileHeader make_probe_header(std::vector<IrradianceVolumeData> volumes, uint32_t index, uint32_t count) {
   ProbeFileHeader h;
-  for (const IrradianceVolumeData& v : volumes) h.probes += ProbeGrid(v).probe_count();
+  for (const IrradianceVolumeData& v : volumes) h.probes += probe_count(v);
   h.volumes = std::move(volumes);
   h.chunk_index = index, h.chunk_count = count;
   h.range = chunk_range(h.probes, index, count);

@@ -40,6 +40,9 @@ struct ProbeData {
   bool operator==(const ProbeData&) const = default;
 };
 
+// The probes of a volume: its counts, each at least 1, multiplied.
+size_t probe_count(const IrradianceVolumeData& volume);
+
 class ProbeGrid {
  public:
   explicit ProbeGrid(const IrradianceVolumeData& volume);
