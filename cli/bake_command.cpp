@@ -91,12 +91,9 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   }
   for (const char* probes_only : {"--bounces", "--graph", "--env"})
     if (args.value(probes_only)) return std::string(probes_only) + " applies to --mode probes only";
-  uint64_t n = 0;
-  if (auto rays = args.value("--rays")) {
-    if (!parse_unsigned(*rays, max_rays_per_point, n) || n == 0)
-      return "--rays expects a count from 1 to " + std::to_string(max_rays_per_point) + "; got '" + *rays + "'";
-    o.occlusion.rays = int(n);
-  }
+  uint64_t rays = uint64_t(o.occlusion.rays);
+  if (auto bad = read_count(args, "--rays", max_rays_per_point, rays)) return bad;
+  o.occlusion.rays = int(rays);
   if (auto distance = args.value("--max-distance")) {
     char tail = 0;
     float d = 0;
@@ -112,11 +109,9 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   }
   if (o.occlusion.falloff == OcclusionFalloff::obscurance && std::isinf(o.occlusion.max_distance))
     return "--falloff obscurance needs --max-distance";
-  if (auto seed = args.value("--seed")) {
-    if (!parse_unsigned(*seed, uint64_t(1) << 53, o.seed))
-      return "--seed expects an integer from 0 to 2^53; got '" + *seed + "'";
-  }
+  if (auto bad = read_seed(args, o.seed)) return bad;
   if (auto resolution = args.value("--resolution")) {
+    uint64_t n = 0;
     if (o.mode == BakeMode::vertex) return "--resolution applies to texel and volume bakes, not vertex";
     unsigned x = 0, y = 0, z = 0;
     char tail = 0;
@@ -130,11 +125,7 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
     }
   }
   if (o.resolution[0] == 0) o.resolution = {o.mode == BakeMode::texel ? 512u : 32u, 0, 0};
-  if (auto chunk = args.value("--chunk")) {
-    if (!parse_chunk(*chunk, max_bake_chunks, o.chunk_index, o.chunk_count))
-      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_bake_chunks) + "; got '" + *chunk + "'";
-    o.chunked = true;
-  }
+  if (auto bad = read_chunk(args, max_bake_chunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
   return std::nullopt;
 }
 

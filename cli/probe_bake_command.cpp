@@ -26,26 +26,12 @@ std::optional<std::string> read_probe_options(const Args& args, ProbeOptions& o)
   for (const char* occlusion_only : {"--max-distance", "--falloff", "--resolution"})
     if (args.value(occlusion_only))
       return std::string(occlusion_only) + " applies to occlusion bakes, not --mode probes";
-  uint64_t n = 0;
-  if (auto v = args.value("--rays")) {
-    if (!parse_unsigned(*v, max_probe_rays, n) || n == 0)
-      return "--rays expects a count from 1 to " + std::to_string(max_probe_rays) + "; got '" + *v + "'";
-    o.settings.rays = uint32_t(n);
-  }
-  if (auto v = args.value("--bounces")) {
-    if (!parse_unsigned(*v, max_probe_bounces, n) || n == 0)
-      return "--bounces expects a count from 1 to " + std::to_string(max_probe_bounces) + "; got '" + *v + "'";
-    o.settings.bounces = uint32_t(n);
-  }
-  if (auto v = args.value("--seed")) {
-    if (!parse_unsigned(*v, uint64_t(1) << 53, o.settings.seed))
-      return "--seed expects an integer from 0 to 2^53; got '" + *v + "'";
-  }
-  if (auto v = args.value("--chunk")) {
-    if (!parse_chunk(*v, max_bake_chunks, o.chunk_index, o.chunk_count))
-      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_bake_chunks) + "; got '" + *v + "'";
-    o.chunked = true;
-  }
+  uint64_t rays = o.settings.rays, bounces = o.settings.bounces;
+  if (auto bad = read_count(args, "--rays", max_probe_rays, rays)) return bad;
+  if (auto bad = read_count(args, "--bounces", max_probe_bounces, bounces)) return bad;
+  o.settings.rays = uint32_t(rays), o.settings.bounces = uint32_t(bounces);
+  if (auto bad = read_seed(args, o.settings.seed)) return bad;
+  if (auto bad = read_chunk(args, max_bake_chunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
   return std::nullopt;
 }
 

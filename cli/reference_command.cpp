@@ -63,33 +63,21 @@ struct ReferenceArgs {
 };
 
 std::optional<std::string> read_reference_options(const Args& args, ReferenceArgs& o) {
-  uint64_t n = 0;
-  if (auto v = args.value("--spp")) {
-    if (!parse_unsigned(*v, 1u << 20, n) || n == 0) return "--spp expects a count from 1 to 1048576; got '" + *v + "'";
-    o.trace.samples_per_pixel = uint32_t(n);
-  }
-  if (auto v = args.value("--bounces")) {
-    if (!parse_unsigned(*v, 1024, n) || n == 0) return "--bounces expects a count from 1 to 1024; got '" + *v + "'";
-    o.trace.max_bounces = uint32_t(n);
-  }
+  uint64_t spp = o.trace.samples_per_pixel, bounces = o.trace.max_bounces;
+  if (auto bad = read_count(args, "--spp", 1u << 20, spp)) return bad;
+  if (auto bad = read_count(args, "--bounces", 1024, bounces)) return bad;
+  o.trace.samples_per_pixel = uint32_t(spp), o.trace.max_bounces = uint32_t(bounces);
   if (auto v = args.value("--aov")) {
     auto aov = parse_reference_aov(*v);
     if (!aov) return "--aov expects radiance, emission, direct, indirect_diffuse or specular; got '" + *v + "'";
     o.aov = *aov;
   }
-  if (auto v = args.value("--seed")) {
-    if (!parse_unsigned(*v, uint64_t(1) << 53, o.trace.seed))
-      return "--seed expects an integer from 0 to 2^53; got '" + *v + "'";
-  }
+  if (auto bad = read_seed(args, o.trace.seed)) return bad;
   FrameSize frame{1280, 720};
   if (auto bad = read_frame_size(args, frame)) return bad;
   o.trace.width = frame.width, o.trace.height = frame.height;
-  if (auto v = args.value("--chunk")) {
-    if (!parse_chunk(*v, kMaxChunks, o.chunk_index, o.chunk_count))
-      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(kMaxChunks) + "; got '" + *v + "'";
-    o.chunked = true;
-    chunk_rows(o.trace.height, o.chunk_index, o.chunk_count, o.trace.row_begin, o.trace.row_end);
-  }
+  if (auto bad = read_chunk(args, kMaxChunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
+  if (o.chunked) chunk_rows(o.trace.height, o.chunk_index, o.chunk_count, o.trace.row_begin, o.trace.row_end);
   return std::nullopt;
 }
 
