@@ -78,4 +78,31 @@ bool parse_chunk(const std::string& text, uint32_t max_count, uint32_t& index, u
   return true;
 }
 
+std::optional<std::string> read_count(const Args& args, const std::string& option, uint64_t max, uint64_t& value) {
+  const std::optional<std::string> text = args.value(option);
+  uint64_t n = 0;
+  if (!text) return std::nullopt;
+  if (!parse_unsigned(*text, max, n) || n == 0)
+    return option + " expects a count from 1 to " + std::to_string(max) + "; got '" + *text + "'";
+  value = n;
+  return std::nullopt;
+}
+
+std::optional<std::string> read_seed(const Args& args, uint64_t& seed) {
+  const std::optional<std::string> text = args.value("--seed");
+  if (text && !parse_unsigned(*text, uint64_t(1) << 53, seed))
+    return "--seed expects an integer from 0 to 2^53; got '" + *text + "'";
+  return std::nullopt;
+}
+
+std::optional<std::string> read_chunk(const Args& args, uint32_t max_count, uint32_t& index, uint32_t& count,
+                                      bool& chunked) {
+  const std::optional<std::string> text = args.value("--chunk");
+  if (!text) return std::nullopt;
+  if (!parse_chunk(*text, max_count, index, count))
+    return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_count) + "; got '" + *text + "'";
+  chunked = true;
+  return std::nullopt;
+}
+
 }  // namespace lg::cli

@@ -1,6 +1,7 @@
 // `lumagraph bake`: ambient occlusion and bent normals of a mesh or scene baked with Embree per
 // vertex, per lightmap texel or in a volume, whole or one chunk at a time, and `lumagraph bake
-// merge` to assemble the chunks (docs/bake-format.md, docs/baking.md).
+// merge` to assemble the chunks (docs/bake-format.md, docs/baking.md). `--mode probes` goes to
+// probe_bake_command.cpp.
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -9,7 +10,9 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/probe_bake_command.h"
 #include "cli/progress_line.h"
+#include "nodes/gi/probes/probe_file.h"
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
 #include "nodes/occlusion/bake/bake_run.h"
@@ -21,6 +24,7 @@ namespace lg::cli {
 namespace {
 
 constexpr const char* help = R"(usage: lumagraph bake MESH_OR_SCENE --out PATH [options]
+       lumagraph bake SCENE --mode probes --out PATH.lgprobes [probe options]
        lumagraph bake merge PART... --out PATH
 
 Bakes ambient visibility k_A (cosine-weighted, stratified Monte Carlo with Embree on all cores)
@@ -47,19 +51,26 @@ options:
   --asset-root DIR      allow the scene file's paths under DIR (repeatable); the bakes a scene
                         file already names ("occlusion") are not read: a bake traces geometry
 
+--mode probes bakes every probe of every irradiance_volume of a scene file with the path
+tracer's transport (docs/probe-format.md): PATH.lgprobes, and PATH.vti (one volume) or
+PATH.0.vti, PATH.1.vti... beside it. Its options: --rays N (per probe, 1 to 1048576, default
+256), --bounces B (1 to 1024, default 3), --seed, --chunk, --asset-root as above, and
+  --graph GRAPH         the graph whose environment lights the scene (default: the embedded
+                        default graph), as `lumagraph reference`
+  --env FILE            environment (.hdr, .exr) for every env.load node of the graph
+
 `bake merge PART... --out PATH` checks that the parts are all the chunks of one bake, each
-once, and writes the whole bake, byte-identical to a single run with the same options.
+once, and writes the whole bake, byte-identical to a single run with the same options (occlusion
+or probe bakes alike).
 
 exit status: 0 baked, 1 usage error, 2 invalid input (mesh, scene or part files), 3 writing failed
 )";
 
-constexpr int exit_write = 3;
-
 ArgSpec bake_arg_spec() {
-  return {
-      {"--help"},
-      {"--mode", "--rays", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out", "--asset-root"},
-      {"--asset-root"}};
+  return {{"--help"},
+          {"--mode", "--rays", "--bounces", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out",
+           "--asset-root", "--graph", "--env"},
+          {"--asset-root"}};
 }
 
 struct BakeOptions {
@@ -75,15 +86,14 @@ struct BakeOptions {
 std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   if (auto mode = args.value("--mode")) {
     auto parsed = parse_bake_mode(*mode);
-    if (!parsed) return "--mode expects vertex, texel or volume; got '" + *mode + "'";
+    if (!parsed) return "--mode expects vertex, texel, volume or probes; got '" + *mode + "'";
     o.mode = *parsed;
   }
-  uint64_t n = 0;
-  if (auto rays = args.value("--rays")) {
-    if (!parse_unsigned(*rays, max_rays_per_point, n) || n == 0)
-      return "--rays expects a count from 1 to " + std::to_string(max_rays_per_point) + "; got '" + *rays + "'";
-    o.occlusion.rays = int(n);
-  }
+  for (const char* probes_only : {"--bounces", "--graph", "--env"})
+    if (args.value(probes_only)) return std::string(probes_only) + " applies to --mode probes only";
+  uint64_t rays = uint64_t(o.occlusion.rays);
+  if (auto bad = read_count(args, "--rays", max_rays_per_point, rays)) return bad;
+  o.occlusion.rays = int(rays);
   if (auto distance = args.value("--max-distance")) {
     char tail = 0;
     float d = 0;
@@ -99,11 +109,9 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   }
   if (o.occlusion.falloff == OcclusionFalloff::obscurance && std::isinf(o.occlusion.max_distance))
     return "--falloff obscurance needs --max-distance";
-  if (auto seed = args.value("--seed")) {
-    if (!parse_unsigned(*seed, uint64_t(1) << 53, o.seed))
-      return "--seed expects an integer from 0 to 2^53; got '" + *seed + "'";
-  }
+  if (auto bad = read_seed(args, o.seed)) return bad;
   if (auto resolution = args.value("--resolution")) {
+    uint64_t n = 0;
     if (o.mode == BakeMode::vertex) return "--resolution applies to texel and volume bakes, not vertex";
     unsigned x = 0, y = 0, z = 0;
     char tail = 0;
@@ -117,16 +125,13 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
     }
   }
   if (o.resolution[0] == 0) o.resolution = {o.mode == BakeMode::texel ? 512u : 32u, 0, 0};
-  if (auto chunk = args.value("--chunk")) {
-    if (!parse_chunk(*chunk, max_bake_chunks, o.chunk_index, o.chunk_count))
-      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(max_bake_chunks) + "; got '" + *chunk + "'";
-    o.chunked = true;
-  }
+  if (auto bad = read_chunk(args, max_bake_chunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
   return std::nullopt;
 }
 
 int merge_command(const std::vector<std::string>& parts, const std::string& out) {
   if (parts.empty()) return usage_error("bake", "merge needs the part files to merge");
+  if (is_probe_file(parts[0])) return probe_merge_command(parts, out);
   try {
     std::vector<BakeFile> files;
     for (const std::string& path : parts) files.push_back(read_bake_file(path));
@@ -174,9 +179,11 @@ int bake_command(const std::vector<std::string>& argv) {
     return merge_command({args->positional.begin() + 1, args->positional.end()}, *out);
   if (args->positional.size() != 1)
     return usage_error("bake", "expected one mesh or scene file, got " + std::to_string(args->positional.size()));
+  const std::string& input = args->positional[0];
+  if (args->value("--mode") == "probes")
+    return probe_bake_command(*args, input, world_load_options(*args, input), *out);
   BakeOptions options;
   if (auto bad = read_bake_options(*args, options)) return usage_error("bake", *bad);
-  const std::string& input = args->positional[0];
 
   WorldMesh mesh;
   std::optional<BakeDomain> domain;

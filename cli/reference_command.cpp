@@ -3,19 +3,14 @@
 // `lumagraph reference merge` to assemble the bands.
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 
 #include "api/world_loading.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/graph_environment.h"
 #include "cli/graph_input.h"
 #include "cli/progress_line.h"
-#include "graph/compiler.h"
-#include "nodes/builtin_schemas.h"
-#include "nodes/common/node_params.h"
-#include "nodes/env/load/env_load_kernel.h"
 #include "nodes/gi/path_tracer/reference_file.h"
-#include "runtime/image/image_file.h"
 #include "runtime/scene/default_world.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
@@ -52,7 +47,6 @@ options:
 exit status: 0 written, 1 usage error, 2 invalid scene, graph or part files, 3 writing failed
 )";
 
-constexpr int exit_write = 3;
 constexpr uint32_t kMaxChunks = 65536;
 
 ArgSpec reference_arg_spec() {
@@ -69,57 +63,22 @@ struct ReferenceArgs {
 };
 
 std::optional<std::string> read_reference_options(const Args& args, ReferenceArgs& o) {
-  uint64_t n = 0;
-  if (auto v = args.value("--spp")) {
-    if (!parse_unsigned(*v, 1u << 20, n) || n == 0) return "--spp expects a count from 1 to 1048576; got '" + *v + "'";
-    o.trace.samples_per_pixel = uint32_t(n);
-  }
-  if (auto v = args.value("--bounces")) {
-    if (!parse_unsigned(*v, 1024, n) || n == 0) return "--bounces expects a count from 1 to 1024; got '" + *v + "'";
-    o.trace.max_bounces = uint32_t(n);
-  }
+  uint64_t spp = o.trace.samples_per_pixel, bounces = o.trace.max_bounces;
+  if (auto bad = read_count(args, "--spp", 1u << 20, spp)) return bad;
+  if (auto bad = read_count(args, "--bounces", 1024, bounces)) return bad;
+  o.trace.samples_per_pixel = uint32_t(spp), o.trace.max_bounces = uint32_t(bounces);
   if (auto v = args.value("--aov")) {
     auto aov = parse_reference_aov(*v);
     if (!aov) return "--aov expects radiance, emission, direct, indirect_diffuse or specular; got '" + *v + "'";
     o.aov = *aov;
   }
-  if (auto v = args.value("--seed")) {
-    if (!parse_unsigned(*v, uint64_t(1) << 53, o.trace.seed))
-      return "--seed expects an integer from 0 to 2^53; got '" + *v + "'";
-  }
+  if (auto bad = read_seed(args, o.trace.seed)) return bad;
   FrameSize frame{1280, 720};
   if (auto bad = read_frame_size(args, frame)) return bad;
   o.trace.width = frame.width, o.trace.height = frame.height;
-  if (auto v = args.value("--chunk")) {
-    if (!parse_chunk(*v, kMaxChunks, o.chunk_index, o.chunk_count))
-      return "--chunk expects I/N with 0 <= I < N <= " + std::to_string(kMaxChunks) + "; got '" + *v + "'";
-    o.chunked = true;
-    chunk_rows(o.trace.height, o.chunk_index, o.chunk_count, o.trace.row_begin, o.trace.row_end);
-  }
+  if (auto bad = read_chunk(args, kMaxChunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
+  if (o.chunked) chunk_rows(o.trace.height, o.chunk_index, o.chunk_count, o.trace.row_begin, o.trace.row_end);
   return std::nullopt;
-}
-
-// The environment and back-face culling the graph's plan for this scene uses: its env.load (a
-// file) or env.sky node, the first of them that the plan keeps; none when it keeps neither.
-PathEnvironment graph_environment(const Plan& plan, bool& cull_backfaces) {
-  for (const PlanNode& node : plan.nodes)
-    if (node.type == "scene.gbuffer" && node.state == NodeState::Kind::active)
-      cull_backfaces = param_bool(node, "cull_backfaces");
-  for (const PlanNode& node : plan.nodes) {
-    if (node.state != NodeState::Kind::active) continue;
-    if (node.type == "env.load") {
-      ImageData image = load_image(param_string(node, "path"));
-      const uint64_t non_finite = sanitize_equirect(image.rgba, param_number(node, "intensity"));
-      if (non_finite)
-        std::fprintf(stderr, "lumagraph reference: %llu non-finite texels of %s replaced by 0\n",
-                     static_cast<unsigned long long>(non_finite), param_string(node, "path").c_str());
-      return PathEnvironment::image(Equirect{image.width, image.height, std::move(image.rgba)});
-    }
-    if (node.type == "env.sky")
-      return PathEnvironment::sky({glm::dvec3(param_float3(node, "sun_direction")), param_number(node, "sun_intensity"),
-                                   param_number(node, "turbidity")});
-  }
-  return PathEnvironment::none();
 }
 
 int merge_command(const Args& args, const std::string& out) {
@@ -181,27 +140,10 @@ int reference_command(const std::vector<std::string>& argv) {
     SceneView view = make_scene_view(world, float(options.trace.width) / float(options.trace.height));
 
     // The graph, compiled for this scene, says which environment the raster path lights it with.
-    Args graph_args = *args;
-    graph_args.positional.clear();
-    if (auto graph_path = args->value("--graph")) graph_args.positional.push_back(*graph_path);
-    Diagnostics diagnostics;
-    std::optional<Graph> graph = load_graph_argument(graph_args, diagnostics);
-    CompileOptions compile_options;
-    compile_options.scene = view.summary();
-    compile_options.frame = {options.trace.width, options.trace.height};
-    compile_options.roots.roots = args->values("--asset-root");
-    if (graph && args->value("--env"))
-      for (GraphNode& node : graph->nodes)
-        if (node.type == "env.load") node.params.set("path", std::filesystem::absolute(*args->value("--env")).string());
-    CompileResult compiled;
-    if (graph) compiled = compile(*graph, builtin_registry(), compile_options, diagnostics);
-    if (!compiled.plan) {
-      diagnostics.sort_by_position();
-      std::fputs(diagnostics.to_string().c_str(), stderr);
-      return exit_invalid;
-    }
-    PathEnvironment environment = graph_environment(*compiled.plan, options.trace.cull_backfaces);
-    scene.emplace(std::move(view), std::move(environment));
+    std::optional<PathEnvironment> environment = load_graph_environment(
+        *args, view, {options.trace.width, options.trace.height}, "reference", options.trace.cull_backfaces);
+    if (!environment) return exit_invalid;
+    scene.emplace(std::move(view), std::move(*environment));
   } catch (const SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid;

@@ -6,11 +6,13 @@
 
 namespace lg {
 
+size_t probe_count(const IrradianceVolumeData& volume) {
+  return size_t(std::max(volume.probe_counts.x, 1)) * std::max(volume.probe_counts.y, 1) *
+         std::max(volume.probe_counts.z, 1);
+}
+
 ProbeGrid::ProbeGrid(const IrradianceVolumeData& volume)
-    : probes(size_t(std::max(volume.probe_counts.x, 1)) * std::max(volume.probe_counts.y, 1) *
-             std::max(volume.probe_counts.z, 1)),
-      volume_(volume),
-      counts_(glm::max(volume.probe_counts, glm::ivec3(1))) {
+    : probes(lg::probe_count(volume)), volume_(volume), counts_(glm::max(volume.probe_counts, glm::ivec3(1))) {
   const glm::dvec3 size(volume.size);
   for (int a = 0; a < 3; ++a) spacing_[a] = counts_[a] > 1 ? size[a] / (counts_[a] - 1) : size[a];
   // Grid coordinates to the box's local frame: probe 0 at -size / 2 (the centre when alone).

@@ -36,7 +36,12 @@ struct ProbeData {
   std::array<glm::vec3, 6> ambient_cube{};
   std::array<glm::vec3, kProbeIrradianceTexels * kProbeIrradianceTexels> irradiance{};  // row by row
   std::array<glm::vec2, kProbeDistanceTexels * kProbeDistanceTexels> distance{};        // mean, mean square
+
+  bool operator==(const ProbeData&) const = default;
 };
+
+// The probes of a volume: its counts, each at least 1, multiplied.
+size_t probe_count(const IrradianceVolumeData& volume);
 
 class ProbeGrid {
  public:

@@ -1,35 +1,20 @@
 // Encoding, decoding and merging .lgbake files (bake_file.h, docs/bake-format.md).
 #include "nodes/occlusion/bake/bake_file.h"
 
-#include <bit>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <limits>
-#include <map>
-#include <sstream>
 #include <type_traits>
 
-#include "graph/diagnostics.h"
-#include "graph/json_reader.h"
 #include "graph/json_writer.h"
 
 namespace lg {
 namespace {
 
-constexpr char magic[8] = {'L', 'G', 'B', 'A', 'K', 'E', '0', '1'};
+constexpr std::string_view magic = "LGBAKE01";
 constexpr const char* format_name = "lumagraph-bake/1";
-constexpr uint64_t max_header_bytes = 64u << 20;
-constexpr size_t alignment = 16;
 
 const char* falloff_name(OcclusionFalloff f) {
   return f == OcclusionFalloff::none ? "none" : "obscurance";
-}
-
-std::string hex64(uint64_t v) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
-  return text;
 }
 
 JsonValue number_array(std::initializer_list<double> values) {
@@ -38,20 +23,13 @@ JsonValue number_array(std::initializer_list<double> values) {
   return a;
 }
 
-template <class Values>
-struct ArrayRef {
-  const char* name;
-  uint32_t components;
-  Values* values;
-};
-
 // The arrays of a file in their order in it (`File` is BakeFile or const BakeFile).
 template <class File>
 auto arrays_of(File& file) {
   using Values = std::conditional_t<std::is_const_v<File>, const std::vector<float>, std::vector<float>>;
-  std::vector<ArrayRef<Values>> arrays{{"visibility", 1, &file.data.visibility},
-                                       {"bent_normal", 3, &file.data.bent_normal},
-                                       {"valid", 1, &file.data.valid}};
+  std::vector<BakeArray<Values>> arrays{{"visibility", 1, &file.data.visibility},
+                                        {"bent_normal", 3, &file.data.bent_normal},
+                                        {"valid", 1, &file.data.valid}};
   if (file.header.mode == BakeMode::texel) arrays.push_back({"lightmap_uv", 2, &file.lightmap_uvs});
   return arrays;
 }
@@ -92,53 +70,14 @@ JsonValue bake_identity_json(const BakeHeader& h) {
   return j;
 }
 
-// Reading: typed fields with errors that name the file and the key.
-class HeaderReader {
- public:
-  explicit HeaderReader(const std::string& path) : path_(path) {}
-  [[noreturn]] void fail(const std::string& message) const { throw BakeFileError(path_ + ": " + message); }
-  const JsonValue& member(const JsonValue& object, const char* key) const {
-    const JsonValue* v = object.find(key);
-    if (!v) fail(std::string("the header lacks \"") + key + "\"");
-    return *v;
-  }
-  uint64_t integer(const JsonValue& object, const char* key, uint64_t max = uint64_t(1) << 53) const {
-    const JsonValue& v = member(object, key);
-    if (!v.is_integer() || v.as_number() < 0 || v.as_number() > double(max))
-      fail(std::string("header \"") + key + "\" must be an integer from 0 to " + std::to_string(max));
-    return uint64_t(v.as_number());
-  }
-  double number(const JsonValue& v, const char* key) const {
-    if (!v.is_number()) fail(std::string("header \"") + key + "\" must be a number");
-    return v.as_number();
-  }
-  const std::string& string(const JsonValue& object, const char* key) const {
-    const JsonValue& v = member(object, key);
-    if (!v.is_string()) fail(std::string("header \"") + key + "\" must be a string");
-    return v.as_string();
-  }
-  glm::dvec3 vec3(const JsonValue& object, const char* key) const {
-    const JsonValue& v = member(object, key);
-    if (!v.is_array() || v.size() != 3) fail(std::string("header \"") + key + "\" must be an array of 3 numbers");
-    return {number(v.items()[0], key), number(v.items()[1], key), number(v.items()[2], key)};
-  }
-
- private:
-  const std::string& path_;
-};
-
 BakeHeader parse_header(const JsonValue& j, const HeaderReader& in) {
   BakeHeader h;
-  if (!j.is_object()) in.fail("the header is not a JSON object");
   if (in.string(j, "format") != format_name) in.fail("format \"" + in.string(j, "format") + "\" is not " + format_name);
   const std::optional<BakeMode> mode = parse_bake_mode(in.string(j, "mode"));
   if (!mode) in.fail("mode \"" + in.string(j, "mode") + "\" is not vertex, texel or volume");
   h.mode = *mode;
   h.input = in.string(j, "input");
-  const std::string& hash = in.string(j, "input_hash");
-  char* end = nullptr;
-  h.input_hash = std::strtoull(hash.c_str(), &end, 16);
-  if (hash.size() != 16 || *end != '\0') in.fail("input_hash must be 16 hexadecimal digits");
+  h.input_hash = in.hex64(j, "input_hash");
   h.occlusion.rays = int(in.integer(j, "rays", max_rays_per_point));
   const JsonValue& distance = in.member(j, "max_distance");
   h.occlusion.max_distance = distance.is_string() && distance.as_string() == "infinite"
@@ -219,66 +158,21 @@ std::string encode_bake_file(const BakeFile& file) {
   chunk.set("count", uint64_t(file.header.chunk_count));
   chunk.set("begin", file.header.range.begin);
   chunk.set("end", file.header.range.end);
-  JsonValue& arrays = header.set("arrays", JsonValue::array());
-  uint64_t offset = 0;
-  for (const auto& a : arrays_of(file)) {
-    JsonValue entry = JsonValue::object();
-    entry.set("name", a.name);
-    entry.set("type", "float32");
-    entry.set("components", uint64_t(a.components));
-    entry.set("offset", offset);
-    entry.set("bytes", uint64_t(a.values->size() * sizeof(float)));
-    arrays.push(std::move(entry));
-    offset += a.values->size() * sizeof(float);
-  }
-  const std::string text = write_json(header) + "\n";
-  std::string out(magic, sizeof magic);
-  const uint64_t length = text.size();
-  for (int b = 0; b < 8; ++b) out.push_back(char((length >> (8 * b)) & 0xff));
-  out += text;
-  out.resize((out.size() + alignment - 1) / alignment * alignment, '\0');
-  static_assert(std::endian::native == std::endian::little, "the format's floats are little-endian");
-  for (const auto& a : arrays_of(file))
-    out.append(reinterpret_cast<const char*>(a.values->data()), a.values->size() * sizeof(float));
-  return out;
+  return encode_bake_container(magic, std::move(header), arrays_of(file));
 }
 
 void write_bake_file(const std::string& path, const BakeFile& file) {
-  std::string error;
-  if (!write_file_atomically(path, encode_bake_file(file), &error)) throw BakeFileError(path + ": " + error);
+  write_bake_bytes(path, encode_bake_file(file));
 }
 
 BakeFile read_bake_file(const std::string& path) {
   const HeaderReader in(path);
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) in.fail("cannot open the file");
-  std::ostringstream buffer;
-  buffer << stream.rdbuf();
-  const std::string bytes = buffer.str();
-  if (bytes.size() < 16 || std::memcmp(bytes.data(), magic, sizeof magic) != 0)
-    in.fail("not a bake file (it does not start with LGBAKE01)");
-  uint64_t length = 0;
-  for (int b = 0; b < 8; ++b) length |= uint64_t(uint8_t(bytes[8 + b])) << (8 * b);
-  if (length > max_header_bytes || 16 + length > bytes.size())
-    in.fail("the header length " + std::to_string(length) + " runs past the end of the file (truncated?)");
-  Diagnostics diagnostics(path);
-  const std::optional<JsonValue> json = read_json(std::string_view(bytes).substr(16, length), diagnostics);
-  if (!json) in.fail("the header is not valid JSON: " + diagnostics.to_string());
+  const BakeContainer container = read_bake_container(path, magic, "bake");
   BakeFile file;
-  file.header = parse_header(*json, in);
-  const size_t data_start = (16 + length + alignment - 1) / alignment * alignment;
+  file.header = parse_header(container.header, in);
   file.data.resize(file.header.range.size());
   if (file.header.mode == BakeMode::texel) file.lightmap_uvs.resize(file.header.triangles * 6);
-  size_t expected_size = data_start;
-  for (const auto& a : arrays_of(file)) expected_size += a.values->size() * sizeof(float);
-  if (bytes.size() != expected_size)
-    in.fail("the file has " + std::to_string(bytes.size()) + " bytes; its header describes " +
-            std::to_string(expected_size) + " (truncated or damaged)");
-  size_t offset = data_start;
-  for (const auto& a : arrays_of(file)) {
-    std::memcpy(a.values->data(), bytes.data() + offset, a.values->size() * sizeof(float));
-    offset += a.values->size() * sizeof(float);
-  }
+  container.read_arrays(in, arrays_of(file));
   return file;
 }
 
@@ -286,32 +180,22 @@ BakeFile merge_bake_parts(const std::vector<BakeFile>& parts, const std::vector<
   if (parts.empty()) throw BakeFileError("merge: no parts given");
   const BakeHeader& first = parts[0].header;
   const std::string identity = write_json(bake_identity_json(first));
-  std::map<uint32_t, size_t> by_index;
+  std::vector<ChunkId> chunks;
   for (size_t p = 0; p < parts.size(); ++p) {
     const BakeHeader& h = parts[p].header;
     if (write_json(bake_identity_json(h)) != identity)
       throw BakeFileError(paths[p] + ": belongs to another bake than " + paths[0] +
                           " (the input, its geometry, the mode, the settings or the seed differ)");
-    if (h.chunk_count != first.chunk_count)
-      throw BakeFileError(paths[p] + ": is a chunk of " + std::to_string(h.chunk_count) + ", " + paths[0] + " of " +
-                          std::to_string(first.chunk_count));
     if (parts[p].lightmap_uvs != parts[0].lightmap_uvs)
       throw BakeFileError(paths[p] + ": its lightmap UVs differ from " + paths[0] + "'s");
-    if (auto [at, fresh] = by_index.emplace(h.chunk_index, p); !fresh)
-      throw BakeFileError(paths[p] + ": chunk " + std::to_string(h.chunk_index) + " is also in " + paths[at->second]);
-  }
-  if (by_index.size() != first.chunk_count) {
-    std::string missing;
-    for (uint32_t i = 0; i < first.chunk_count && missing.size() < 200; ++i)
-      if (!by_index.contains(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
-    throw BakeFileError("merge: chunks missing of " + std::to_string(first.chunk_count) + ": " + missing);
+    chunks.push_back({h.chunk_index, h.chunk_count});
   }
   BakeFile merged;
   merged.header = first;
   merged.header.chunk_index = 0, merged.header.chunk_count = 1;
   merged.header.range = {0, first.points};
   merged.lightmap_uvs = parts[0].lightmap_uvs;
-  for (const auto& [index, p] : by_index) {
+  for (size_t p : chunk_order(chunks, paths)) {
     const BakeData& d = parts[p].data;
     merged.data.visibility.insert(merged.data.visibility.end(), d.visibility.begin(), d.visibility.end());
     merged.data.bent_normal.insert(merged.data.bent_normal.end(), d.bent_normal.begin(), d.bent_normal.end());

@@ -8,23 +8,16 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "nodes/occlusion/bake/bake_domain.h"
 #include "nodes/occlusion/bake/bake_run.h"
 #include "nodes/occlusion/estimate/occlusion_estimate.h"
+#include "nodes/raytrace/bake_container.h"
 #include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
-
-// A file that cannot be read, is not a bake, is damaged, or does not fit with the others.
-// The message starts with the file's path.
-class BakeFileError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct BakeHeader {
   BakeMode mode = BakeMode::vertex;

@@ -6,11 +6,6 @@
 
 namespace lg {
 
-PointRange chunk_range(uint64_t points, uint32_t index, uint32_t count) {
-  // points * index fits in 64 bits: points is below 2^32 and index below 2^20.
-  return {points * index / count, points * (uint64_t(index) + 1) / count};
-}
-
 BakeData run_bake(const RayScene& scene, const BakeDomain& domain, const OcclusionSettings& settings, uint64_t seed,
                   PointRange range, const std::function<void(uint64_t)>& progress) {
   check_occlusion_settings(settings);

@@ -9,21 +9,10 @@
 
 #include "nodes/occlusion/bake/bake_domain.h"
 #include "nodes/occlusion/estimate/occlusion_estimate.h"
+#include "nodes/raytrace/bake_chunks.h"
 #include "nodes/raytrace/ray_scene.h"
 
 namespace lg {
-
-struct PointRange {
-  uint64_t begin = 0, end = 0;
-  uint64_t size() const { return end - begin; }
-};
-
-// A bake splits into at most this many chunks.
-inline constexpr uint32_t max_bake_chunks = 1000000;
-
-// Chunk `index` of `count` (index < count <= max_bake_chunks, points < 2^32):
-// [points * index / count, points * (index + 1) / count).
-PointRange chunk_range(uint64_t points, uint32_t index, uint32_t count);
 
 // A volume point whose rays mostly (over half) first hit back faces is inside geometry.
 inline constexpr float inside_backface_fraction = 0.5f;
