@@ -20,7 +20,8 @@ SurfaceAttributes SurfaceLookup::at(uint32_t primitive, glm::dvec3 point) const 
   out.draw = uint32_t(part - mesh_.parts.begin()) - 1;
   if (!(area2 > 0.0)) {  // never hit: zero area
     out.normal = glm::dvec3(0.0, 0.0, 1.0);
-    out.uv = glm::dvec2(mesh_.uvs[corner[0]]);
+    out.texcoords = {glm::dvec2(mesh_.uvs[corner[0]]), glm::dvec2(mesh_.uvs1[corner[0]]),
+                     glm::dvec4(mesh_.colors[corner[0]])};
     return out;
   }
   const double wb = glm::dot(glm::cross(point - a, c - a), n) / area2;
@@ -30,8 +31,11 @@ SurfaceAttributes SurfaceLookup::at(uint32_t primitive, glm::dvec3 point) const 
                                   wb * glm::dvec3(mesh_.normals[corner[1]]) + wc * glm::dvec3(mesh_.normals[corner[2]]);
   const double length = glm::length(interpolated);
   out.normal = length > 1e-12 ? interpolated / length : n / std::sqrt(area2);
-  out.uv = wa * glm::dvec2(mesh_.uvs[corner[0]]) + wb * glm::dvec2(mesh_.uvs[corner[1]]) +
-           wc * glm::dvec2(mesh_.uvs[corner[2]]);
+  auto interpolate = [&]<class T>(const std::vector<T>& values) {
+    using D = glm::vec<T::length(), double>;
+    return wa * D(values[corner[0]]) + wb * D(values[corner[1]]) + wc * D(values[corner[2]]);
+  };
+  out.texcoords = {interpolate(mesh_.uvs), interpolate(mesh_.uvs1), interpolate(mesh_.colors)};
   return out;
 }
 

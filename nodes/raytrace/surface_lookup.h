@@ -1,19 +1,20 @@
 // What a ray hit on the flattened scene (world_mesh.h) is to shading: the interpolated unit
-// vertex normal, the texture coordinates and the draw the triangle belongs to, at a point on
-// one of its triangles (RayScene numbers triangles as make_world_mesh() does).
+// vertex normal, texture coordinates and vertex colour, and the draw the triangle belongs to,
+// at a point on one of its triangles (RayScene numbers triangles as make_world_mesh() does).
 #pragma once
 
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "nodes/raytrace/surface_material.h"
 #include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
 
 struct SurfaceAttributes {
   glm::dvec3 normal;  // unit; the geometric normal where the vertex normals cancel
-  glm::dvec2 uv;
+  SurfaceTexcoords texcoords;
   uint32_t draw = 0;  // index into the SceneView's draws (and the mesh's parts)
 };
 

@@ -21,39 +21,75 @@ const std::array<double, 256>& srgb_to_linear_table() {
   return table;
 }
 
-uint32_t wrap(int64_t i, uint32_t size) {
-  return uint32_t(((i % int64_t(size)) + size) % size);
+// Texel index i of a row or column `size` long, as the wrap mode maps it.
+uint32_t wrap(int64_t i, uint32_t size, TextureWrap mode) {
+  const int64_t n = size;
+  switch (mode) {
+    case TextureWrap::clamp_to_edge:
+      return uint32_t(std::clamp<int64_t>(i, 0, n - 1));
+    case TextureWrap::mirrored_repeat: {
+      const int64_t period = ((i % (2 * n)) + 2 * n) % (2 * n);
+      return uint32_t(period < n ? period : 2 * n - 1 - period);
+    }
+    case TextureWrap::repeat:
+      break;
+  }
+  return uint32_t(((i % n) + n) % n);
+}
+
+glm::dvec4 texel(const TextureData& t, uint32_t col, uint32_t row) {
+  const uint8_t* p = &t.rgba8[(size_t(row) * t.width + col) * 4];
+  if (t.color_space == ColorSpace::srgb) {
+    const auto& linear = srgb_to_linear_table();
+    return {linear[p[0]], linear[p[1]], linear[p[2]], p[3] / 255.0};
+  }
+  return glm::dvec4(p[0], p[1], p[2], p[3]) / 255.0;
+}
+
+// The uv a texture reference reads: its set, through KHR_texture_transform (the G-buffer's
+// uv_transform_rows in nodes/scene/gbuffer/draw_constants.cpp).
+glm::dvec2 reference_uv(const TextureRef& ref, const SurfaceTexcoords& at) {
+  const glm::dvec2 uv = ref.texcoord == 1 ? at.uv1 : at.uv0;
+  const double c = std::cos(ref.rotation), s = std::sin(ref.rotation);
+  return {c * ref.scale.x * uv.x + s * ref.scale.y * uv.y + ref.offset.x,
+          -s * ref.scale.x * uv.x + c * ref.scale.y * uv.y + ref.offset.y};
+}
+
+// The referenced texture's value, or 1 where the material has none.
+glm::dvec4 sample_reference(const SceneView& view, const TextureRef& ref, const SurfaceTexcoords& at) {
+  if (ref.texture < 0 || size_t(ref.texture) >= view.textures.size()) return glm::dvec4(1.0);
+  return sample_texture(*view.textures[ref.texture], ref.sampling, reference_uv(ref, at));
 }
 
 }  // namespace
 
-glm::dvec3 sample_srgb_texture(const TextureData& texture, glm::dvec2 uv) {
-  if (texture.width == 0 || texture.height == 0 || !std::isfinite(uv.x) || !std::isfinite(uv.y)) return glm::dvec3(1.0);
-  const auto& linear = srgb_to_linear_table();
+glm::dvec4 sample_texture(const TextureData& texture, const TextureSampling& sampling, glm::dvec2 uv) {
+  if (texture.width == 0 || texture.height == 0 || !std::isfinite(uv.x) || !std::isfinite(uv.y)) return glm::dvec4(1.0);
   const double x = uv.x * texture.width - 0.5, y = uv.y * texture.height - 0.5;
+  if (sampling.mag == TextureFilter::nearest)
+    return texel(texture, wrap(int64_t(std::floor(x + 0.5)), texture.width, sampling.wrap_u),
+                 wrap(int64_t(std::floor(y + 0.5)), texture.height, sampling.wrap_v));
   const double fx = std::floor(x), fy = std::floor(y);
   const double tx = x - fx, ty = y - fy;
-  glm::dvec3 sum(0.0);
+  glm::dvec4 sum(0.0);
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
-      const uint32_t col = wrap(int64_t(fx) + dx, texture.width), row = wrap(int64_t(fy) + dy, texture.height);
-      const uint8_t* texel = &texture.rgba8[(size_t(row) * texture.width + col) * 4];
-      const double weight = (dx ? tx : 1.0 - tx) * (dy ? ty : 1.0 - ty);
-      sum += weight * glm::dvec3(linear[texel[0]], linear[texel[1]], linear[texel[2]]);
+      const uint32_t col = wrap(int64_t(fx) + dx, texture.width, sampling.wrap_u);
+      const uint32_t row = wrap(int64_t(fy) + dy, texture.height, sampling.wrap_v);
+      sum += (dx ? tx : 1.0 - tx) * (dy ? ty : 1.0 - ty) * texel(texture, col, row);
     }
   return sum;
 }
 
-SurfaceMaterial sample_material(const SceneView& view, const DrawItem& draw, glm::dvec2 uv) {
+SurfaceMaterial sample_material(const SceneView& view, const DrawItem& draw, const SurfaceTexcoords& at) {
   const PbrMaterial& m = view.material_of(draw);
-  glm::dvec3 color(m.base_color);
-  const int texture = m.base_color_texture.texture;
-  if (texture >= 0 && size_t(texture) < view.textures.size()) color *= sample_srgb_texture(*view.textures[texture], uv);
+  const glm::dvec4 base = glm::dvec4(m.base_color) * at.color * sample_reference(view, m.base_color_texture, at);
+  const glm::dvec4 metal_rough = sample_reference(view, m.metallic_roughness_texture, at);
   SurfaceMaterial out;
-  out.base_color = glm::clamp(color, 0.0, 1.0);
-  out.roughness = std::clamp(double(m.roughness), 0.0, 1.0);
-  out.metalness = std::clamp(double(m.metalness), 0.0, 1.0);
-  out.emissive = glm::dvec3(m.emissive);
+  out.base_color = glm::clamp(glm::dvec3(base), 0.0, 1.0);
+  out.roughness = std::clamp(double(m.roughness) * metal_rough.g, 0.0, 1.0);
+  out.metalness = std::clamp(double(m.metalness) * metal_rough.b, 0.0, 1.0);
+  out.emissive = glm::dvec3(m.emissive) * glm::dvec3(sample_reference(view, m.emissive_texture, at));
   return out;
 }
 

@@ -31,6 +31,8 @@ WorldMesh make_world_mesh(const SceneView& view) {
       const float length = glm::length(n);
       out.normals.push_back(std::isfinite(length) && length > 1e-20f ? n / length : glm::vec3(0.0f));
       out.uvs.push_back(mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v]);
+      out.uvs1.push_back(mesh.uvs1.empty() ? glm::vec2(0.0f) : mesh.uvs1[v]);
+      out.colors.push_back(mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[v]);
     }
     const uint32_t first_triangle = uint32_t(out.triangle_count());
     for (uint32_t i : mesh.indices) out.indices.push_back(base + i);

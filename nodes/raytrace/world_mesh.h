@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ struct WorldMesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;  // one per position; (0, 0, 0) where the transformed normal is degenerate
   std::vector<glm::vec2> uvs;      // one per position; (0, 0) where the mesh has none
+  std::vector<glm::vec2> uvs1;     // texcoord set 1, the same way
+  std::vector<glm::vec4> colors;   // one per position; (1, 1, 1, 1) where the mesh has none
   std::vector<uint32_t> indices;   // three per triangle
   std::vector<Part> parts;         // one per draw
 

@@ -12,6 +12,7 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "nodes/gi/path_tracer/path_tracer.h"
+#include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/render/deferred_graph.h"
@@ -62,8 +63,7 @@ struct Comparison {
   double relative_noise = 0.0;       // RMS of the traced standard errors, over mean(raster)
 };
 
-Comparison compare(float roughness, uint32_t spp) {
-  const World world = lit_floor(roughness);
+Comparison compare(const World& world, uint32_t spp) {
   RendererOptions options;
   options.device.validation = true;
   options.alias = false;  // light.color is read back after the frame
@@ -98,7 +98,7 @@ Comparison compare(float roughness, uint32_t spp) {
 // (representative-point specular, 8-bit albedo, half-float output); the means agree to 1.5%.
 TEST(DirectAgreement, ReferenceDirectLightMatchesTheDeferredNode) {
   for (float roughness : {1.0f, 0.5f}) {
-    const Comparison c = compare(roughness, 128);
+    const Comparison c = compare(lit_floor(roughness), 128);
     const double systematic =
         std::sqrt(std::max(0.0, c.relative_rms_error * c.relative_rms_error - c.relative_noise * c.relative_noise));
     std::printf("roughness %.1f: mean %.4f, rms %.4f, reference noise %.4f, rest %.4f (relative)\n", roughness,
@@ -106,6 +106,30 @@ TEST(DirectAgreement, ReferenceDirectLightMatchesTheDeferredNode) {
     EXPECT_LT(c.relative_mean_error, 0.015) << "roughness " << roughness;
     EXPECT_LT(systematic, 0.04) << "roughness " << roughness;
   }
+}
+
+// The same comparison on a glTF asset (examples/gltf/metal-rough-plane.gltf): its metalness and
+// roughness come from a texture read through texcoord set 1 with a transform (left half rough
+// dielectric, right half metal of roughness 0.2), its base colour is multiplied by vertex
+// colours. Lit by a point light, a delta: the reference's direct light is exact, with no noise.
+// The image means agree to 0.07% (1% allowed: the G-buffer's 8-bit albedo); a reference that read
+// the material's factors alone (roughness 1, metal 1) is 85% off. Per pixel the highlight of the
+// metal half differs (RMS 38% of the mean, deterministic), and under the asset's own head-on sun
+// the metal half is 3% brighter in the reference than in the deferred node: both are open
+// (docs/path-tracer.md), so the sun is left out and only the mean is asserted.
+TEST(DirectAgreement, TexturedAssetMatchesTheDeferredNodeOnAverage) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/gltf/metal-rough-plane.gltf");
+  std::vector<Entity> suns;
+  world.each<DirectionalLight>([&](Entity e, DirectionalLight&) { suns.push_back(e); });
+  for (Entity e : suns) world.destroy(e);
+  Entity point = world.create("point");
+  world.add(point, PointLight{.intensity = 2.0f, .casts_shadows = false});
+  place(world, point, {0.8f, 0.6f, 1.5f});
+  const Comparison c = compare(world, 4);
+  std::printf("metal-rough plane: mean %.4f, rms %.4f, reference noise %.4f (relative)\n", c.relative_mean_error,
+              c.relative_rms_error, c.relative_noise);
+  EXPECT_EQ(c.relative_noise, 0.0);  // delta lights only
+  EXPECT_LT(c.relative_mean_error, 0.01);
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ struct Vertex {
 Vertex make_vertex(const PathScene& scene, const RayHit& hit, glm::dvec3 position, glm::dvec3 ray_direction) {
   const SurfaceAttributes attributes = scene.surfaces().at(hit.primitive, position);
   const SceneView& view = scene.view();
-  const SurfaceMaterial material = sample_material(view, view.draws[attributes.draw], attributes.uv);
+  const SurfaceMaterial material = sample_material(view, view.draws[attributes.draw], attributes.texcoords);
   glm::dvec3 geometric(hit.normal);
   if (glm::dot(geometric, ray_direction) > 0.0) geometric = -geometric;
   const glm::dvec3 shading = glm::dot(attributes.normal, geometric) < 0.0 ? -attributes.normal : attributes.normal;
