@@ -1,6 +1,6 @@
 // The reference's direct AOV against lighting.deferred on lavapipe: a grey floor under a
-// rectangle, a sphere, a tube, a point and a directional light, nothing casting shadows on it.
-// Diffuse is exact in both (the deferred node's area formulas are closed forms), so what
+// rectangle, a sphere, a tube, a point, a spot and a directional light, nothing casting shadows
+// on it. Diffuse is exact in both (the deferred node's area formulas are closed forms), so what
 // differs is the reference's noise, the deferred node's representative-point specular for area
 // lights, and the G-buffer's 8-bit albedo and 16-bit float output.
 #include <gtest/gtest.h>
@@ -51,6 +51,10 @@ World lit_floor(float roughness) {
   Entity point = world.create("point");
   world.add(point, PointLight{.intensity = 0.5f});
   place(world, point, {0.5f, 1.2f, -1.5f});
+  Entity spot = world.create("spot");
+  world.add(spot,
+            SpotLight{.intensity = 1.5f, .inner_cone_angle = 0.3f, .outer_cone_angle = 0.5f, .casts_shadows = false});
+  place(world, spot, {-0.3f, 1.5f, 0.8f}, look_rotation({0.2f, -1.0f, -0.3f}));
   Entity sun = world.create("sun");
   world.add(sun, DirectionalLight{.intensity = 0.5f});
   place(world, sun, {0.0f, 0.0f, 0.0f}, look_rotation({0.3f, -1.0f, -0.4f}));

@@ -97,6 +97,16 @@ PathLights::PathLights(const SceneView& view, std::vector<DistantDisk> distant_d
     l.a = glm::dvec3(p.position), l.radiance = glm::dvec3(p.intensity), l.size = p.range;
     lights_.push_back(l);
   }
+  for (const SpotLightData& spot : view.spot_lights) {
+    Light l{Kind::point};
+    l.a = glm::dvec3(spot.position), l.b = glm::normalize(glm::dvec3(spot.direction));
+    l.radiance = glm::dvec3(spot.intensity), l.size = spot.range;
+    // lighting.deferred's cone (deferred_kernel.cpp): 0 at the outer cone, 1 from the inner one in.
+    const double cos_outer = std::cos(double(spot.outer_cone_angle));
+    l.cone_scale = 1.0 / std::max(0.001, std::cos(double(spot.inner_cone_angle)) - cos_outer);
+    l.cone_offset = -cos_outer * l.cone_scale;
+    lights_.push_back(l);
+  }
   for (const SphereLightData& s : view.sphere_lights) {
     Light l{Kind::sphere};
     l.a = glm::dvec3(s.center), l.radiance = glm::dvec3(s.radiance), l.size = s.radius;
@@ -132,7 +142,8 @@ std::optional<LightSample> PathLights::sample(size_t i, glm::dvec3 p, glm::dvec2
       const double x = 1.0 - std::pow(d2 / (range * range), 2.0);
       const double window = range > 0.0 ? std::pow(std::clamp(x, 0.0, 1.0), 2.0) : 1.0;
       const double d = std::sqrt(d2);
-      return LightSample{to / d, d, l.radiance * (window / d2), 0.0};
+      const double ramp = std::clamp(glm::dot(l.b, -to / d) * l.cone_scale + l.cone_offset, 0.0, 1.0);
+      return LightSample{to / d, d, l.radiance * (window * ramp * ramp / d2), 0.0};
     }
     case Kind::sphere:
       return sample_sphere(l, p, u);

@@ -1,8 +1,8 @@
 // The SceneView's lights as the path tracer samples them and meets them (the raster path's
 // definitions, nodes/lighting/deferred/README.md): directional lights as distant disks of their
-// angular radius (radiance E / (pi sin^2 a); a delta direction at radius 0), point lights as
-// deltas with the deferred node's range window, and sphere, tube (capsule) and rectangle lights
-// as uniform Lambertian emitters. Like in the raster path, these lights are not geometry: they
+// angular radius (radiance E / (pi sin^2 a); a delta direction at radius 0), point and spot
+// lights as deltas with the deferred node's range window (spots with glTF's cone falloff), and sphere, tube (capsule)
+// and rectangle lights as uniform Lambertian emitters. Like in the raster path, these lights are not geometry: they
 // cast no shadow and the camera does not see them; a ray that crosses one collects its radiance
 // and goes on. Each light is sampled on its own (next-event estimation): spheres and distant
 // disks by their cone of directions, capsules and rectangles by area.
@@ -63,10 +63,12 @@ class PathLights {
     bool scene_light = true;
     glm::dvec3 radiance{0.0};           // point: intensity (W/sr); distant: the disk's radiance or, at
                                         // radius 0, the irradiance
-    glm::dvec3 a{0.0}, b{0.0}, c{0.0};  // distant: toward; point, sphere, rect: centre; tube: ends
-                                        // a and b; rect: half axes b and c
-    double size = 0.0;                  // distant: cos of the angular radius; point: range; sphere, tube: radius
-    double area = 0.0;                  // tube, rect
+    // distant: toward; point: position and, for a spot, its axis b (the way light travels);
+    // sphere, rect: centre; tube: ends a and b; rect: half axes b and c
+    glm::dvec3 a{0.0}, b{0.0}, c{0.0};
+    double size = 0.0;  // distant: 1 - cos of the angular radius; point: range; sphere, tube: radius
+    double area = 0.0;  // tube, rect
+    double cone_scale = 0.0, cone_offset = 1.0;  // point: glTF's spot ramp in cos about b (none: 1)
     bool two_sided = false;
   };
   std::optional<LightSample> sample_distant(const Light& l, glm::dvec2 u) const;
