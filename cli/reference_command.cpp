@@ -106,11 +106,12 @@ int merge_command(const Args& args, const std::string& out) {
 }
 
 // What must agree between the chunks of one run.
-std::string run_identity(const std::string& scene, const std::string& graph, const PathTracerOptions& o) {
+std::string run_identity(const std::string& scene, const std::string& graph, const std::string& env,
+                         const PathTracerOptions& o) {
   char text[256];
   std::snprintf(text, sizeof text, " spp=%u bounces=%u seed=%llu cull=%d", o.samples_per_pixel, o.max_bounces,
                 static_cast<unsigned long long>(o.seed), int(o.cull_backfaces));
-  return "scene=" + scene + " graph=" + graph + text;
+  return "scene=" + scene + " graph=" + graph + " env=" + env + text;
 }
 
 }  // namespace
@@ -167,7 +168,8 @@ int reference_command(const std::vector<std::string>& argv) {
                  static_cast<unsigned long long>(image.non_finite_samples));
   try {
     if (options.chunked) {
-      part.run = run_identity(scene_path, args->value("--graph").value_or("<default>"), o);
+      part.run = run_identity(scene_path, args->value("--graph").value_or("<default>"),
+                              args->value("--env").value_or("<graph's>"), o);
       part.chunk_index = options.chunk_index, part.chunk_count = options.chunk_count;
       write_reference_part(*out, part);
       std::printf("wrote %s\n", out->c_str());

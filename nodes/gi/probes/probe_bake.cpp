@@ -144,9 +144,9 @@ void bake_probe(const PathTransport& transport, const RayScene& rays, const Prob
     for (int t = 0; t < irradiance_texels; ++t)
       irradiance[t] += l * std::max(glm::dot(irradiance_normals[t], d), 0.0) * weight;
     const double t_hit = std::min(ray.distance, max_distance);
-    for (int t = 0; t < distance_texels; ++t) {
-      const double w = std::pow(std::max(glm::dot(distance_normals[t], d), 0.0), kDistanceSharpness);
-      moments[t] += w * glm::dvec3(1.0, t_hit, t_hit * t_hit);
+    for (int t = 0; t < distance_texels; ++t) {  // half the texels face away: no pow for them
+      const double c = glm::dot(distance_normals[t], d);
+      if (c > 0.0) moments[t] += std::pow(c, kDistanceSharpness) * glm::dvec3(1.0, t_hit, t_hit * t_hit);
     }
   }
   for (int c = 0; c < kProbeShCount; ++c) {
