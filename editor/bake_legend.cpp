@@ -15,12 +15,18 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
 #include "nodes/occlusion/bake/bake_file.h"
 
 namespace lg {
+
+unsigned char display_byte(double v, double exposure) {
+  const double x = std::max(0.0, v * exposure);
+  return static_cast<unsigned char>(std::lround(255 * std::pow(x / (1 + x), 1 / 2.2)));
+}
 
 BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint) {
   if (!std::filesystem::exists(path)) throw BakeFileError(path + ": no such file");

@@ -1,6 +1,6 @@
-// What the inspector's bake views share: reading a whole bake of one mode, its arrays as VTK arrays, visibility with
-// the invalid points masked (NaN, drawn grey), the colour map and its bar, the title in the view's top-left corner,
-// and the camera's framing.
+// What the inspector's views share: light shown as display bytes; reading a whole bake of one mode, its arrays as VTK
+// arrays, visibility with the invalid points masked (NaN, drawn grey), the colour map and its bar, the title in the
+// view's top-left corner, and the camera's framing.
 #pragma once
 
 #include <vtkSmartPointer.h>
@@ -24,6 +24,9 @@ enum class BakeMode;
 // missing, damaged, a chunk of a bake, or a bake of another mode than `mode` (`hint` then says
 // how to open it).
 BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint);
+
+// Radiance or irradiance to a display byte: scaled by `exposure`, Reinhard, then gamma 2.2.
+unsigned char display_byte(double v, double exposure);
 
 inline constexpr const char* shown_visibility_name = "shown_visibility";
 

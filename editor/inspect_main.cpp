@@ -4,6 +4,8 @@
 // NAME.lgbake of `lumagraph bake --mode volume`) as three slices coloured by visibility.
 // lumagraph-inspect --bake NAME.lgbake --mesh MESH [--screenshot PNG]: shows a vertex bake on
 // the mesh (or scene) it was baked from, coloured by each vertex's visibility.
+// lumagraph-inspect --bake NAME.lgprobes [--volume N] [--probe I] [--screenshot PNG]: shows the
+// probes of volume N (from 1) of a probe bake (`lumagraph bake --mode probes`), probe I selected.
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -12,6 +14,7 @@
 #include <iostream>
 
 #include "editor/inspector_widget.h"
+#include "editor/probe_view.h"
 
 int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
@@ -23,16 +26,23 @@ int main(int argc, char** argv) {
   args.addHelpOption();
   args.addPositionalArgument(QStringLiteral("file"), QStringLiteral("Environment (.hdr, .exr)."),
                              QStringLiteral("[file]"));
-  const QCommandLineOption bake(QStringLiteral("bake"),
-                                QStringLiteral("A volume bake to show instead (.vti or .lgbake of lumagraph bake)."),
-                                QStringLiteral("BAKE"));
+  const QCommandLineOption bake(
+      QStringLiteral("bake"),
+      QStringLiteral("A bake to show instead: a volume (.vti or .lgbake) or probes (.lgprobes)."),
+      QStringLiteral("BAKE"));
   const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                       QStringLiteral("Write the window to a PNG and exit."), QStringLiteral("PNG"));
   const QCommandLineOption mesh(QStringLiteral("mesh"),
                                 QStringLiteral("The mesh or scene a vertex bake (--bake NAME.lgbake) was baked from."),
                                 QStringLiteral("MESH"));
+  const QCommandLineOption volume(QStringLiteral("volume"), QStringLiteral("The probe bake's volume to show (from 1)."),
+                                  QStringLiteral("N"), QStringLiteral("1"));
+  const QCommandLineOption probe(QStringLiteral("probe"), QStringLiteral("The probe whose maps to show (from 0)."),
+                                 QStringLiteral("I"));
   args.addOption(bake);
   args.addOption(mesh);
+  args.addOption(volume);
+  args.addOption(probe);
   args.addOption(screenshot);
   args.process(app);
   if (args.positionalArguments().size() != (args.isSet(bake) ? 0 : 1)) args.showHelp(1);
@@ -42,9 +52,12 @@ int main(int argc, char** argv) {
   inspector.setWindowTitle(QStringLiteral("Lumagraph Inspector — %1").arg(file));
   inspector.resize(args.isSet(bake) ? 1100 : 1400, args.isSet(bake) ? 820 : 620);
   inspector.show();
+  const bool probes = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprobes"));
   const bool opened = args.isSet(mesh)   ? inspector.open_vertex_bake(file, args.value(mesh))
+                      : probes           ? inspector.open_probes(file, args.value(volume).toInt() - 1)
                       : args.isSet(bake) ? inspector.open_bake(file)
                                          : inspector.open_environment(file);
+  if (opened && probes && args.isSet(probe)) inspector.select_probe(args.value(probe).toULongLong());
   (opened ? std::cout : std::cerr) << inspector.summary().toStdString() << "\n";
   if (!args.isSet(screenshot)) return app.exec();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();

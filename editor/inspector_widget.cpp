@@ -2,6 +2,7 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -11,6 +12,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSphereSource.h>
@@ -19,7 +21,9 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <QHBoxLayout>
+#include <QImage>
 #include <QLabel>
+#include <QPixmap>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
@@ -27,20 +31,16 @@
 #include <cmath>
 #include <vector>
 
+#include "editor/bake_legend.h"
 #include "editor/bake_view.h"
 #include "editor/env_probe.h"
+#include "editor/probe_view.h"
 #include "editor/vertex_bake_view.h"
 #include "nodes/occlusion/bake/bake_file.h"
 
 namespace lg {
 
 namespace {
-
-// Radiance to display: exposure from the mean, Reinhard, then gamma 2.2.
-unsigned char display(double v, double exposure) {
-  const double x = std::max(0.0, v * exposure);
-  return static_cast<unsigned char>(std::lround(255 * std::pow(x / (1 + x), 1 / 2.2)));
-}
 
 vtkSmartPointer<vtkPolyData> unit_sphere() {
   vtkNew<vtkSphereSource> source;
@@ -67,6 +67,8 @@ struct InspectorWidget::Vtk {
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
   std::vector<std::pair<vtkSmartPointer<vtkActor>, vtkSmartPointer<vtkTextActor>>> spheres;
+  vtkNew<vtkCallbackCommand> on_press, on_release;
+  int press[2] = {0, 0};  // where the left button went down: a click releases there
 
   void add_sphere(vtkPolyData* sphere, const char* caption, vtkLookupTable* lut) {
     vtkNew<vtkPolyDataMapper> mapper;
@@ -122,6 +124,7 @@ InspectorWidget::InspectorWidget(QWidget* parent)
       vtk_(std::make_unique<Vtk>()),
       slice_bar_(new QWidget(this)),
       slice_caption_(new QLabel(this)),
+      probe_panel_(new QWidget(this)),
       summary_(new QLabel(this)) {
   vtk_->widget = new QVTKOpenGLNativeWidget(this);
   vtk_->widget->setRenderWindow(vtk_->window);
@@ -133,7 +136,11 @@ InspectorWidget::InspectorWidget(QWidget* parent)
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(vtk_->widget, 1);
+  auto* view_row = new QHBoxLayout;
+  view_row->setSpacing(0);
+  view_row->addWidget(vtk_->widget, 1);
+  view_row->addWidget(probe_panel_);
+  layout->addLayout(view_row, 1);
   layout->addWidget(slice_bar_);
   layout->addWidget(slice_caption_);
   layout->addWidget(summary_);
@@ -149,6 +156,24 @@ InspectorWidget::InspectorWidget(QWidget* parent)
   }
   slice_bar_->hide();
   slice_caption_->hide();
+  build_probe_panel(new QVBoxLayout(probe_panel_));
+  // A click (press and release at one point, not a drag that turns the view) picks a probe.
+  vtkRenderWindowInteractor* interactor = vtk_->window->GetInteractor();
+  vtk_->on_press->SetClientData(this);
+  vtk_->on_press->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
+    auto* self = static_cast<InspectorWidget*>(client);
+    static_cast<vtkRenderWindowInteractor*>(caller)->GetEventPosition(self->vtk_->press);
+  });
+  vtk_->on_release->SetClientData(this);
+  vtk_->on_release->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
+    auto* self = static_cast<InspectorWidget*>(client);
+    int at[2];
+    static_cast<vtkRenderWindowInteractor*>(caller)->GetEventPosition(at);
+    if (self->probes_ && std::abs(at[0] - self->vtk_->press[0]) + std::abs(at[1] - self->vtk_->press[1]) <= 3)
+      self->select_probe_at(at[0], at[1]);
+  });
+  interactor->AddObserver(vtkCommand::LeftButtonPressEvent, vtk_->on_press);
+  interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, vtk_->on_release);
   show_message(tr("Open an environment (.hdr, .exr) to inspect it, or select an env.load node."));
 }
 
@@ -167,6 +192,9 @@ void InspectorWidget::clear_view() {
   vtk_->renderer->RemoveAllViewProps();
   vtk_->spheres.clear();
   volume_.reset();
+  probes_.reset();
+  probe_bake_.reset();
+  probe_panel_->hide();
   vertex_bake_range_.reset();
   slice_bar_->hide();
   slice_caption_->hide();
@@ -222,8 +250,9 @@ void InspectorWidget::show_environment(const EnvProbe& probe) {
     // Where the SH rings below zero it shows its magnitude in blue, not black.
     const bool ringing = luminance(b) < 0;
     for (int c = 0; c < 3; ++c) {
-      env_rgb->SetComponent(i, c, display(a[c], exposure));
-      sh_rgb->SetComponent(i, c, ringing ? (c == 2 ? display(-luminance(b), exposure) : 0) : display(b[c], exposure));
+      env_rgb->SetComponent(i, c, display_byte(a[c], exposure));
+      sh_rgb->SetComponent(
+          i, c, ringing ? (c == 2 ? display_byte(-luminance(b), exposure) : 0) : display_byte(b[c], exposure));
     }
     const double mean = probe.mean_luminance > 0 ? probe.mean_luminance : 1;
     err->SetValue(i, float(std::abs(luminance(b) - luminance(a)) / mean));
@@ -344,6 +373,145 @@ void InspectorWidget::show_vertex_bake(const VertexBake& bake) {
 
 std::optional<std::array<double, 2>> InspectorWidget::vertex_bake_range() const {
   return vertex_bake_range_;
+}
+
+void InspectorWidget::build_probe_panel(QVBoxLayout* panel) {
+  panel->setContentsMargins(8, 8, 8, 8);
+  panel->addWidget(new QLabel(tr("Slice of the lookup, height:"), probe_panel_));
+  probe_slice_ = new QSlider(Qt::Horizontal, probe_panel_);
+  panel->addWidget(probe_slice_);
+  probe_slice_caption_ = new QLabel(probe_panel_);
+  panel->addWidget(probe_slice_caption_);
+  probe_caption_ = new QLabel(tr("Click a probe to see its maps."), probe_panel_);
+  probe_caption_->setWordWrap(true);
+  panel->addSpacing(12);
+  panel->addWidget(probe_caption_);
+  irradiance_map_ = new QLabel(probe_panel_);
+  distance_caption_ = new QLabel(probe_panel_);
+  distance_caption_->setWordWrap(true);
+  distance_map_ = new QLabel(probe_panel_);
+  panel->addWidget(irradiance_map_);
+  panel->addWidget(distance_caption_);
+  panel->addWidget(distance_map_);
+  panel->addStretch(1);
+  probe_panel_->setFixedWidth(230);
+  probe_panel_->hide();
+  connect(probe_slice_, &QSlider::valueChanged, this, [this](int step) { set_probe_slice(step); });
+}
+
+bool InspectorWidget::open_probes(const QString& path, int volume) {
+  try {
+    auto bake = std::make_unique<ProbeBake>(load_probe_bake(path.toStdString()));
+    if (volume < 0 || size_t(volume) >= bake->grids.size()) {
+      show_error(tr("%1: no volume %2; the bake holds %3").arg(path).arg(volume + 1).arg(bake->grids.size()));
+      return false;
+    }
+    clear_view();
+    probe_bake_ = std::move(bake);
+    probes_ = std::make_unique<ProbeView>(vtk_->renderer, *probe_bake_, size_t(volume));
+  } catch (const BakeFileError& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  const ProbeViewState state = probes_->state();
+  {
+    const QSignalBlocker quiet(probe_slice_);
+    probe_slice_->setRange(0, state.slices - 1);
+    probe_slice_->setValue(state.slice);
+  }
+  set_probe_slice(state.slice);
+  irradiance_map_->clear();
+  distance_caption_->clear();
+  distance_map_->clear();
+  probe_caption_->setText(tr("Click a probe to see its maps."));
+  probe_panel_->show();
+  const ProbeFileHeader& h = probe_bake_->file.header;
+  summary_->setText(tr("%1 — volume %2 of %3, %4 x %5 x %6 probes · %7 on, %8 off · %9 moved · baked from %10 with "
+                       "%11 rays, %12 bounces")
+                        .arg(path)
+                        .arg(volume + 1)
+                        .arg(state.volumes)
+                        .arg(state.counts.x)
+                        .arg(state.counts.y)
+                        .arg(state.counts.z)
+                        .arg(state.active)
+                        .arg(state.probes - state.active)
+                        .arg(state.relocated)
+                        .arg(QString::fromStdString(h.scene))
+                        .arg(h.settings.rays)
+                        .arg(h.settings.bounces));
+  return true;
+}
+
+std::optional<ProbeViewState> InspectorWidget::probe_state() const {
+  if (!probes_) return std::nullopt;
+  return probes_->state();
+}
+
+void InspectorWidget::set_probe_slice(int step) {
+  if (!probes_) return;
+  probes_->set_slice(step);
+  const ProbeViewState state = probes_->state();
+  {
+    const QSignalBlocker quiet(probe_slice_);
+    probe_slice_->setValue(state.slice);
+  }
+  probe_slice_caption_->setText(
+      tr("row %1 of %2, %3% covered")
+          .arg(state.slice_height + 1, 0, 'g', 3)
+          .arg(state.counts.y)
+          .arg(100.0 * double(state.slice_covered) / double(std::max<size_t>(1, state.slice_samples)), 0, 'f', 0));
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+void InspectorWidget::select_probe(size_t probe) {
+  if (!probes_ || probe >= probes_->state().probes) return;
+  probes_->select(probe);
+  const ProbeMaps maps = probes_->maps(probe);
+  const double exposure = probes_->state().exposure;
+  // Stored texels drawn as blocks, nearest, so each texel reads as what it holds.
+  constexpr int shown = 168;
+  QImage irradiance(kProbeIrradianceTexels, kProbeIrradianceTexels, QImage::Format_RGB888);
+  for (int j = 0; j < kProbeIrradianceTexels; ++j)
+    for (int i = 0; i < kProbeIrradianceTexels; ++i) {
+      const glm::vec3 e = maps.irradiance[size_t(j * kProbeIrradianceTexels + i)];
+      irradiance.setPixel(i, j,
+                          qRgb(display_byte(e.r, exposure), display_byte(e.g, exposure), display_byte(e.b, exposure)));
+    }
+  const float far = std::max(1e-6f, *std::max_element(maps.distance.begin(), maps.distance.end()));
+  QImage distance(kProbeDistanceTexels, kProbeDistanceTexels, QImage::Format_Grayscale8);
+  for (int j = 0; j < kProbeDistanceTexels; ++j)
+    for (int i = 0; i < kProbeDistanceTexels; ++i)
+      distance.setPixel(i, j, uint(std::lround(255 * maps.distance[size_t(j * kProbeDistanceTexels + i)] / far)));
+  irradiance_map_->setPixmap(QPixmap::fromImage(irradiance.scaled(shown, shown)));
+  distance_map_->setPixmap(QPixmap::fromImage(distance.scaled(shown, shown)));
+  probe_caption_->setText(tr("Probe %1, cell (%2, %3, %4), at (%5, %6, %7), %8\n\nIrradiance, octahedral %9 x %9:")
+                              .arg(probe)
+                              .arg(maps.cell.x)
+                              .arg(maps.cell.y)
+                              .arg(maps.cell.z)
+                              .arg(maps.position.x, 0, 'f', 2)
+                              .arg(maps.position.y, 0, 'f', 2)
+                              .arg(maps.position.z, 0, 'f', 2)
+                              .arg(maps.active ? tr("on") : tr("off (inside geometry)"))
+                              .arg(kProbeIrradianceTexels));
+  distance_caption_->setText(
+      tr("Mean distance to surfaces, %1 x %1 (black 0, white %2):").arg(kProbeDistanceTexels).arg(far, 0, 'g', 3));
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+bool InspectorWidget::select_probe_at(int x, int y) {
+  if (!probes_) return false;
+  const std::optional<size_t> probe = probes_->pick(x, y);
+  if (probe) select_probe(*probe);
+  return probe.has_value();
+}
+
+std::optional<std::array<double, 2>> InspectorWidget::probe_display_point(size_t probe) const {
+  if (!probes_ || probe >= probes_->state().probes) return std::nullopt;
+  return probes_->display_point(probe);
 }
 
 }  // namespace lg

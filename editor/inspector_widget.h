@@ -1,7 +1,8 @@
 // The inspector's 3D view (VTK): an environment on a sphere beside its L2 SH reconstruction and
-// the error between them, with the numbers, or a baked occlusion volume as three slices with
-// sliders that move them. Probe grids come later as further show_*() calls on the same view;
-// VTK stays behind this header, out of the editor's files.
+// the error between them, with the numbers; a baked occlusion volume as three slices with
+// sliders that move them; or a probe bake's volume (probe_view.h) with a slider for its slice and,
+// beside the view, the octahedral maps of the probe last clicked. VTK stays behind this header,
+// out of the editor's files.
 #pragma once
 
 #include <QWidget>
@@ -11,6 +12,7 @@
 
 class QLabel;
 class QSlider;
+class QVBoxLayout;
 
 namespace lg {
 
@@ -18,7 +20,10 @@ struct EnvProbe;
 struct BakeVolume;
 struct VolumeSliceState;
 struct VertexBake;
+struct ProbeBake;
+struct ProbeViewState;
 class VolumeSlices;
+class ProbeView;
 
 class InspectorWidget : public QWidget {
   Q_OBJECT
@@ -42,6 +47,20 @@ class InspectorWidget : public QWidget {
   bool open_vertex_bake(const QString& path, const QString& mesh_path);
   // The shown vertex bake's colour range; nullopt when none is shown.
   std::optional<std::array<double, 2>> vertex_bake_range() const;
+  // Volume `volume` (from 0) of a probe bake (NAME.lgprobes); on failure the view says why and
+  // returns false.
+  bool open_probes(const QString& path, int volume = 0);
+  // The shown probes; nullopt when none are shown.
+  std::optional<ProbeViewState> probe_state() const;
+  void set_probe_slice(int step);
+  // Outlines the probe and shows its maps beside the view.
+  void select_probe(size_t probe);
+  // Selects the probe under display point (x, y) of the 3D view (VTK's: origin bottom left), as a
+  // click there does; false when no probe is there.
+  bool select_probe_at(int x, int y);
+  // Where a probe's centre is on the 3D view (VTK's display coordinates).
+  std::optional<std::array<double, 2>> probe_display_point(size_t probe) const;
+
   void show_message(const QString& text);
   // A message that something failed: below the view and in red in it.
   void show_error(const QString& text);
@@ -55,11 +74,18 @@ class InspectorWidget : public QWidget {
   void clear_view();
 
   std::unique_ptr<Vtk> vtk_;
+  void build_probe_panel(QVBoxLayout* panel);
+
   std::unique_ptr<VolumeSlices> volume_;
+  std::unique_ptr<ProbeBake> probe_bake_;
+  std::unique_ptr<ProbeView> probes_;
   std::optional<std::array<double, 2>> vertex_bake_range_;
   QWidget* slice_bar_;
   std::array<QSlider*, 3> slice_sliders_{};
   QLabel* slice_caption_;
+  QWidget* probe_panel_;
+  QSlider* probe_slice_;
+  QLabel *probe_slice_caption_, *probe_caption_, *irradiance_map_, *distance_caption_, *distance_map_;
   QLabel* summary_;
 };
 
