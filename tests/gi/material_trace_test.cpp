@@ -128,6 +128,25 @@ TEST(MaterialTrace, NormalMappedPlaneIsLitAlongItsMappedNormal) {
   }
 }
 
+// A normal map scaled up (10x: the bent normal lies 80 degrees off the plane's, toward +X) under
+// a sun low on the -X side, which the plane faces (geometric n.l = 0.5) but the bent normal does
+// not: no light, exactly 0, never negative; with bounces under env.sky every pixel stays finite
+// and non-negative.
+TEST(MaterialTrace, BentNormalsTurnedFromTheLightGiveNoLight) {
+  World world = asset("normal-mapped-plane.gltf", -glm::vec3(-std::sin(kPi / 3.0), 0.0, std::cos(kPi / 3.0)));
+  for (size_t m = 0; m < world.materials().size(); ++m) world.edit_material(int(m)).normal_scale = 10.0f;
+  const DirectImage d = direct_light(world, 32);
+  EXPECT_EQ(d.at(16, 16), glm::dvec3(0.0));
+  const PathScene scene(d.view, PathEnvironment::sky(SkyParams{}));
+  PathTracerOptions o;
+  o.width = o.height = 32, o.samples_per_pixel = 4, o.max_bounces = 4;
+  const ReferenceImage image = trace_reference(scene, o);
+  EXPECT_EQ(image.non_finite_samples, 0u);
+  for (size_t a = 0; a < kReferenceAovCount; ++a)
+    for (const glm::vec3& v : image.mean[a])
+      for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(v[c]) && v[c] >= 0.0f) << "aov " << a;
+}
+
 // Camera rays cull as the G-buffer does with cull_backfaces: the back of the single-sided red
 // wall is skipped, the back of the double-sided cut-out quad is seen (shaded on the camera's
 // side), and its hole shows what lies behind it (nothing). Without culling the wall's back is seen.
