@@ -189,11 +189,12 @@ int bake_command(const std::vector<std::string>& argv) {
   std::optional<BakeDomain> domain;
   std::optional<RayScene> scene;
   try {
-    mesh = make_world_mesh(make_scene_view(load_world(input, world_load_options(*args, input)), 1.0f));
+    const SceneView view = make_scene_view(load_world(input, world_load_options(*args, input)), 1.0f);
+    mesh = make_world_mesh(view);
     if (options.mode == BakeMode::vertex) domain = BakeDomain::vertices(mesh);
     if (options.mode == BakeMode::texel) domain = BakeDomain::lightmap(mesh, options.resolution[0]);
     if (options.mode == BakeMode::volume) domain = BakeDomain::volume(mesh, options.resolution);
-    scene.emplace(mesh.positions, mesh.indices, input);
+    scene.emplace(mesh, view);  // alpha-tested materials let the bake's rays through
   } catch (const SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid;

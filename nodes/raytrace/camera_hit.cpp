@@ -23,7 +23,7 @@ std::optional<CameraHit> first_camera_hit(const RayScene& scene, glm::dvec3 eye,
     if (!hit) return std::nullopt;
     const glm::dvec3 position = glm::dvec3(origin) + glm::dvec3(dir) * double(hit->distance);
     const bool front = glm::dot(glm::dvec3(hit->normal), direction) < 0.0;
-    if (front || !cull_backfaces) return CameraHit{*hit, position, front};
+    if (front || !cull_backfaces || !scene.single_sided(hit->primitive)) return CameraHit{*hit, position, front};
     origin = offset_ray_origin(glm::vec3(position), dir);  // continue behind the culled face
   }
   return std::nullopt;

@@ -1,6 +1,8 @@
 // The surface a camera ray first meets, as the G-buffer sees it: with back-face culling the ray
-// passes through faces turned away from the camera (the pixel shows what lies behind them);
-// without it a back face is the visible surface, shaded on the camera's side.
+// passes through faces of single-sided materials turned away from the camera (the pixel shows
+// what lies behind them); a double-sided material's back face, or any back face without
+// culling, is the visible surface, shaded on the camera's side. Alpha-tested surfaces let the ray
+// through where RayScene says so.
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -36,6 +36,7 @@ SurfaceAttributes SurfaceLookup::at(uint32_t primitive, glm::dvec3 point) const 
     return wa * D(values[corner[0]]) + wb * D(values[corner[1]]) + wc * D(values[corner[2]]);
   };
   out.texcoords = {interpolate(mesh_.uvs), interpolate(mesh_.uvs1), interpolate(mesh_.colors)};
+  out.tangent = glm::dvec4(glm::dvec3(interpolate(mesh_.tangents)), mesh_.tangents[corner[0]].w);
   return out;
 }
 

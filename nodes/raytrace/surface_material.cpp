@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 namespace lg {
 namespace {
@@ -55,10 +56,15 @@ glm::dvec2 reference_uv(const TextureRef& ref, const SurfaceTexcoords& at) {
           -s * ref.scale.x * uv.x + c * ref.scale.y * uv.y + ref.offset.y};
 }
 
+// The texture `ref` names, or null where there is none.
+const TextureData* referenced_texture(const SceneView& view, const TextureRef& ref) {
+  return ref.texture < 0 || size_t(ref.texture) >= view.textures.size() ? nullptr : view.textures[ref.texture].get();
+}
+
 // The referenced texture's value, or 1 where the material has none.
 glm::dvec4 sample_reference(const SceneView& view, const TextureRef& ref, const SurfaceTexcoords& at) {
-  if (ref.texture < 0 || size_t(ref.texture) >= view.textures.size()) return glm::dvec4(1.0);
-  return sample_texture(*view.textures[ref.texture], ref.sampling, reference_uv(ref, at));
+  const TextureData* texture = referenced_texture(view, ref);
+  return texture ? sample_texture(*texture, ref.sampling, reference_uv(ref, at)) : glm::dvec4(1.0);
 }
 
 }  // namespace
@@ -91,6 +97,30 @@ SurfaceMaterial sample_material(const SceneView& view, const DrawItem& draw, con
   out.metalness = std::clamp(double(m.metalness) * metal_rough.b, 0.0, 1.0);
   out.emissive = glm::dvec3(m.emissive) * glm::dvec3(sample_reference(view, m.emissive_texture, at));
   return out;
+}
+
+double coverage_alpha(const PbrMaterial& m, const TextureData* texture, const SurfaceTexcoords& at) {
+  const double alpha = double(m.base_color.a) * at.color.a;
+  return texture
+             ? alpha * sample_texture(*texture, m.base_color_texture.sampling, reference_uv(m.base_color_texture, at)).a
+             : alpha;
+}
+
+glm::dvec3 mapped_normal(const SceneView& view, const DrawItem& draw, const SurfaceTexcoords& at, glm::dvec3 n,
+                         glm::dvec4 tangent) {
+  const PbrMaterial& m = view.material_of(draw);
+  const TextureData* texture = referenced_texture(view, m.normal_texture);
+  if (!texture) return n;
+  glm::dvec3 t = glm::dvec3(tangent) - n * glm::dot(n, glm::dvec3(tangent));
+  if (!(glm::dot(t, t) > 1e-12)) return n;  // no usable frame: the interpolated normal, as the raster
+  t = glm::normalize(t);
+  const glm::dvec3 b = glm::cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+  glm::dvec3 texel =
+      glm::dvec3(sample_texture(*texture, m.normal_texture.sampling, reference_uv(m.normal_texture, at)));
+  texel = texel * 2.0 - 1.0;
+  const double scale = m.normal_scale;
+  const glm::dvec3 mapped = t * (texel.x * scale) + b * (texel.y * scale) + n * texel.z;
+  return glm::dot(mapped, mapped) > 1e-12 ? glm::normalize(mapped) : n;
 }
 
 }  // namespace lg

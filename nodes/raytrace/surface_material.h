@@ -3,8 +3,8 @@
 // times their textures (each through its texcoord set, KHR_texture_transform and sampler's
 // wrap modes, level 0 with the magnification filter: a ray has no pixel footprint; colour
 // textures decoded from sRGB) and the vertex colours, clamped to [0, 1] like the G-buffer's
-// channels. Not read yet: the normal texture, alpha and double-sidedness (every surface is
-// two-sided and opaque to the ray tracers).
+// channels; the normal texture in the tangent frame the G-buffer builds; the alpha the
+// G-buffer's MASK test compares (alpha_coverage.h lets rays through where it is below).
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -29,6 +29,18 @@ struct SurfaceTexcoords {
 };
 
 SurfaceMaterial sample_material(const SceneView& view, const DrawItem& draw, const SurfaceTexcoords& at);
+
+// The alpha the G-buffer's MASK test compares with alphaCutoff: the base colour factor's x the
+// vertex colour's x the base colour texture's (`texture`, null where the material has none).
+double coverage_alpha(const PbrMaterial& material, const TextureData* texture, const SurfaceTexcoords& at);
+
+// The shading normal with the material's normal texture applied as the G-buffer applies it
+// (nodes/scene/gbuffer/shaders/gbuffer_surface.glsl): `normal` the unit interpolated normal of
+// the front side, `tangent` the interpolated world tangent with the bitangent's sign in w. Without
+// a normal texture, or with no usable tangent frame (zero tangent, tangent along the normal),
+// `normal` itself.
+glm::dvec3 mapped_normal(const SceneView& view, const DrawItem& draw, const SurfaceTexcoords& at, glm::dvec3 normal,
+                         glm::dvec4 tangent);
 
 // The texture at `uv` (texel centres at (i + 0.5) / size) with the sampler's wrap modes and
 // magnification filter, decoded to linear as its colour space says.

@@ -8,9 +8,22 @@
 #include <glm/matrix.hpp>
 #include <stdexcept>
 
+#include "runtime/scene/mesh_tangents.h"
 #include "runtime/scene/mesh_tools.h"
 
 namespace lg {
+namespace {
+
+// The mesh's tangents, or those generate_tangents() gives it when its material has a normal
+// texture and the file brought none; empty otherwise.
+std::vector<glm::vec4> draw_tangents(const MeshData& mesh, const PbrMaterial& material) {
+  if (!mesh.tangents.empty() || material.normal_texture.texture < 0) return mesh.tangents;
+  MeshData copy = mesh;
+  generate_tangents(copy, material.normal_texture.texcoord);
+  return std::move(copy.tangents);
+}
+
+}  // namespace
 
 WorldMesh make_world_mesh(const SceneView& view) {
   WorldMesh out;
@@ -20,6 +33,8 @@ WorldMesh make_world_mesh(const SceneView& view) {
     if (std::string problem = mesh_problem(mesh); !problem.empty())
       throw std::invalid_argument("mesh '" + mesh.name + "': " + problem);
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(draw.world)));
+    const std::vector<glm::vec4> tangents = draw_tangents(mesh, view.material_of(draw));
+    const float handedness = glm::determinant(glm::mat3(draw.world)) < 0.0f ? -1.0f : 1.0f;
     const uint32_t base = uint32_t(out.positions.size());
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
       const glm::vec3 p = glm::vec3(draw.world * glm::vec4(mesh.positions[v], 1.0f));
@@ -33,6 +48,9 @@ WorldMesh make_world_mesh(const SceneView& view) {
       out.uvs.push_back(mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[v]);
       out.uvs1.push_back(mesh.uvs1.empty() ? glm::vec2(0.0f) : mesh.uvs1[v]);
       out.colors.push_back(mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[v]);
+      out.tangents.push_back(
+          tangents.empty() ? glm::vec4(0.0f)
+                           : glm::vec4(glm::mat3(draw.world) * glm::vec3(tangents[v]), handedness * tangents[v].w));
     }
     const uint32_t first_triangle = uint32_t(out.triangle_count());
     for (uint32_t i : mesh.indices) out.indices.push_back(base + i);

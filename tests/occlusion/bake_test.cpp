@@ -1,9 +1,12 @@
 // The bake library: lightmap charts and volume grids, chunks that merge byte-identically to a
 // single run in every mode, merge and read errors, volume points inside geometry, and the
-// bunny's 256-ray vertex bake against a 4,096-ray reference within Monte Carlo noise.
+// bunny's 256-ray vertex bake against a 4,096-ray reference within Monte Carlo noise, and rays
+// through alpha-tested cut-outs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -265,6 +268,38 @@ TEST(Bake, BunnyAt256RaysMatchesA4096RayReferenceWithinMonteCarloNoise) {
   EXPECT_LE(beyond, subset.size() / 100) << beyond << " vertices beyond 3 sigma";
   EXPECT_LT(std::fabs(mean_difference), 4.0 * std::sqrt(mean_variance / subset.size()));
   EXPECT_GT(occluded, subset.size() / 10);  // the bunny occludes itself: a real comparison
+}
+
+// An occlusion bake's rays pass through alpha-tested cut-outs (RayScene built with the view's
+// materials, as `lumagraph bake` and occlusion.bake build it): in cut-out-quad.gltf, a 2 m quad
+// at z = 0 whose middle metre is transparent in front of a wall at z = -1, the volume points
+// between the hole and the wall see the sky through the hole. With the quad made opaque they see
+// out only through the 1 m gap at the sides. Deterministic (same seed); the margin 0.1 is several
+// times the Monte Carlo noise of the average (256 rays at each of 27 points: about 0.006).
+// Measured: 0.430 through the hole, 0.290 behind the opaque quad.
+TEST(Bake, RaysPassThroughAlphaCutOuts) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/gltf/cut-out-quad.gltf");
+  auto behind_the_hole = [&]() {
+    const SceneView view = make_scene_view(world, 1.0f);
+    const WorldMesh mesh = make_world_mesh(view);
+    const BakeDomain volume = BakeDomain::volume(mesh, {21, 21, 11});
+    const BakeData data = run_bake(RayScene(mesh, view), volume, {.rays = 256}, 7, {0, volume.size()});
+    double sum = 0.0;
+    int count = 0;
+    for (uint64_t i = 0; i < volume.size(); ++i) {
+      const glm::vec3 p = volume.sample(i).point.position;
+      if (std::abs(p.x) < 0.4f && std::abs(p.y) < 0.4f && p.z > -0.9f && p.z < -0.1f && data.valid[i] == 1.0f)
+        sum += data.visibility[i], ++count;
+    }
+    EXPECT_EQ(count, 27);  // 3 x 3 x 3 grid points
+    return sum / std::max(count, 1);
+  };
+  const double cut_out = behind_the_hole();
+  for (size_t m = 0; m < world.materials().size(); ++m)
+    if (world.materials()[m].name == "cut-out") world.edit_material(int(m)).alpha_mode = AlphaMode::opaque;
+  const double opaque = behind_the_hole();
+  std::printf("visibility behind the hole: %.3f, behind an opaque quad: %.3f\n", cut_out, opaque);
+  EXPECT_GT(cut_out, opaque + 0.1);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ PathEnvironment PathEnvironment::image(Equirect image) {
 PathScene::PathScene(SceneView view, PathEnvironment environment)
     : view_(std::move(view)),
       surfaces_(make_world_mesh(view_)),
-      rays_(surfaces_.mesh().positions, surfaces_.mesh().indices, view_.name),
+      rays_(surfaces_.mesh(), view_),
       lights_(view_, std::move(environment.disks)),
       environment_(std::move(environment.map)) {}
 

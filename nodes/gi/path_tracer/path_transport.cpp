@@ -30,10 +30,15 @@ struct Vertex {
 Vertex make_vertex(const PathScene& scene, const RayHit& hit, glm::dvec3 position, glm::dvec3 ray_direction) {
   const SurfaceAttributes attributes = scene.surfaces().at(hit.primitive, position);
   const SceneView& view = scene.view();
-  const SurfaceMaterial material = sample_material(view, view.draws[attributes.draw], attributes.texcoords);
+  const DrawItem& draw = view.draws[attributes.draw];
+  const SurfaceMaterial material = sample_material(view, draw, attributes.texcoords);
   glm::dvec3 geometric(hit.normal);
   if (glm::dot(geometric, ray_direction) > 0.0) geometric = -geometric;
-  const glm::dvec3 shading = glm::dot(attributes.normal, geometric) < 0.0 ? -attributes.normal : attributes.normal;
+  // The normal map bends the front side's normal; a back hit turns the result round, as the
+  // G-buffer does. Light that the bent normal faces but the geometric side does not is cut by
+  // visible() and the BRDF's own n.l.
+  const glm::dvec3 mapped = mapped_normal(view, draw, attributes.texcoords, attributes.normal, attributes.tangent);
+  const glm::dvec3 shading = glm::dot(attributes.normal, geometric) < 0.0 ? -mapped : mapped;
   return Vertex{position, geometric, make_brdf_surface(shading, material), material.emissive};
 }
 

@@ -1,8 +1,10 @@
 // The path tracer's light transport, shared by the reference image (path_tracer.h) and the
 // probe bakes: paths with next-event estimation at every vertex (each light of PathLights and
 // the environment on its own) and BRDF sampling, combined by multiple importance sampling (power
-// heuristic), Russian roulette after a few bounces. Every surface is two-sided, shaded on the
-// side the ray arrives from, and reflects only into the geometric hemisphere it is seen from.
+// heuristic), Russian roulette after a few bounces. Every surface met by a ray other than the
+// camera's is two-sided (single-sided ones too: see docs/path-tracer.md), shaded on the side the
+// ray arrives from with its normal-mapped shading normal, and reflects only into the geometric
+// hemisphere it is seen from; alpha-tested surfaces let rays through where RayScene says so.
 #pragma once
 
 #include <cstdint>

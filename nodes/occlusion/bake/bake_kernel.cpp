@@ -93,7 +93,7 @@ class BakeKernel final : public NodeKernel {
     grid_ = VisibilityGrid{};
     if (mesh.triangle_count() > 0) {
       const BakeDomain volume = BakeDomain::volume(mesh, {resolution_, 0, 0});
-      grid_ = bake_visibility_grid(RayScene(scene), volume, settings_, seed_);
+      grid_ = bake_visibility_grid(RayScene(mesh, scene), volume, settings_, seed_);
     }
     if (!points_) points_.emplace(ctx.gpu(), ctx.node().id + " grid", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     points_->write(grid_.points);
