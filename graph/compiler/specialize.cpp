@@ -4,6 +4,7 @@ namespace lg {
 namespace {
 
 bool holds(const Condition& c, const ResolvedNode& node, const SceneSummary& scene) {
+  if (c.unless_linked >= 0 && node.input_link[c.unless_linked] >= 0) return false;
   switch (c.kind) {
     case Condition::Kind::scene_lacks: return !scene.has(c.feature);
     case Condition::Kind::param_equals: return node.param(c.param) == c.value;
