@@ -147,9 +147,10 @@ TEST(IrradianceVolume, GpuLookupMatchesTheCpuLookup) {
       worst = std::max(worst, e);
       bad += e > 1.0;
     }
-    std::printf("%s (visibility %s): mean E %.4f W/m^2, worst error %.3f of the tolerance, %zu pixels past it, "
-                "%zu pixels partly covered\n",
-                representation, visibility ? "on" : "off", mean, worst, bad, partial);
+    std::printf(
+        "%s (visibility %s): mean E %.4f W/m^2, worst error %.3f of the tolerance, %zu pixels past it, "
+        "%zu pixels partly covered\n",
+        representation, visibility ? "on" : "off", mean, worst, bad, partial);
     EXPECT_EQ(bad, 0u) << representation;
   }
 }
@@ -219,8 +220,12 @@ TEST(IrradianceVolume, OverlappingVolumesBlendContinuously) {
     }
     EXPECT_LE(std::abs(e.coverage - previous_coverage), 1.5 / kVolumeBlendRamp * step + 1e-9) << x;
     previous_coverage = e.coverage;
-    if (x < 2.0) EXPECT_EQ(e.coverage, 1.0) << x;
-    if (x > 1.5 + 1.0 + 0.5) EXPECT_EQ(e.coverage, 0.0) << x;
+    if (x < 2.0) {
+      EXPECT_EQ(e.coverage, 1.0) << x;
+    }
+    if (x > 1.5 + 1.0 + 0.5) {
+      EXPECT_EQ(e.coverage, 0.0) << x;
+    }
   }
   EXPECT_NEAR(previous, 3.0, 1e-9);
   EXPECT_LT(largest_jump, 0.05);

@@ -57,7 +57,8 @@ class IrradianceVolumeKernel final : public NodeKernel {
     const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()),
                                       sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-                                      storage_buffer(3, volumes_->handle()), storage_buffer(4, probes_->handle()),
+                                      storage_buffer(3, volumes_->handle()),
+                                      storage_buffer(4, probes_->handle()),
                                       storage_image(5, out.view())};
     dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/irradiance_volume.comp", writes, out.desc().width,
                      out.desc().height, std::as_bytes(std::span(&push_, 1)));

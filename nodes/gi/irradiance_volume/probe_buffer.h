@@ -22,7 +22,7 @@ struct GpuProbeVolume {  // shaders/probe_volume.glsl ProbeVolume
 };
 static_assert(sizeof(GpuProbeVolume) == 160);
 
-struct GpuProbe {  // shaders/probe_volume.glsl Probe
+struct GpuProbe {            // shaders/probe_volume.glsl Probe
   glm::vec4 position{0.0f};  // w: 1 active
   glm::vec4 sh[kProbeShCount];
   glm::vec4 ambient_cube[6];

@@ -29,7 +29,8 @@ PathEnvironment plan_environment(const Plan& plan, const char* who) {
 
 bool plan_culls_backfaces(const Plan& plan, bool fallback) {
   for (const PlanNode& node : plan.nodes)
-    if (node.type == "scene.gbuffer" && node.state == NodeState::Kind::active) return param_bool(node, "cull_backfaces");
+    if (node.type == "scene.gbuffer" && node.state == NodeState::Kind::active)
+      return param_bool(node, "cull_backfaces");
   return fallback;
 }
 

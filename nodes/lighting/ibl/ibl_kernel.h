@@ -15,7 +15,7 @@ namespace lg {
 
 struct IblSettings {
   bool diffuse_from_sh = true;  // else from the irradiance map
-  float intensity = 1.0f;  // 0 for a scene without an environment (a volume's light only)
+  float intensity = 1.0f;       // 0 for a scene without an environment (a volume's light only)
   bool specular_occlusion = true;
   bool multi_bounce = true;
 };
