@@ -40,7 +40,7 @@ std::optional<PathEnvironment> load_graph_environment(const Args& args, const Sc
     return std::nullopt;
   }
   cull_backfaces = plan_culls_backfaces(*compiled.plan, cull_backfaces);
-  return plan_environment(*compiled.plan, ("lumagraph " + std::string(command)).c_str());
+  return plan_environment(*compiled.plan, view.has_environment, ("lumagraph " + std::string(command)).c_str());
 }
 
 }  // namespace lg::cli

@@ -76,7 +76,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
     }
     const auto start = std::chrono::steady_clock::now();
     const std::string who = "gi.irradiance_volume '" + ctx.node().id + "'";
-    const PathScene traced(scene, plan_environment(ctx.plan(), who.c_str()));
+    const PathScene traced(scene, plan_environment(ctx.plan(), scene.has_environment, who.c_str()));
     std::vector<ProbeGrid> grids;
     for (const IrradianceVolumeData& volume : scene.irradiance_volumes) {
       ProbeGrid& grid = grids.emplace_back(volume);

@@ -9,7 +9,8 @@
 
 namespace lg {
 
-PathEnvironment plan_environment(const Plan& plan, const char* who) {
+PathEnvironment plan_environment(const Plan& plan, bool scene_has_environment, const char* who) {
+  if (!scene_has_environment) return PathEnvironment::none();
   for (const PlanNode& node : plan.nodes) {
     if (node.state != NodeState::Kind::active) continue;
     if (node.type == "env.load") {
