@@ -5,8 +5,6 @@
 #ifndef LG_PROBE_VOLUME_GLSL
 #define LG_PROBE_VOLUME_GLSL
 
-#include "nodes/env/common/shaders/sh_basis.glsl"
-
 const int LG_PROBE_IRRADIANCE_TEXELS = 6;  // kProbeIrradianceTexels
 const int LG_PROBE_DISTANCE_TEXELS = 14;   // kProbeDistanceTexels
 
@@ -76,17 +74,22 @@ vec2 sample_distance_map(int p, vec3 d) {
   return sum;
 }
 
-// probe_irradiance(); `y`: the SH basis at n (sh_basis.glsl), read only by the SH forms.
-vec3 probe_irradiance(int p, vec3 n, uint representation, float y[LG_SH_MAX_COUNT]) {
+// probe_irradiance(). The SH basis up to band 2 in closed form: the env basis (sh_basis.glsl:
+// orthonormal, index l (l + 1) + m, no Condon-Shortley phase), without its band-4 loop and array.
+vec3 probe_irradiance(int p, vec3 n, uint representation) {
   if (representation == LG_PROBE_OCTAHEDRAL) return sample_irradiance_map(p, n);
   if (representation == LG_PROBE_AMBIENT_CUBE) {
     vec3 e = vec3(0.0);
     for (int a = 0; a < 3; ++a) e += n[a] * n[a] * probes[p].ambient_cube[2 * a + (n[a] < 0.0 ? 1 : 0)].rgb;
     return e;
   }
-  int count = representation == LG_PROBE_SH_L1 ? 4 : 9;
-  vec3 e = vec3(0.0);
-  for (int c = 0; c < count; ++c) e += probes[p].sh[c].rgb * y[c];
+  vec3 e = 0.282095 * probes[p].sh[0].rgb + 0.488603 * (n.y * probes[p].sh[1].rgb + n.z * probes[p].sh[2].rgb +
+                                                        n.x * probes[p].sh[3].rgb);
+  if (representation == LG_PROBE_SH_L2)
+    e += 1.092548 * (n.x * n.y * probes[p].sh[4].rgb + n.y * n.z * probes[p].sh[5].rgb +
+                     n.x * n.z * probes[p].sh[7].rgb) +
+         0.315392 * (3.0 * n.z * n.z - 1.0) * probes[p].sh[6].rgb +
+         0.546274 * (n.x * n.x - n.y * n.y) * probes[p].sh[8].rgb;
   return max(e, vec3(0.0));
 }
 
@@ -104,7 +107,7 @@ float probe_volume_margin(vec3 g, ivec3 counts) {
 }
 
 // lookup_irradiance(): rgb the irradiance, a 1; vec4(0) where the volume does not serve.
-vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s, float y[LG_SH_MAX_COUNT]) {
+vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
   mat4 grid_from_world = volumes[v].grid_from_world;
   ivec3 counts = volumes[v].counts.xyz;
   int first = volumes[v].counts.w;
@@ -149,7 +152,7 @@ vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s, fl
     const float crush = 0.2;
     if (weight < crush) weight *= weight * weight / (crush * crush);
     weight *= trilinear;
-    sum += weight * probe_irradiance(p, n, s.representation, y);
+    sum += weight * probe_irradiance(p, n, s.representation);
     total += weight;
   }
   if (!(total > 0.0)) return vec4(0.0);
@@ -161,15 +164,13 @@ vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s, fl
 // weights' sum, at most 1). vec4(0) outside every volume.
 const float LG_PROBE_VOLUME_RAMP = 0.25;  // kVolumeBlendRamp, in cells
 vec4 lookup_volumes(int count, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
-  float y[LG_SH_MAX_COUNT];
-  if (s.representation != LG_PROBE_OCTAHEDRAL && s.representation != LG_PROBE_AMBIENT_CUBE) sh_evaluate(n, y);
   vec3 sum = vec3(0.0);
   float total = 0.0;
   for (int v = 0; v < count; ++v) {
     vec3 g = (volumes[v].grid_from_world * vec4(position, 1.0)).xyz;
     float margin = probe_volume_margin(g, volumes[v].counts.xyz);
     if (!(margin > 0.0)) continue;
-    vec4 e = lookup_irradiance(v, position, n, eye, s, y);
+    vec4 e = lookup_irradiance(v, position, n, eye, s);
     if (e.a == 0.0) continue;
     float w = smoothstep(0.0, LG_PROBE_VOLUME_RAMP, margin);
     sum += w * e.rgb;
