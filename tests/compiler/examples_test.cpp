@@ -38,6 +38,8 @@ const std::pair<const char*, const char*> must_precede[] = {
     {"gtao/prefilter", "gtao/horizons"},
     {"gtao/horizons", "gtao/denoise"},
     {"gtao/denoise", "ibl/shade"},
+    {"gbuf/raster", "volume/lookup"},
+    {"volume/lookup", "ibl/shade"},  // the probe volume's irradiance feeds image-based light
     {"ibl/shade", "dof/coc"},
     {"dof/coc", "dof/gather"},
     {"dof/gather", "dof/composite"},
