@@ -248,6 +248,39 @@ TEST(IrradianceVolume, ProbesOffOrInsideGeometryGiveNoNaN) {
   }
 }
 
+// The in-graph bake is kept while the scene stands still and redone when a light changes: the
+// Cornell box's lamp at half its radiance halves the bounce light it gives (the sun's part
+// stays), so the mean irradiance falls; back at full radiance the probes are baked again
+// and, the bake being deterministic, the image is the first one bit for bit.
+TEST(IrradianceVolume, TheBakeFollowsTheLights) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  RendererOptions options;
+  options.device.validation = true;
+  Renderer renderer(options);
+  renderer.set_graph(volume_graph(R"({ "rays": 32, "bounces": 1 })"));
+  auto mean_green = [&] {
+    renderer.render(world, kFrame);
+    const std::vector<float> e = renderer.executor().read_image("volume.irradiance");
+    double sum = 0.0;
+    for (size_t p = 0; p < e.size(); p += 4) sum += e[p + 1];
+    return sum / double(e.size() / 4);
+  };
+  auto set_lamp = [&](float scale) {
+    world.each<RectLight>([&](Entity, RectLight& l) { l.intensity = 15.0f * scale; });
+  };
+  const double first = mean_green(), again = mean_green();
+  set_lamp(0.5f);
+  const double dimmed = mean_green();
+  set_lamp(1.0f);
+  const double restored = mean_green();
+  std::printf("mean irradiance (green): %.5f, unchanged %.5f, lamp halved %.5f, restored %.5f\n", first, again,
+              dimmed, restored);
+  EXPECT_EQ(again, first);
+  EXPECT_LT(dimmed, 0.9 * first);
+  EXPECT_EQ(restored, first);
+  EXPECT_TRUE(renderer.context().take_validation_messages().empty());
+}
+
 // lighting.ibl with a volume linked, in the Cornell box without its environment (a room lit by
 // its lamp and the sun alone): the node is not bypassed; where the volume covers a surface the
 // image-based light is the volume's bounce light (ibl.color above the direct light on at least
