@@ -273,8 +273,8 @@ TEST(IrradianceVolume, TheBakeFollowsTheLights) {
   const double dimmed = mean_green();
   set_lamp(1.0f);
   const double restored = mean_green();
-  std::printf("mean irradiance (green): %.5f, unchanged %.5f, lamp halved %.5f, restored %.5f\n", first, again,
-              dimmed, restored);
+  std::printf("mean irradiance (green): %.5f, unchanged %.5f, lamp halved %.5f, restored %.5f\n", first, again, dimmed,
+              restored);
   EXPECT_EQ(again, first);
   EXPECT_LT(dimmed, 0.9 * first);
   EXPECT_EQ(restored, first);
