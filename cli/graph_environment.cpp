@@ -3,38 +3,13 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "cli/graph_input.h"
 #include "nodes/builtin_schemas.h"
-#include "nodes/common/node_params.h"
-#include "nodes/env/load/env_load_kernel.h"
-#include "runtime/image/image_file.h"
+#include "nodes/gi/path_tracer/plan_environment.h"
 
 namespace lg::cli {
-namespace {
-
-PathEnvironment plan_environment(const Plan& plan, const char* command, bool& cull_backfaces) {
-  for (const PlanNode& node : plan.nodes)
-    if (node.type == "scene.gbuffer" && node.state == NodeState::Kind::active)
-      cull_backfaces = param_bool(node, "cull_backfaces");
-  for (const PlanNode& node : plan.nodes) {
-    if (node.state != NodeState::Kind::active) continue;
-    if (node.type == "env.load") {
-      ImageData image = load_image(param_string(node, "path"));
-      const uint64_t non_finite = sanitize_equirect(image.rgba, param_number(node, "intensity"));
-      if (non_finite)
-        std::fprintf(stderr, "lumagraph %s: %llu non-finite texels of %s replaced by 0\n", command,
-                     static_cast<unsigned long long>(non_finite), param_string(node, "path").c_str());
-      return PathEnvironment::image(Equirect{image.width, image.height, std::move(image.rgba)});
-    }
-    if (node.type == "env.sky")
-      return PathEnvironment::sky({glm::dvec3(param_float3(node, "sun_direction")), param_number(node, "sun_intensity"),
-                                   param_number(node, "turbidity")});
-  }
-  return PathEnvironment::none();
-}
-
-}  // namespace
 
 std::optional<PathEnvironment> load_graph_environment(const Args& args, const SceneView& view, FrameSize frame,
                                                       const char* command, bool& cull_backfaces) {
@@ -64,7 +39,8 @@ std::optional<PathEnvironment> load_graph_environment(const Args& args, const Sc
     std::fputs(diagnostics.to_string().c_str(), stderr);
     return std::nullopt;
   }
-  return plan_environment(*compiled.plan, command, cull_backfaces);
+  cull_backfaces = plan_culls_backfaces(*compiled.plan, cull_backfaces);
+  return plan_environment(*compiled.plan, view.has_environment, ("lumagraph " + std::string(command)).c_str());
 }
 
 }  // namespace lg::cli

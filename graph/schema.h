@@ -96,11 +96,14 @@ struct Condition {
   SceneFeature feature = SceneFeature::count;
   int param = -1;
   JsonValue value;
+  int unless_linked = -1;  // an input: the rule does not hold while it is linked
 };
 
 struct BypassRule {
   Condition when;
-  std::vector<std::pair<int, int>> forward;  // output index <- input index
+  // output index <- input index, or -1: the output holds nothing and its consumers' optional
+  // inputs stay unlinked (a required input fed by it is an error)
+  std::vector<std::pair<int, int>> forward;
   std::string reason;
 };
 

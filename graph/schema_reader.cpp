@@ -264,11 +264,16 @@ class SchemaReader {
     } else {
       d_.error(when->pos(), wp, "expected {\"scene_lacks\": FEATURE} or {\"param\": NAME, \"equals\"|\"at_most\": VALUE}");
     }
+    if (const JsonValue* unless = when ? when->find("unless_linked") : nullptr) {
+      rule.when.unless_linked = unless->is_string() ? s_.find_input(unless->as_string()) : -1;
+      if (rule.when.unless_linked < 0) d_.error(unless->pos(), wp, "\"unless_linked\" names no input");
+    }
     const JsonValue* forward = v.find("forward");
     if (forward && forward->is_object()) {
       for (const auto& [out, in] : forward->members()) {
         int o = s_.find_output(out), i = in.is_string() ? s_.find_input(in.as_string()) : -1;
-        if (o < 0 || i < 0) d_.error(in.pos(), json_pointer_append(p, "forward"), "forward maps an output name to an input name");
+        if (o < 0 || (i < 0 && !in.is_null()))
+          d_.error(in.pos(), json_pointer_append(p, "forward"), "forward maps an output name to an input name or null");
         else rule.forward.emplace_back(o, i);
       }
     }

@@ -6,6 +6,7 @@
 #include "nodes/env/sh_project/sh_project_kernel.h"
 #include "nodes/env/sky/sky_kernel.h"
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
+#include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 #include "nodes/lighting/deferred/deferred_kernel.h"
 #include "nodes/lighting/ibl/ibl_kernel.h"
 #include "nodes/occlusion/bake/bake_kernel.h"
@@ -29,6 +30,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("env.sh_project", make_sh_project_kernel);
     r.add("env.sky", make_sky_kernel);
     r.add("env.specular_prefilter", make_specular_prefilter_kernel);
+    r.add("gi.irradiance_volume", make_irradiance_volume_kernel);
     r.add("lighting.deferred", make_deferred_kernel);
     r.add("lighting.ibl", make_ibl_kernel);
     r.add("occlusion.bake", make_bake_kernel);

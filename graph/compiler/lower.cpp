@@ -162,8 +162,8 @@ class Lowerer {
 
   void forward(int n) {
     for (int o = 0; o < port_base_[n + 1] - port_base_[n]; ++o) {
-      int li = r_.nodes[n].input_link[forwarded_input(r_, s_, n, o)];
-      if (li >= 0) port(n, o) = source_of(li);
+      const int in = forwarded_input(r_, s_, n, o);
+      if (int li = in >= 0 ? r_.nodes[n].input_link[in] : -1; li >= 0) port(n, o) = source_of(li);
     }
   }
 
@@ -274,10 +274,13 @@ class Lowerer {
     return texels * r.layers * bytes_per_texel;
   }
 
-  // A bypassed node that forwards an unlinked input leaves its consumers with nothing.
+  // A bypassed node that forwards an unlinked input leaves its consumers with nothing; one that
+  // forwards nothing (null) leaves optional inputs unlinked.
   void check_fed(int n, int input, int link) {
     if (link < 0 || r_.links[link].history || !source_of(link).empty()) [[likely]]
       return;
+    const ResolvedLink& l = r_.links[link];
+    if (r_.nodes[n].schema->inputs[input].optional && forwarded_input(r_, s_, l.from_node, l.from_port) < 0) return;
     not_fed(n, input, link);
   }
 
@@ -287,8 +290,9 @@ class Lowerer {
     int forwarded = forwarded_input(r_, s_, l.from_node, l.from_port);
     d_.error(r_.graph->links[l.source].to_pos, json_pointer_append("/links", static_cast<size_t>(l.source)) + "/to",
              "input '" + joined({id(n), ".", r_.nodes[n].schema->inputs[input].name}) + "' gets nothing: '" +
-                 std::string(id(l.from_node)) + "' is bypassed (" + s_[l.from_node].reason + ") and its input '" +
-                 producer.inputs[forwarded].name + "' is not linked");
+                 std::string(id(l.from_node)) + "' is bypassed (" + s_[l.from_node].reason + ") and " +
+                 (forwarded < 0 ? std::string("forwards nothing")
+                                : "its input '" + producer.inputs[forwarded].name + "' is not linked"));
   }
 
   void lower_node(int n) {

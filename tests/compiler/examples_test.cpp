@@ -38,6 +38,8 @@ const std::pair<const char*, const char*> must_precede[] = {
     {"gtao/prefilter", "gtao/horizons"},
     {"gtao/horizons", "gtao/denoise"},
     {"gtao/denoise", "ibl/shade"},
+    {"gbuf/raster", "volume/lookup"},
+    {"volume/lookup", "ibl/shade"},  // the probe volume's irradiance feeds image-based light
     {"ibl/shade", "dof/coc"},
     {"dof/coc", "dof/gather"},
     {"dof/gather", "dof/composite"},
@@ -78,11 +80,14 @@ TEST(CompilerExamples, EveryExampleCompilesWithEveryScene) {
       ASSERT_FALSE(plan.passes.empty());
       EXPECT_FALSE(plan.barriers.empty());
 
-      // Nothing is culled in the examples; only depth of field may be bypassed, without a lens.
+      // Nothing is culled in the examples; only depth of field may be bypassed, without a lens,
+      // and the irradiance volume without volumes.
       for (const auto& n : plan.nodes) {
         EXPECT_NE(n.state, NodeState::Kind::culled) << n.id << ": " << n.reason;
-        bool lens = options.scene.aperture > 0;
-        auto expected = n.type == "post.dof" && !lens ? NodeState::Kind::bypassed : NodeState::Kind::active;
+        bool lens = options.scene.aperture > 0, volumes = options.scene.irradiance_volumes > 0;
+        auto expected = (n.type == "post.dof" && !lens) || (n.type == "gi.irradiance_volume" && !volumes)
+                            ? NodeState::Kind::bypassed
+                            : NodeState::Kind::active;
         EXPECT_EQ(n.state, expected) << n.id << ": " << n.reason;
       }
       for (auto [a, b] : must_precede)

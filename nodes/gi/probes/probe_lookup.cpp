@@ -24,6 +24,14 @@ glm::dvec3 sample_map(const std::array<T, N>& map, glm::dvec3 direction, int k) 
   return sum;
 }
 
+// Cells from grid coordinates `g` to the nearest face of the box grown by half a cell (negative
+// outside).
+double volume_margin(glm::dvec3 g, glm::ivec3 counts) {
+  double m = g.x + 0.5;
+  for (int a = 0; a < 3; ++a) m = std::min({m, g[a] + 0.5, counts[a] - 0.5 - g[a]});
+  return m;
+}
+
 }  // namespace
 
 const char* probe_representation_name(ProbeRepresentation r) {
@@ -73,8 +81,7 @@ std::optional<glm::dvec3> lookup_irradiance(const ProbeGrid& grid, glm::dvec3 po
                                             const ProbeLookupSettings& settings) {
   const glm::dvec3 g = grid.grid_coordinates(position);
   const glm::ivec3 counts = grid.counts();
-  for (int a = 0; a < 3; ++a)  // the box and half a cell around it
-    if (!(g[a] >= -0.5 && g[a] <= counts[a] - 0.5)) return std::nullopt;
+  if (!(volume_margin(g, counts) >= 0.0)) return std::nullopt;  // the box and half a cell around it
   const double cell = grid.min_spacing();
   const glm::dvec3 to_eye = glm::normalize(eye - position);
   const glm::dvec3 biased = position + (n * settings.normal_bias + to_eye * settings.view_bias) * cell;
@@ -119,6 +126,24 @@ std::optional<glm::dvec3> lookup_irradiance(const ProbeGrid& grid, glm::dvec3 po
   }
   if (!(total > 0.0)) return std::nullopt;
   return sum / total;
+}
+
+VolumeIrradiance lookup_volumes(std::span<const ProbeGrid> grids, glm::dvec3 position, glm::dvec3 n, glm::dvec3 eye,
+                                const ProbeLookupSettings& settings) {
+  glm::dvec3 sum(0.0);
+  double total = 0.0;
+  for (const ProbeGrid& grid : grids) {
+    const double margin = volume_margin(grid.grid_coordinates(position), grid.counts());
+    if (!(margin > 0.0)) continue;
+    const std::optional<glm::dvec3> e = lookup_irradiance(grid, position, n, eye, settings);
+    if (!e) continue;
+    const double t = std::clamp(margin / kVolumeBlendRamp, 0.0, 1.0);
+    const double w = t * t * (3.0 - 2.0 * t);  // GLSL's smoothstep
+    sum += w * *e;
+    total += w;
+  }
+  if (!(total > 0.0)) return {};
+  return {sum / total, std::min(total, 1.0)};
 }
 
 }  // namespace lg

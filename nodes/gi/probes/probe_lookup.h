@@ -6,11 +6,13 @@
 // between the normal and the direction to the probe, and, with `visibility`, the Chebyshev bound
 // of its distance moments that the point is in its view (at least 0.05); weights under 0.2 are
 // crushed by their cube, so that a probe barely seen does not bleed. Probes that are off count
-// nothing.
+// nothing. nodes/gi/irradiance_volume/shaders/probe_volume.glsl is the GLSL port of this file:
+// change one, change the other.
 #pragma once
 
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "nodes/gi/probes/probe_grid.h"
@@ -36,5 +38,18 @@ glm::dvec3 probe_irradiance(const ProbeData& probe, glm::dvec3 n, ProbeRepresent
 // cell inside a room's walls covers the room) or when no probe around the point is on.
 std::optional<glm::dvec3> lookup_irradiance(const ProbeGrid& grid, glm::dvec3 position, glm::dvec3 n, glm::dvec3 eye,
                                             const ProbeLookupSettings& settings);
+
+// Several volumes: each one's irradiance weighted by smoothstep(0, kVolumeBlendRamp, margin),
+// the margin being the cells from the point to the nearest face of its box grown by half a cell,
+// so that overlapping volumes blend continuously and each fades out at its border. coverage is
+// the weights' sum, at most 1: 0 outside every volume (or where none has a probe on), 1 from a
+// quarter cell inside a volume's served box.
+inline constexpr double kVolumeBlendRamp = 0.25;  // in cells
+struct VolumeIrradiance {
+  glm::dvec3 irradiance{0.0};
+  double coverage = 0.0;
+};
+VolumeIrradiance lookup_volumes(std::span<const ProbeGrid> grids, glm::dvec3 position, glm::dvec3 n, glm::dvec3 eye,
+                                const ProbeLookupSettings& settings);
 
 }  // namespace lg

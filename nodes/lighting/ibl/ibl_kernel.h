@@ -15,7 +15,7 @@ namespace lg {
 
 struct IblSettings {
   bool diffuse_from_sh = true;  // else from the irradiance map
-  float intensity = 1.0f;
+  float intensity = 1.0f;       // 0 for a scene without an environment (a volume's light only)
   bool specular_occlusion = true;
   bool multi_bounce = true;
 };
@@ -30,6 +30,7 @@ struct IblInputs {
   Image* irradiance = nullptr;
   Image *specular = nullptr, *brdf_lut = nullptr;
   Image *ao = nullptr, *bent_normals = nullptr;
+  Image* irradiance_volume = nullptr;  // rgb irradiance (W/m^2), a coverage
   Image* color = nullptr;
 };
 

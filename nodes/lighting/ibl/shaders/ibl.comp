@@ -13,7 +13,9 @@
 // cone-cone intersection with bent normals, else by Lagarde's form from AO. The material's own
 // occlusion (its glTF occlusion texture, in the G-buffer albedo's alpha) multiplies the
 // diffuse visibility and, through Lagarde's form, the specular: image-based light only, never
-// direct light. Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
+// direct light. With a probe volume linked (gi.irradiance_volume), the diffuse irradiance is the
+// environment's (times intensity) mixed toward the volume's by its coverage, before occlusion.
+// Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
@@ -35,9 +37,10 @@ layout(binding = 9) uniform sampler2D dfg_lut;
 layout(binding = 10) uniform sampler2D ao_tex;
 layout(binding = 11) uniform sampler2D bent_normal_tex;
 layout(binding = 12, rgba16f) uniform writeonly image2D color;
+layout(binding = 13) uniform sampler2D volume_tex;  // rgb irradiance (W/m^2), a coverage
 layout(push_constant) uniform Push {
   // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion,
-  // 32 multi-bounce occlusion
+  // 32 multi-bounce occlusion, 64 irradiance volume
   uint flags;
   float intensity;
 };
@@ -112,6 +115,11 @@ void main() {
     irradiance_over_pi = (cones ? sh_cone_irradiance(n, bent, cone_cos) : sh_irradiance(n)) / LG_SH_PI;
   else
     irradiance_over_pi = textureLod(irradiance_map, bent, 0.0).rgb;
+  irradiance_over_pi *= intensity;
+  if ((flags & 64u) != 0u) {
+    vec4 volume = texelFetch(volume_tex, texel, 0);
+    irradiance_over_pi = mix(irradiance_over_pi, volume.rgb / LG_SH_PI, clamp(volume.a, 0.0, 1.0));
+  }
   vec3 diffuse = diffuse_color * irradiance_over_pi * occlusion;
 
   float mips = float(textureQueryLevels(specular_map));
@@ -125,5 +133,5 @@ void main() {
     specular *= specular_occlusion_from_ao(n_dot_v, visibility, roughness);
   if (material_occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, material_occlusion, roughness);
 
-  imageStore(color, texel, vec4(direct + intensity * (diffuse + specular), 1.0));
+  imageStore(color, texel, vec4(direct + diffuse + intensity * specular, 1.0));
 }

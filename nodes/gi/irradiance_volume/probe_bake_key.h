@@ -1,0 +1,15 @@
+// What gi.irradiance_volume's in-graph bake depends on, as one number: the scene's assets
+// (SceneView::version: meshes, materials, textures), every light's fields, the environment and
+// the volumes themselves. The camera, the exposure and the draws' previous transforms are left
+// out, so a moving camera keeps the bake.
+#pragma once
+
+#include <cstdint>
+
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+
+uint64_t probe_bake_key(const SceneView& scene);
+
+}  // namespace lg

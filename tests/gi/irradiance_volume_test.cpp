@@ -1,0 +1,380 @@
+// gi.irradiance_volume on lavapipe against the CPU lookup (nodes/gi/probes/probe_lookup.h) on the
+// Cornell box with two overlapping volumes and a third inside a block (every probe off); the
+// coverage outside every volume and on the sky; the blend across a volume's border; a probe-less
+// scene bypassing the node; lighting.ibl taking a volume's light in a scene without environment.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "api/renderer.h"
+#include "graph/compiler.h"
+#include "graph/graph_io.h"
+#include "nodes/builtin_schemas.h"
+#include "nodes/common/camera_constants.h"
+#include "nodes/gi/probes/probe_bake.h"
+#include "nodes/gi/probes/probe_lookup.h"
+#include "runtime/scene/load_world.h"
+#include "runtime/scene/make_scene_view.h"
+#include "tests/runtime/gpu_test.h"
+
+namespace lg::test {
+namespace {
+
+constexpr FrameSize kFrame{96, 72};
+constexpr ProbeBakeSettings kBake{.rays = 64, .bounces = 2, .seed = 3};
+
+Graph volume_graph(const std::string& params) {
+  Diagnostics d("irradiance-volume-test.json");
+  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "volume", "type": "gi.irradiance_volume", "params": )" +
+                                                    params + R"( } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "volume.gbuffer" } ],
+    "outputs": [ "volume.irradiance" ] })",
+                                                d);
+  if (!graph) throw std::runtime_error(d.to_string());
+  return std::move(*graph);
+}
+
+void add_volume(World& world, glm::vec3 position, glm::vec3 size, glm::ivec3 counts) {
+  Entity e = world.create("volume");
+  world.add(e, Transform{}).position = position;
+  world.add(e, IrradianceVolume{size, counts});
+}
+
+// The Cornell box's own 8x8x8 volume, a 4x4x4 one overlapping its right half (blending across
+// its border in view), and a 2x2x2 one inside the tall block (all probes off).
+World cornell_box() {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  add_volume(world, {0.45f, 1.0f, 0.0f}, {0.9f, 1.2f, 1.2f}, {4, 4, 4});
+  add_volume(world, {-0.33f, 0.6f, -0.3f}, {0.1f, 0.1f, 0.1f}, {2, 2, 2});
+  return world;
+}
+
+struct Frame {
+  std::vector<float> irradiance, depth, normal;
+  SceneView view;
+};
+
+Frame render(const World& world, const std::string& params) {
+  RendererOptions options;
+  options.device.validation = true;
+  options.alias = false;  // the G-buffer is read back after the frame
+  Renderer renderer(options);
+  renderer.set_graph(volume_graph(params));
+  renderer.render(world, kFrame);
+  auto messages = renderer.context().take_validation_messages();
+  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
+  return {renderer.executor().read_image("volume.irradiance"), renderer.executor().read_image("gbuf.gbuffer.depth"),
+          renderer.executor().read_image("gbuf.gbuffer.normal"), renderer.scene_view()};
+}
+
+// What the pass computes at pixel (x, y), in double precision from the same G-buffer texels
+// (camera.glsl's world_position, gbuffer.glsl's decode_normal).
+struct PixelInput {
+  bool sky = true;
+  glm::dvec3 position{0.0}, normal{0.0, 0.0, 1.0};
+};
+PixelInput pixel_input(const Frame& f, const CameraConstants& c, uint32_t x, uint32_t y) {
+  const size_t i = 4 * (size_t(y) * kFrame.width + x);
+  PixelInput in;
+  const double depth = f.depth[i];
+  if (depth <= 0.0) return in;
+  in.sky = false;
+  const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) * glm::dvec2(c.viewport.z, c.viewport.w) * 2.0 - 1.0;
+  const glm::dvec4 p = glm::dmat4(c.inverse_view_projection) * glm::dvec4(ndc, depth, 1.0);
+  in.position = glm::dvec3(p) / p.w;
+  const glm::dvec3 n = glm::dvec3(f.normal[i], f.normal[i + 1], f.normal[i + 2]) * 2.0 - 1.0;
+  if (glm::length(n) > 1e-3) in.normal = glm::normalize(n);
+  return in;
+}
+
+std::vector<ProbeGrid> bake_on_cpu(const SceneView& view) {
+  const PathScene scene(view, PathEnvironment::none());  // the test graph has no environment node
+  std::vector<ProbeGrid> grids;
+  for (const IrradianceVolumeData& v : view.irradiance_volumes) {
+    ProbeGrid& g = grids.emplace_back(v);
+    bake_probes(scene, g, kBake, 0, g.probe_count());
+  }
+  return grids;
+}
+
+// Per pixel the GPU's irradiance and coverage against lookup_volumes() on the same probes (the
+// bake is deterministic). The output is half float (relative step 2^-11 = 0.05%) and the pass
+// runs in float: positions from depth, the octahedral taps and the Chebyshev ratio carry float
+// rounding that moves weights by ~1e-5 relative. 1% of the pixel's value plus 0.1% of the image
+// mean bounds both with a wide margin, and the lookup is continuous in its inputs (no branch
+// jumps: trilinear, wrap, Chebyshev and crush weights all are), so no pixel may exceed it.
+TEST(IrradianceVolume, GpuLookupMatchesTheCpuLookup) {
+  const World world = cornell_box();
+  for (const char* representation : {"octahedral", "sh_l2", "ambient_cube", "sh_l1"}) {
+    const bool visibility = std::string(representation) == "octahedral";
+    const Frame f = render(world, std::string(R"({ "rays": 64, "bounces": 2, "seed": 3, "representation": ")") +
+                                      representation + R"(", "visibility": )" + (visibility ? "true" : "false") + "}");
+    ASSERT_EQ(f.view.irradiance_volumes.size(), 3u);
+    static const std::vector<ProbeGrid> grids = bake_on_cpu(f.view);
+    const CameraConstants c = camera_constants(f.view.camera, kFrame.width, kFrame.height);
+    ProbeLookupSettings s;
+    s.representation = *parse_probe_representation(representation);
+    s.visibility = visibility;
+    std::vector<VolumeIrradiance> expected;
+    double mean = 0.0;
+    for (uint32_t y = 0; y < kFrame.height; ++y)
+      for (uint32_t x = 0; x < kFrame.width; ++x) {
+        const PixelInput in = pixel_input(f, c, x, y);
+        expected.push_back(in.sky ? VolumeIrradiance{}
+                                  : lookup_volumes(grids, in.position, in.normal, glm::dvec3(c.position), s));
+        mean += (expected.back().irradiance.r + expected.back().irradiance.g + expected.back().irradiance.b) / 3.0;
+      }
+    mean /= double(expected.size());
+    ASSERT_GT(mean, 0.0);
+    double worst = 0.0;
+    size_t bad = 0, partial = 0;
+    for (size_t p = 0; p < expected.size(); ++p) {
+      const float* gpu = &f.irradiance[4 * p];
+      for (int k = 0; k < 4; ++k) ASSERT_TRUE(std::isfinite(gpu[k])) << "pixel " << p;
+      const double coverage_error = std::abs(gpu[3] - expected[p].coverage);
+      partial += expected[p].coverage > 0.0 && expected[p].coverage < 1.0;
+      double e = coverage_error / 0.01;
+      for (int k = 0; k < 3; ++k)
+        e = std::max(e, std::abs(gpu[k] - expected[p].irradiance[k]) /
+                            (0.01 * std::abs(expected[p].irradiance[k]) + 0.001 * mean));
+      worst = std::max(worst, e);
+      bad += e > 1.0;
+    }
+    std::printf(
+        "%s (visibility %s): mean E %.4f W/m^2, worst error %.3f of the tolerance, %zu pixels past it, "
+        "%zu pixels partly covered\n",
+        representation, visibility ? "on" : "off", mean, worst, bad, partial);
+    EXPECT_EQ(bad, 0u) << representation;
+  }
+}
+
+// The Cornell box's sky around the room and a volume covering only the room's left part: where
+// the G-buffer has no surface, or the point lies outside the box grown by half a cell, the
+// coverage is exactly 0 (and the irradiance too); well inside, 1.
+TEST(IrradianceVolume, CoverageIsZeroOutsideEveryVolumeAndOnTheSky) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  world.each<IrradianceVolume>([](Entity, IrradianceVolume& v) { v.size = {0.6f, 1.9f, 1.9f}; });
+  world.each<IrradianceVolume>([&](Entity e, IrradianceVolume&) { world.get<Transform>(e).position.x = -0.6f; });
+  const Frame f = render(world, R"({ "rays": 32, "bounces": 1 })");
+  const CameraConstants c = camera_constants(f.view.camera, kFrame.width, kFrame.height);
+  const ProbeGrid grid(f.view.irradiance_volumes[0]);
+  size_t sky = 0, outside = 0, inside = 0;
+  for (uint32_t y = 0; y < kFrame.height; ++y)
+    for (uint32_t x = 0; x < kFrame.width; ++x) {
+      const float* gpu = &f.irradiance[4 * (size_t(y) * kFrame.width + x)];
+      const PixelInput in = pixel_input(f, c, x, y);
+      const glm::dvec3 g = grid.grid_coordinates(in.position);
+      const glm::ivec3 n = grid.counts();
+      double margin = 1e9;
+      for (int a = 0; a < 3; ++a) margin = std::min({margin, g[a] + 0.5, n[a] - 0.5 - g[a]});
+      if (in.sky || margin < -1e-3) {
+        (in.sky ? sky : outside) += 1;
+        EXPECT_EQ(gpu[3], 0.0f) << x << ", " << y;
+        EXPECT_EQ(gpu[0] + gpu[1] + gpu[2], 0.0f) << x << ", " << y;
+      } else if (margin > kVolumeBlendRamp + 1e-3) {
+        inside += gpu[3] == 1.0f;
+      }
+    }
+  std::printf("sky pixels %zu, outside %zu, fully covered %zu\n", sky, outside, inside);
+  EXPECT_GT(sky, 0u);
+  EXPECT_GT(outside, 100u);
+  EXPECT_GT(inside, 100u);
+}
+
+// Two volumes whose probes hold constant irradiance 1 and 3 overlap along x; walking across both
+// borders the blend moves from 1 to 3 without a jump (a change per 0.001-cell step under 0.05,
+// where a seam would jump by 1 or more; the steepest the smoothstep allows is about 0.012), and
+// the coverage falls to 0 only past the outer border, no faster than the smoothstep's slope.
+TEST(IrradianceVolume, OverlappingVolumesBlendContinuously) {
+  auto constant_grid = [](double x, float e) {
+    IrradianceVolumeData v;
+    v.world = glm::translate(glm::mat4(1.0f), glm::vec3(float(x), 0.0f, 0.0f));
+    v.size = glm::vec3(2.0f);
+    v.probe_counts = glm::ivec3(3);
+    ProbeGrid g(v);
+    for (ProbeData& p : g.probes) {
+      p.active = true;
+      p.irradiance.fill(glm::vec3(e));
+      p.distance.fill(glm::vec2(10.0f, 100.0f));  // open space: nothing nearer than 10
+    }
+    return g;
+  };
+  const std::vector<ProbeGrid> grids = {constant_grid(0.0, 1.0f), constant_grid(1.5, 3.0f)};
+  const double step = 0.001;  // cells are 1 wide
+  double previous = 1.0, previous_coverage = 1.0, largest_jump = 0.0;
+  for (double x = 0.0; x <= 3.5; x += step) {
+    const VolumeIrradiance e = lookup_volumes(grids, {x, 0.0, 0.0}, {0, 1, 0}, {x, 5.0, 0.0}, {});
+    ASSERT_TRUE(std::isfinite(e.irradiance.g));
+    if (e.coverage > 0.0) {
+      EXPECT_GE(e.irradiance.g, 1.0 - 1e-9);
+      EXPECT_LE(e.irradiance.g, 3.0 + 1e-9);
+      largest_jump = std::max(largest_jump, std::abs(e.irradiance.g - previous));
+      previous = e.irradiance.g;
+    }
+    EXPECT_LE(std::abs(e.coverage - previous_coverage), 1.5 / kVolumeBlendRamp * step + 1e-9) << x;
+    previous_coverage = e.coverage;
+    if (x < 2.0) {
+      EXPECT_EQ(e.coverage, 1.0) << x;
+    }
+    if (x > 1.5 + 1.0 + 0.5) {
+      EXPECT_EQ(e.coverage, 0.0) << x;
+    }
+  }
+  EXPECT_NEAR(previous, 3.0, 1e-9);
+  EXPECT_LT(largest_jump, 0.05);
+}
+
+// Every probe off (inside geometry), or probes whose distance moments are all zero (a probe in a
+// wall sees distance 0 everywhere): finite, and no light where nothing is on.
+TEST(IrradianceVolume, ProbesOffOrInsideGeometryGiveNoNaN) {
+  IrradianceVolumeData v;
+  v.probe_counts = glm::ivec3(2);
+  ProbeGrid off(v), walled(v);
+  for (ProbeData& p : walled.probes) p.active = true, p.irradiance.fill(glm::vec3(2.0f));
+  for (const glm::dvec3& point : {glm::dvec3(0.0), glm::dvec3(0.5), glm::dvec3(-0.49, 0.2, 0.1)}) {
+    const VolumeIrradiance a = lookup_volumes(std::span(&off, 1), point, {0, 0, 1}, {0, 0, 5}, {});
+    EXPECT_EQ(a.coverage, 0.0);
+    EXPECT_EQ(a.irradiance, glm::dvec3(0.0));
+    const VolumeIrradiance b = lookup_volumes(std::span(&walled, 1), point, {0, 0, 1}, {0, 0, 5}, {});
+    EXPECT_TRUE(std::isfinite(b.irradiance.r) && std::isfinite(b.coverage));
+    EXPECT_NEAR(b.irradiance.r, 2.0, 1e-9);  // all probes alike: any weights give their value
+  }
+}
+
+// The in-graph bake is kept while the scene stands still and redone when a light changes: the
+// Cornell box's lamp at half its radiance halves the bounce light it gives (the sun's part
+// stays), so the mean irradiance falls; back at full radiance the probes are baked again
+// and, the bake being deterministic, the image is the first one bit for bit.
+TEST(IrradianceVolume, TheBakeFollowsTheLights) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  RendererOptions options;
+  options.device.validation = true;
+  Renderer renderer(options);
+  renderer.set_graph(volume_graph(R"({ "rays": 32, "bounces": 1 })"));
+  auto mean_green = [&] {
+    renderer.render(world, kFrame);
+    const std::vector<float> e = renderer.executor().read_image("volume.irradiance");
+    double sum = 0.0;
+    for (size_t p = 0; p < e.size(); p += 4) sum += e[p + 1];
+    return sum / double(e.size() / 4);
+  };
+  auto set_lamp = [&](float scale) {
+    world.each<RectLight>([&](Entity, RectLight& l) { l.intensity = 15.0f * scale; });
+  };
+  const double first = mean_green(), again = mean_green();
+  set_lamp(0.5f);
+  const double dimmed = mean_green();
+  set_lamp(1.0f);
+  const double restored = mean_green();
+  std::printf("mean irradiance (green): %.5f, unchanged %.5f, lamp halved %.5f, restored %.5f\n", first, again, dimmed,
+              restored);
+  EXPECT_EQ(again, first);
+  EXPECT_LT(dimmed, 0.9 * first);
+  EXPECT_EQ(restored, first);
+  EXPECT_TRUE(renderer.context().take_validation_messages().empty());
+}
+
+// lighting.ibl with a volume linked, in the Cornell box without its environment (a room lit by
+// its lamp and the sun alone): the node is not bypassed; where the volume covers a surface the
+// image-based light is the volume's bounce light (ibl.color above the direct light on at least
+// 90% of the covered pixels, which are about half the image), and where it covers nothing the
+// environment counts 0, so the colour is the direct light's to half-float rounding (0.1%).
+TEST(IrradianceVolume, LightingIblTakesTheVolumeInASceneWithoutEnvironment) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  std::vector<Entity> environments;
+  world.each<EnvironmentLight>([&](Entity e, EnvironmentLight&) { environments.push_back(e); });
+  for (Entity e : environments) world.destroy(e);
+  Diagnostics d("ibl-volume-test.json");
+  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "sky", "type": "env.sky", "params": { "face_size": 16 } },
+      { "id": "sh", "type": "env.sh_project", "params": { "convolve_cosine": true } },
+      { "id": "specular", "type": "env.specular_prefilter", "params": { "face_size": 8, "mips": 2, "samples": 4 } },
+      { "id": "dfg", "type": "env.brdf_lut", "params": { "size": 8, "samples": 16 } },
+      { "id": "light", "type": "lighting.deferred" },
+      { "id": "volume", "type": "gi.irradiance_volume", "params": { "rays": 32, "bounces": 1 } },
+      { "id": "ibl", "type": "lighting.ibl" } ],
+    "links": [ { "from": "sky.cube", "to": "sh.env" }, { "from": "sky.cube", "to": "specular.env" },
+      { "from": "gbuf.gbuffer", "to": "light.gbuffer" }, { "from": "gbuf.gbuffer", "to": "volume.gbuffer" },
+      { "from": "gbuf.gbuffer", "to": "ibl.gbuffer" }, { "from": "light.color", "to": "ibl.direct" },
+      { "from": "sh.sh", "to": "ibl.sh" }, { "from": "specular.specular", "to": "ibl.specular" },
+      { "from": "dfg.lut", "to": "ibl.brdf_lut" }, { "from": "volume.irradiance", "to": "ibl.irradiance_volume" } ],
+    "outputs": [ "ibl.color" ] })",
+                                                d);
+  ASSERT_TRUE(graph) << d.to_string();
+  RendererOptions options;
+  options.device.validation = true;
+  options.alias = false;  // every image is read back after the frame
+  Renderer renderer(options);
+  renderer.set_graph(std::move(*graph));
+  renderer.render(world, kFrame);
+  auto messages = renderer.context().take_validation_messages();
+  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
+  const std::vector<float> color = renderer.executor().read_image("ibl.color");
+  const std::vector<float> direct = renderer.executor().read_image("light.color");
+  const std::vector<float> volume = renderer.executor().read_image("volume.irradiance");
+  size_t covered = 0, brighter = 0, uncovered = 0;
+  for (size_t p = 0; p < color.size() / 4; ++p) {
+    if (volume[4 * p + 3] > 0.0f) {
+      ++covered;
+      brighter += color[4 * p + 1] > direct[4 * p + 1];
+      continue;
+    }
+    ++uncovered;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(color[4 * p + c], direct[4 * p + c], 1e-3 * std::abs(direct[4 * p + c]) + 1e-6) << p;
+  }
+  std::printf("covered %zu (brighter than direct: %zu), uncovered %zu\n", covered, brighter, uncovered);
+  EXPECT_GT(covered, color.size() / 4 / 3);
+  EXPECT_GE(brighter, covered * 9 / 10);
+}
+
+// Compiling examples/gi-volume.json: a scene without volumes bypasses the volume node with the
+// reason, and lighting.ibl takes nothing from it; a scene with volumes but without an environment
+// keeps lighting.ibl (a sealed room lit by lamps still has bounce light).
+TEST(IrradianceVolume, ProbelessSceneBypassesTheNode) {
+  Diagnostics d;
+  std::optional<Graph> graph = load_graph_file(LUMAGRAPH_SOURCE_DIR "/examples/gi-volume.json", d);
+  ASSERT_TRUE(graph) << d.to_string();
+  auto state_of = [](const Plan& plan, const std::string& id) {
+    for (const PlanNode& n : plan.nodes)
+      if (n.id == id) return std::pair{n.state, n.reason};
+    return std::pair{NodeState::Kind::culled, std::string("missing")};
+  };
+  auto lookup_passes = [](const Plan& plan) {
+    return std::count_if(plan.passes.begin(), plan.passes.end(),
+                         [](const PlanPass& p) { return p.name == "volume/lookup"; });
+  };
+  CompileOptions options;
+  options.scene = default_scene_summary();
+  options.scene.irradiance_volumes = 0;
+  CompileResult none = compile(*graph, builtin_registry(), options, d);
+  ASSERT_TRUE(none.plan) << d.to_string();
+  EXPECT_EQ(state_of(*none.plan, "volume").first, NodeState::Kind::bypassed);
+  EXPECT_EQ(state_of(*none.plan, "volume").second, "the scene has no irradiance volumes");
+  EXPECT_EQ(lookup_passes(*none.plan), 0);
+  EXPECT_EQ(state_of(*none.plan, "ibl").first, NodeState::Kind::active);
+
+  options.scene.irradiance_volumes = 1;
+  options.scene.environment = false;
+  CompileResult sealed = compile(*graph, builtin_registry(), options, d);
+  ASSERT_TRUE(sealed.plan) << d.to_string();
+  EXPECT_EQ(state_of(*sealed.plan, "volume").first, NodeState::Kind::active);
+  EXPECT_EQ(state_of(*sealed.plan, "ibl").first, NodeState::Kind::active);
+  EXPECT_EQ(lookup_passes(*sealed.plan), 1);
+
+  options.scene.irradiance_volumes = 0;
+  CompileResult dark = compile(*graph, builtin_registry(), options, d);
+  ASSERT_TRUE(dark.plan) << d.to_string();
+  EXPECT_EQ(state_of(*dark.plan, "ibl").first, NodeState::Kind::bypassed);
+}
+
+}  // namespace
+}  // namespace lg::test
