@@ -13,6 +13,7 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
+#include "runtime/scene/frustum.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -45,7 +46,8 @@ class GbufferKernel final : public NodeKernel {
     set_viewport(cmd, w, h);
     GpuScene& gpu_scene = ctx.gpu_scene();
     const Pipeline* variants[3][2] = {};  // [Variant][double-sided], looked up once a frame
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+    // Draws outside the camera's frustum are not submitted; `i` still indexes the draw buffer.
+    for (uint32_t i : visible_draws(scene, gpu_scene.mesh_bounds(), view_frustum(scene.camera))) {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
       const auto maps = material_maps(m);
