@@ -1,11 +1,11 @@
 // lumagraph-bench-draws: what per-draw work and frustum culling cost in the G-buffer pass on
 // lavapipe. A generated scene of 300 spheres (about 250,000 triangles) drawn as one draw (all
 // spheres merged into one mesh) or as 300 draws (a mesh each), with every sphere in view or half
-// of them behind the camera: the G-buffer pass's GPU time from the executor's timestamps
-// (median, fastest and slowest of the frames after the first two, which compile pipelines and
-// upload). Then the default graph on the default world, its whole frame's GPU and CPU time. The
-// graph is scene.gbuffer into lighting.deferred with no light, so nothing else draws the scene.
-// Writes draws.csv and draws_default_graph.csv (scripts/run-draws-benchmarks).
+// of them behind the camera, the 300 draws with scene.gbuffer's frustum culling on and off: the
+// G-buffer pass's GPU time from the executor's timestamps (median, fastest and slowest of the
+// frames after the first two, which compile pipelines and upload). Then the default graph on the default world, its
+// whole frame's GPU and CPU time. The graph is scene.gbuffer into lighting.deferred with no light, so nothing else
+// draws the scene. Writes draws.csv and draws_default_graph.csv (scripts/run-draws-benchmarks).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -89,9 +89,12 @@ Graph graph_from(const std::string& text) {
   return std::move(*graph);
 }
 
-const char* kGbufferGraph = R"({ "format": "lumagraph/1", "nodes": [
-    { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" } ],
+std::string gbuffer_graph(bool culling) {
+  return std::string(R"({ "format": "lumagraph/1", "nodes": [
+    { "id": "gbuf", "type": "scene.gbuffer", "params": { "frustum_culling": )") +
+         (culling ? "true" : "false") + R"( } }, { "id": "light", "type": "lighting.deferred" } ],
   "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" } ], "outputs": [ "light.color" ] })";
+}
 
 // Per timed frame (the first two left out), pass `pass`'s GPU time (none when empty), the whole
 // frame's GPU time and the frame's CPU time.
@@ -114,28 +117,36 @@ Times run_frames(Renderer& renderer, const World& world, const Options& o, const
 
 int run(const Options& o) {
   std::filesystem::create_directories(o.results_dir);
-  Renderer renderer;
-  renderer.set_graph(graph_from(kGbufferGraph));
+  Renderer culled, unculled;
+  culled.set_graph(graph_from(gbuffer_graph(true)));
+  unculled.set_graph(graph_from(gbuffer_graph(false)));
   std::printf("G-buffer pass on lavapipe, %ux%u, %d spheres of %d triangles, %d timed frames each\n", o.frame.width,
               o.frame.height, kSpheres, 2 * kSegments * kRings, o.frames);
-  std::printf("%-6s %-12s %10s %9s %9s %9s\n", "draws", "placement", "triangles", "median", "fastest", "slowest");
+  std::printf("%-6s %-12s %-8s %10s %9s %9s %9s\n", "draws", "placement", "culling", "submitted", "median", "fastest",
+              "slowest");
   std::ofstream csv(o.results_dir + "/draws.csv");
-  csv << "draws,placement,triangles,drawn_triangles,frames,gbuffer_median_ms,gbuffer_min_ms,gbuffer_max_ms,"
-         "frame_median_ms\n";
+  csv << "draws,placement,culling,triangles,submitted_triangles,frames,gbuffer_median_ms,gbuffer_min_ms,"
+         "gbuffer_max_ms,frame_median_ms\n";
+  struct Point {
+    int draws;
+    bool culling;
+  };
   for (bool half_behind : {false, true})
-    for (int draws : {1, kSpheres}) {
-      const World world = sphere_world(draws, half_behind);
+    for (const Point p : {Point{1, true}, Point{kSpheres, false}, Point{kSpheres, true}}) {
+      const World world = sphere_world(p.draws, half_behind);
       size_t triangles = 0;
       for (const auto& mesh : world.meshes()) triangles += mesh->indices.size() / 3;
-      const Times t = run_frames(renderer, world, o, "gbuf/raster");
+      const Times t = run_frames(p.culling ? culled : unculled, world, o, "gbuf/raster");
       const Spread g = spread(t.pass_ms), f = spread(t.frame_ms);
       const char* placement = half_behind ? "half_behind" : "all_in_view";
-      // Culling leaves out the spheres behind the camera when each is its own draw.
-      const size_t drawn = draws == kSpheres && half_behind ? triangles / 2 : triangles;
-      std::printf("%-6d %-12s %10zu %9.2f %9.2f %9.2f\n", draws, placement, triangles, g.median, g.min, g.max);
+      // Culling leaves out the spheres behind the camera when each is its own draw; one draw
+      // of them all is always in view.
+      const size_t submitted = p.draws == kSpheres && half_behind && p.culling ? triangles / 2 : triangles;
+      std::printf("%-6d %-12s %-8s %10zu %9.2f %9.2f %9.2f\n", p.draws, placement, p.culling ? "on" : "off", submitted,
+                  g.median, g.min, g.max);
       std::fflush(stdout);
-      csv << draws << ',' << placement << ',' << triangles << ',' << drawn << ',' << t.pass_ms.size() << ',' << g.median
-          << ',' << g.min << ',' << g.max << ',' << f.median << '\n';
+      csv << p.draws << ',' << placement << ',' << (p.culling ? "on" : "off") << ',' << triangles << ',' << submitted
+          << ',' << t.pass_ms.size() << ',' << g.median << ',' << g.min << ',' << g.max << ',' << f.median << '\n';
     }
 
   Renderer full;

@@ -1,6 +1,7 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
 #include <algorithm>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -21,7 +22,8 @@ namespace {
 
 class GbufferKernel final : public NodeKernel {
  public:
-  explicit GbufferKernel(const PlanNode& node) : cull_backfaces_(param_bool(node, "cull_backfaces")) {}
+  explicit GbufferKernel(const PlanNode& node)
+      : cull_backfaces_(param_bool(node, "cull_backfaces")), frustum_culling_(param_bool(node, "frustum_culling")) {}
 
   void record(PassContext& ctx) override {
     Image* targets[5];
@@ -47,7 +49,10 @@ class GbufferKernel final : public NodeKernel {
     GpuScene& gpu_scene = ctx.gpu_scene();
     const Pipeline* variants[3][2] = {};  // [Variant][double-sided], looked up once a frame
     // Draws outside the camera's frustum are not submitted; `i` still indexes the draw buffer.
-    for (uint32_t i : visible_draws(scene, gpu_scene.mesh_bounds(), view_frustum(scene.camera))) {
+    std::vector<uint32_t> drawn(scene.draws.size());
+    std::iota(drawn.begin(), drawn.end(), 0u);
+    if (frustum_culling_) drawn = visible_draws(scene, gpu_scene.mesh_bounds(), view_frustum(scene.camera));
+    for (uint32_t i : drawn) {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
       const auto maps = material_maps(m);
@@ -102,7 +107,7 @@ class GbufferKernel final : public NodeKernel {
     return ctx.pipelines().graphics(desc);
   }
 
-  bool cull_backfaces_;
+  bool cull_backfaces_, frustum_culling_;
   std::optional<HostBuffer> camera_, draws_;
 };
 
