@@ -10,6 +10,7 @@
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/texel_codec.h"
 #include "runtime/gpu/transfer.h"
+#include "runtime/scene/frustum.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -153,6 +154,7 @@ void GpuScene::update(const SceneView& scene) {
   for (size_t i = 0; i < scene.textures.size(); ++i)
     textures.push_back(upload(*not_null(scene.textures[i], "texture", i)));
   meshes_ = std::move(meshes);
+  bounds_ = lg::mesh_bounds(scene);
   textures_ = std::move(textures);
   version_ = scene.version;
 }

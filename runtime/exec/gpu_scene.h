@@ -2,7 +2,8 @@
 // per mesh an interleaved vertex buffer (GpuVertex) and a uint32 index buffer, per texture an
 // RGBA8 image with its full mip chain in READ_ONLY_OPTIMAL (sRGB for colour textures, UNORM for
 // data), a 1x1 white texture for materials without one, and one sampler per distinct
-// TextureSampling the materials use (anisotropic where the device allows it).
+// TextureSampling the materials use (anisotropic where the device allows it), and per mesh
+// its box in its own space for frustum culling (runtime/scene/frustum.h).
 // update() uploads again only when SceneView::version changes.
 #pragma once
 
@@ -11,12 +12,14 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
+#include "runtime/scene/mesh_tools.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -64,6 +67,8 @@ class GpuScene {
 
   int mesh_count() const { return static_cast<int>(meshes_.size()); }
   const GpuMesh& mesh(int index) const { return meshes_.at(index); }
+  // Per mesh, the box around its positions in its own space (what visible_draws() takes).
+  std::span<const Bounds> mesh_bounds() const { return bounds_; }
   int texture_count() const { return static_cast<int>(textures_.size()); }
   // Texture `index` of SceneView::textures, or the white texture for -1.
   Image& texture(int index) { return index < 0 ? white_ : textures_.at(index); }
@@ -79,6 +84,7 @@ class GpuScene {
   Submitter& submitter_;
   std::optional<uint64_t> version_;
   std::vector<GpuMesh> meshes_;
+  std::vector<Bounds> bounds_;
   std::vector<Image> textures_;
   Image white_;
   std::vector<std::pair<TextureSampling, std::unique_ptr<Sampler>>> samplers_;  // a handful: searched in turn

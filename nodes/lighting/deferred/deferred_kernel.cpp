@@ -11,6 +11,7 @@
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/lighting/deferred/light_culling.h"
 #include "nodes/lighting/deferred/local_shadows.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "runtime/exec/gpu_scene.h"
@@ -83,7 +84,8 @@ class DeferredKernel final : public NodeKernel {
  public:
   explicit DeferredKernel(const PlanNode& node)
       : shadow_budget_(static_cast<uint32_t>(param_number(node, "shadow_budget"))),
-        atlas_size_(static_cast<uint32_t>(param_number(node, "local_shadow_atlas_size"))) {}
+        atlas_size_(static_cast<uint32_t>(param_number(node, "local_shadow_atlas_size"))),
+        cull_lights_(param_bool(node, "cull_lights")) {}
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
@@ -126,7 +128,9 @@ class DeferredKernel final : public NodeKernel {
     }
     const int caster = shadow_caster(scene);
     shadow_drawn_ = local_drawn_ = false;
-    local_ = plan_local_shadows(scene, shadow_budget_, atlas_size_);
+    // The light lists and the shadow budget see only the lights that reach the view.
+    const SceneView lights = lights_in_view(scene, cull_lights_);
+    local_ = plan_local_shadows(lights, shadow_budget_, atlas_size_);
     Constants c{};
     if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
     constants_ = c;
@@ -137,13 +141,13 @@ class DeferredKernel final : public NodeKernel {
       directional.push_back({glm::vec4(l.direction, int(i) == caster ? 1.0f : 0.0f), glm::vec4(l.irradiance, 0.0f)});
     }
     std::vector<GpuPoint> points;
-    for (size_t i = 0; i < scene.point_lights.size(); ++i) {
-      const auto& l = scene.point_lights[i];
+    for (size_t i = 0; i < lights.point_lights.size(); ++i) {
+      const auto& l = lights.point_lights[i];
       points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, float(local_.point_first_view[i]))});
     }
     std::vector<GpuSpot> spots;
-    for (size_t i = 0; i < scene.spot_lights.size(); ++i)
-      spots.push_back(gpu_spot(scene.spot_lights[i], local_.spot_first_view[i], local_.spot_view_count[i]));
+    for (size_t i = 0; i < lights.spot_lights.size(); ++i)
+      spots.push_back(gpu_spot(lights.spot_lights[i], local_.spot_first_view[i], local_.spot_view_count[i]));
     std::vector<GpuShadowView> views;
     for (const LocalShadowView& v : local_.views)
       views.push_back({v.clip_from_world, glm::vec4(glm::vec2(v.origin), float(v.size), v.texel_per_distance)});
@@ -183,7 +187,7 @@ class DeferredKernel final : public NodeKernel {
     const uint32_t size = map.desc().width;
     // Half a texel of normal offset at the map's resolution hides acne on surfaces facing the
     // light; the depth bias covers the slope within one texel of the filter.
-    const float world_per_texel = 2.0f * 0.5f * glm::length(bounds_->hi - bounds_->lo) / float(size);
+    const float world_per_texel = 2.0f * 0.5f * glm::length(bounds_->max - bounds_->min) / float(size);
     constants_.shadow = glm::vec4(1.0f / float(size), 1.0f, 1.5f * world_per_texel, 2.0f / float(size));
     shadow_drawn_ = true;
     draw_depth(ctx, map, {{constants_.shadow_from_world, glm::uvec2(0), size}});
@@ -285,6 +289,7 @@ class DeferredKernel final : public NodeKernel {
   };
 
   const uint32_t shadow_budget_, atlas_size_;
+  const bool cull_lights_;
   std::optional<Buffers> buffers_;
   Constants constants_{};
   std::optional<Bounds> bounds_;

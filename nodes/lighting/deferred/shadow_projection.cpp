@@ -7,20 +7,16 @@
 namespace lg {
 
 Bounds scene_bounds(const SceneView& scene) {
-  Bounds b{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+  Bounds b;
   for (const DrawItem& d : scene.draws)
-    for (const glm::vec3& p : scene.mesh_of(d).positions) {
-      const glm::vec3 w = glm::vec3(d.world * glm::vec4(p, 1.0f));
-      b.lo = glm::min(b.lo, w);
-      b.hi = glm::max(b.hi, w);
-    }
-  if (!(b.lo.x <= b.hi.x)) return {glm::vec3(-0.5f), glm::vec3(0.5f)};
+    for (const glm::vec3& p : scene.mesh_of(d).positions) b.add(glm::vec3(d.world * glm::vec4(p, 1.0f)));
+  if (!(b.min.x <= b.max.x)) return {glm::vec3(-0.5f), glm::vec3(0.5f)};
   return b;
 }
 
 glm::mat4 shadow_from_world(const Bounds& bounds, glm::vec3 direction) {
-  const glm::vec3 center = 0.5f * (bounds.lo + bounds.hi);
-  const float radius = std::max(0.5f * glm::length(bounds.hi - bounds.lo), 1e-3f);
+  const glm::vec3 center = bounds.center();
+  const float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
   const glm::vec3 d = glm::normalize(direction);
   const glm::vec3 helper = std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
   const glm::vec3 right = glm::normalize(glm::cross(helper, d));

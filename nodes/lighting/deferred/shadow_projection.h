@@ -6,13 +6,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "runtime/scene/mesh_tools.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
-
-struct Bounds {
-  glm::vec3 lo{0.0f}, hi{0.0f};
-};
 
 // World-space bounds of every draw's vertices; a scene without draws gets a unit box.
 Bounds scene_bounds(const SceneView& scene);

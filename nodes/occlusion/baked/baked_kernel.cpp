@@ -1,9 +1,9 @@
 // occlusion.baked's kernel. Once per asset version (SceneView::version) the meshes' bakes go to
 // the device: vertex bakes as one buffer of (bent normal, k_A) per vertex, lightmaps as one buffer
 // of texels, and for each texel-baked mesh its own vertex buffer with three vertices a triangle
-// whose uv is the corner's lightmap UV. Every frame the "raster" pass draws every mesh with its
-// own depth test, as the G-buffer pass does, so the nearest surface wins in both; "resolve" turns
-// that into ao and bent normals (shaders/baked_resolve.comp).
+// whose uv is the corner's lightmap UV. Every frame the "raster" pass draws every mesh that the
+// camera's frustum touches with its own depth test, as the G-buffer pass does, so the nearest
+// surface wins in both; "resolve" turns that into ao and bent normals (shaders/baked_resolve.comp).
 #include "nodes/occlusion/baked/baked_kernel.h"
 
 #include <glm/mat3x3.hpp>
@@ -25,6 +25,7 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
+#include "runtime/scene/frustum.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -150,9 +151,10 @@ class BakedKernel final : public NodeKernel {
                                       storage_buffer(2, baked_draws_->handle()),
                                       storage_buffer(3, vertex_occlusion_->handle()),
                                       storage_buffer(4, lightmaps_->handle())};
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+    bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+    // As the G-buffer pass: only the draws the camera's frustum touches.
+    for (uint32_t i : visible_draws(scene, ctx.gpu_scene().mesh_bounds(), view_frustum(scene.camera))) {
       const DrawItem& d = scene.draws[i];
-      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       push_constants(cmd, pipeline, i);
       const MeshBake* bake = baked_draws[i].kind == texel_bake ? &meshes_[size_t(d.mesh)] : nullptr;
       if (!bake) {

@@ -1,6 +1,7 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
 #include <algorithm>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
+#include "runtime/scene/frustum.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -20,7 +22,8 @@ namespace {
 
 class GbufferKernel final : public NodeKernel {
  public:
-  explicit GbufferKernel(const PlanNode& node) : cull_backfaces_(param_bool(node, "cull_backfaces")) {}
+  explicit GbufferKernel(const PlanNode& node)
+      : cull_backfaces_(param_bool(node, "cull_backfaces")), frustum_culling_(param_bool(node, "frustum_culling")) {}
 
   void record(PassContext& ctx) override {
     Image* targets[5];
@@ -45,7 +48,11 @@ class GbufferKernel final : public NodeKernel {
     set_viewport(cmd, w, h);
     GpuScene& gpu_scene = ctx.gpu_scene();
     const Pipeline* variants[3][2] = {};  // [Variant][double-sided], looked up once a frame
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+    // Draws outside the camera's frustum are not submitted; `i` still indexes the draw buffer.
+    std::vector<uint32_t> drawn(scene.draws.size());
+    std::iota(drawn.begin(), drawn.end(), 0u);
+    if (frustum_culling_) drawn = visible_draws(scene, gpu_scene.mesh_bounds(), view_frustum(scene.camera));
+    for (uint32_t i : drawn) {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
       const auto maps = material_maps(m);
@@ -100,7 +107,7 @@ class GbufferKernel final : public NodeKernel {
     return ctx.pipelines().graphics(desc);
   }
 
-  bool cull_backfaces_;
+  bool cull_backfaces_, frustum_culling_;
   std::optional<HostBuffer> camera_, draws_;
 };
 

@@ -1,4 +1,5 @@
-// The kernel of scene.gbuffer: rasterizes every draw of the scene into depth, normal, albedo,
+// The kernel of scene.gbuffer: rasterizes every draw of the scene that the camera's frustum
+// touches (runtime/scene/frustum.h) into depth, normal, albedo,
 // roughness/metalness and motion (layout in nodes/common/shaders/gbuffer.glsl), with the glTF
 // metal-rough material (shaders/gbuffer_surface.glsl): its base colour, metallic-roughness,
 // normal and occlusion textures, vertex colours, the MASK alpha test (a pipeline variant with
