@@ -203,7 +203,8 @@ TEST(CompilerSpecialization, ForwardTransparentRunsOnlyForBlendMaterials) {
   ASSERT_EQ(plan.passes.size(), base.passes.size());
   for (size_t p = 0; p < plan.passes.size(); ++p) EXPECT_EQ(plan.passes[p].name, base.passes[p].name);
   ASSERT_EQ(plan.resources.size(), base.resources.size());
-  for (size_t r = 0; r < plan.resources.size(); ++r) EXPECT_EQ(plan.resources[r].desc.name, base.resources[r].desc.name);
+  for (size_t r = 0; r < plan.resources.size(); ++r)
+    EXPECT_EQ(plan.resources[r].desc.name, base.resources[r].desc.name);
   EXPECT_EQ(plan.barriers.size(), base.barriers.size());
 
   CompileOptions blend;

@@ -85,7 +85,8 @@ void LightBuffers::write_lights(const SceneView& scene, int caster, const LocalS
   for (const LocalShadowView& v : local.views)
     views.push_back({v.clip_from_world, glm::vec4(glm::vec2(v.origin), float(v.size), v.texel_per_distance)});
   std::vector<GpuSphere> spheres;
-  for (const auto& l : scene.sphere_lights) spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
+  for (const auto& l : scene.sphere_lights)
+    spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
   std::vector<GpuTube> tubes;
   for (const auto& l : scene.tube_lights)
     tubes.push_back({glm::vec4(l.end0, l.radius), glm::vec4(l.end1, 0.0f), glm::vec4(l.radiance, 0.0f)});
