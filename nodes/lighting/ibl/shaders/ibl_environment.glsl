@@ -13,6 +13,7 @@ layout(binding = 7) uniform samplerCube irradiance_map;
 layout(binding = 8) uniform samplerCube specular_map;
 layout(binding = 9) uniform sampler2D dfg_lut;
 
+// Irradiance at unit normal n from the (cosine-convolved) SH coefficients.
 vec3 sh_irradiance(vec3 n) {
   float y[LG_SH_MAX_COUNT];
   sh_evaluate(n, y);
