@@ -14,7 +14,8 @@ constexpr std::array<std::string_view, static_cast<size_t>(SceneFeature::count)>
     "sphere_lights",      "tube_lights",           "rectangle_lights",
     "area_lights",        "shadow_casting_lights", "local_shadow_casting_lights",
     "environment_light",  "irradiance_volumes",    "reflection_probes",
-    "glossy_materials",   "thin_lens_camera",      "baked_occlusion"};
+    "glossy_materials",   "thin_lens_camera",      "baked_occlusion",
+    "blend_materials"};
 
 // One field of the summary file: where it lives and how it is read.
 struct Field {
@@ -69,6 +70,7 @@ const std::vector<Field>& fields() {
       {"probes", "irradiance_volumes", count_field(&SceneSummary::irradiance_volumes)},
       {"probes", "reflection_probes", count_field(&SceneSummary::reflection_probes)},
       {"materials", "glossy", bool_field(&SceneSummary::glossy_materials)},
+      {"materials", "blend", bool_field(&SceneSummary::blend_materials)},
       {"occlusion", "baked", bool_field(&SceneSummary::baked_occlusion)},
       {"camera", "aperture", length_field(&SceneSummary::aperture)},
       {"camera", "focus_distance", length_field(&SceneSummary::focus_distance)},
@@ -101,6 +103,7 @@ std::string scene_lacks_reason(SceneFeature f) {
     case SceneFeature::glossy_materials: return "the scene has no glossy materials";
     case SceneFeature::thin_lens_camera: return "the camera is a pinhole (aperture 0): nothing is out of focus";
     case SceneFeature::baked_occlusion: return "no mesh in the scene carries baked occlusion";
+    case SceneFeature::blend_materials: return "nothing in the scene is drawn with a BLEND (transparent) material";
     case SceneFeature::count: break;
   }
   return "the scene lacks what this node needs";
@@ -123,6 +126,7 @@ bool SceneSummary::has(SceneFeature f) const {
     case SceneFeature::glossy_materials: return glossy_materials;
     case SceneFeature::thin_lens_camera: return aperture > 0;
     case SceneFeature::baked_occlusion: return baked_occlusion;
+    case SceneFeature::blend_materials: return blend_materials;
     case SceneFeature::count: break;
   }
   return false;

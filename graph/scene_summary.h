@@ -29,6 +29,7 @@ enum class SceneFeature : uint8_t {
   glossy_materials,
   thin_lens_camera,
   baked_occlusion,  // a drawn mesh carries occlusion baked offline (a scene file's "occlusion")
+  blend_materials,  // something is drawn with a glTF alphaMode BLEND (transparent) material
   count
 };
 
@@ -51,6 +52,7 @@ struct SceneSummary {
   int reflection_probes = 0;
   bool glossy_materials = true;
   bool baked_occlusion = false;
+  bool blend_materials = false;
   double aperture = 0;  // lens aperture diameter in metres; 0 is a pinhole camera
   double focus_distance = 5;
 

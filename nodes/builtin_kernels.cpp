@@ -16,6 +16,7 @@
 #include "nodes/post/bloom/bloom_kernel.h"
 #include "nodes/post/dof/dof_kernel.h"
 #include "nodes/post/tonemap/tonemap_kernel.h"
+#include "nodes/scene/forward_transparent/forward_transparent_kernel.h"
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
 namespace lg {
@@ -40,6 +41,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("post.bloom", make_bloom_kernel);
     r.add("post.dof", make_dof_kernel);
     r.add("post.tonemap", make_tonemap_kernel);
+    r.add("scene.forward_transparent", make_forward_transparent_kernel);
     return r;
   }();
   return registry;

@@ -222,11 +222,11 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     if (desc.blend != Blend::none) {
       blend.blendEnable = VK_TRUE;
-      const bool alpha = desc.blend == Blend::alpha;
-      blend.srcColorBlendFactor = alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
-      blend.dstColorBlendFactor = alpha ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+      const bool over = desc.blend != Blend::additive;
+      blend.srcColorBlendFactor = desc.blend == Blend::alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+      blend.dstColorBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
       blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-      blend.dstAlphaBlendFactor = alpha ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+      blend.dstAlphaBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
       blend.colorBlendOp = blend.alphaBlendOp = VK_BLEND_OP_ADD;
     }
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend);

@@ -30,7 +30,9 @@ struct ComputePipelineDesc {
   uint32_t push_constant_bytes = 0;
 };
 
-enum class Blend : uint8_t { none, additive, alpha };
+// additive: src + dst; alpha: src x src alpha + dst x (1 - src alpha); premultiplied: src +
+// dst x (1 - src alpha), for colours already multiplied by their alpha ("over").
+enum class Blend : uint8_t { none, additive, alpha, premultiplied };
 
 struct GraphicsPipelineDesc {
   std::string name{};

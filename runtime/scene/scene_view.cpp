@@ -42,6 +42,7 @@ SceneSummary SceneView::summary() const {
     const PbrMaterial& m = material_of(d);
     // A metallic-roughness texture can only lower the roughness factor and raise no metal above it.
     s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f || m.metallic_roughness_texture.texture >= 0;
+    s.blend_materials |= m.alpha_mode == AlphaMode::blend;
     s.baked_occlusion |=
         d.mesh >= 0 && size_t(d.mesh) < meshes.size() && meshes[size_t(d.mesh)] && meshes[size_t(d.mesh)]->occlusion;
   }

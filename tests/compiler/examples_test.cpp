@@ -81,13 +81,14 @@ TEST(CompilerExamples, EveryExampleCompilesWithEveryScene) {
       EXPECT_FALSE(plan.barriers.empty());
 
       // Nothing is culled in the examples; only depth of field may be bypassed, without a lens,
-      // and the irradiance volume without volumes.
+      // the irradiance volume without volumes, and the transparent surfaces' pass without BLEND
+      // materials.
       for (const auto& n : plan.nodes) {
         EXPECT_NE(n.state, NodeState::Kind::culled) << n.id << ": " << n.reason;
         bool lens = options.scene.aperture > 0, volumes = options.scene.irradiance_volumes > 0;
-        auto expected = (n.type == "post.dof" && !lens) || (n.type == "gi.irradiance_volume" && !volumes)
-                            ? NodeState::Kind::bypassed
-                            : NodeState::Kind::active;
+        bool bypassed = (n.type == "post.dof" && !lens) || (n.type == "gi.irradiance_volume" && !volumes) ||
+                        (n.type == "scene.forward_transparent" && !options.scene.blend_materials);
+        auto expected = bypassed ? NodeState::Kind::bypassed : NodeState::Kind::active;
         EXPECT_EQ(n.state, expected) << n.id << ": " << n.reason;
       }
       for (auto [a, b] : must_precede)

@@ -184,5 +184,39 @@ TEST(CompilerSpecialization, NoEnvironmentBypassesImageBasedLighting) {
   expect_nothing_read_before_written(plan);
 }
 
+// The default graph composites transparent surfaces after the image-based light; a scene with no
+// BLEND material bypasses that node (it forwards ibl's colour, and the plan says why), leaving
+// the passes, resources and barriers the graph had before the node was wired in. Fails without
+// the blend_materials scene feature (the node runs for every scene, or the graph does not load).
+TEST(CompilerSpecialization, ForwardTransparentRunsOnlyForBlendMaterials) {
+  Plan plan = test::compile_example("examples/default.json");
+  const PlanNode* glass = test::plan_node(plan, "glass");
+  ASSERT_NE(glass, nullptr);
+  EXPECT_EQ(glass->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(glass->reason, "nothing in the scene is drawn with a BLEND (transparent) material");
+  EXPECT_EQ(pass_at(plan, "glass/composite"), -1);
+
+  Graph before = test::load_example("examples/default.json");  // tone mapping ibl's colour directly
+  ASSERT_TRUE(test::remove_link_to(before, "tonemap.color"));
+  test::add_link(before, "ibl.color", "tonemap.color");
+  Plan base = test::compile_ok(before, builtin_registry());
+  ASSERT_EQ(plan.passes.size(), base.passes.size());
+  for (size_t p = 0; p < plan.passes.size(); ++p) EXPECT_EQ(plan.passes[p].name, base.passes[p].name);
+  ASSERT_EQ(plan.resources.size(), base.resources.size());
+  for (size_t r = 0; r < plan.resources.size(); ++r)
+    EXPECT_EQ(plan.resources[r].desc.name, base.resources[r].desc.name);
+  EXPECT_EQ(plan.barriers.size(), base.barriers.size());
+
+  CompileOptions blend;
+  blend.scene.blend_materials = true;
+  Plan with_glass = test::compile_ok(test::load_example("examples/default.json"), builtin_registry(), blend);
+  EXPECT_EQ(test::plan_node(with_glass, "glass")->state, NodeState::Kind::active);
+  const int composite = pass_at(with_glass, "glass/composite");
+  ASSERT_GE(composite, 0);
+  EXPECT_LT(pass_at(with_glass, "ibl/shade"), composite);
+  EXPECT_LT(composite, pass_at(with_glass, "tonemap/map"));
+  expect_nothing_read_before_written(with_glass);
+}
+
 }  // namespace
 }  // namespace lg

@@ -132,16 +132,19 @@ TEST(CompilerCull, FileOutputsAreRootsToo) {
 }
 
 TEST(CompilerCull, ANodeThatOnlyFeedsABypassedNodeNamesIt) {
-  // Without an environment, ibl forwards its direct light and needs none of the env nodes.
+  // Without an environment, ibl forwards its direct light and needs none of the env nodes;
+  // without BLEND materials, glass forwards ibl's colour and needs none either.
   SceneSummary dark = default_scene_summary();
   dark.environment = false;
   auto s = run(test::load_example("examples/default.json"), dark);
   EXPECT_EQ(s->after_cull("ibl").kind, Kind::bypassed);
   EXPECT_EQ(s->after_cull("ibl").reason, "the scene has no environment light");
-  for (const char* id : {"sh", "specular", "dfg", "gtao"}) {
+  for (const char* id : {"sh", "specular", "dfg"}) {
     EXPECT_EQ(s->after_cull(id).kind, Kind::culled) << id;
-    EXPECT_EQ(s->after_cull(id).reason, "only 'ibl' uses it, and that node is bypassed") << id;
+    EXPECT_EQ(s->after_cull(id).reason, "only 'glass' and 'ibl' use it, and those nodes are bypassed") << id;
   }
+  EXPECT_EQ(s->after_cull("gtao").kind, Kind::culled);
+  EXPECT_EQ(s->after_cull("gtao").reason, "only 'ibl' uses it, and that node is bypassed");
   // sky feeds sh and specular, which are culled themselves: nothing needs it, no bypass to name.
   EXPECT_EQ(s->after_cull("sky").kind, Kind::culled);
   EXPECT_EQ(s->after_cull("sky").reason, "no output depends on it");

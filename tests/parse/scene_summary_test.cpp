@@ -72,7 +72,7 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
                 "local_shadows": true },
     "environment": { "present": false },
     "probes": { "irradiance_volumes": 4, "reflection_probes": 1000000 },
-    "materials": { "glossy": false },
+    "materials": { "glossy": false, "blend": true },
     "camera": { "aperture": 0.025, "focus_distance": 1.5 }
   })",
                         d);
@@ -90,6 +90,7 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   EXPECT_EQ(s->irradiance_volumes, 4);
   EXPECT_EQ(s->reflection_probes, 1000000);
   EXPECT_FALSE(s->glossy_materials);
+  EXPECT_TRUE(s->blend_materials);
   EXPECT_EQ(s->aperture, 0.025);
   EXPECT_EQ(s->focus_distance, 1.5);
   // And the features follow from them.
@@ -98,6 +99,7 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   EXPECT_TRUE(s->has(SceneFeature::local_shadow_casting_lights));
   EXPECT_FALSE(s->has(SceneFeature::shadow_casting_lights));
   EXPECT_TRUE(s->has(SceneFeature::thin_lens_camera));
+  EXPECT_TRUE(s->has(SceneFeature::blend_materials));
   EXPECT_FALSE(s->has(SceneFeature::environment_light));
 }
 

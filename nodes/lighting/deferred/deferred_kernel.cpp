@@ -1,7 +1,5 @@
 #include "nodes/lighting/deferred/deferred_kernel.h"
 
-#include <algorithm>
-#include <cmath>
 #include <glm/vec4.hpp>
 #include <optional>
 #include <stdexcept>
@@ -11,6 +9,7 @@
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/lighting/deferred/light_buffers.h"
 #include "nodes/lighting/deferred/light_culling.h"
 #include "nodes/lighting/deferred/local_shadows.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
@@ -24,61 +23,12 @@
 namespace lg {
 namespace {
 
-// nodes/lighting/deferred/shaders/lights.glsl
-struct Constants {
-  CameraConstants camera;
-  glm::mat4 shadow_from_world;
-  glm::vec4 shadow;  // 1 / map size, map drawn, normal offset, depth bias
-  uint32_t counts[4];
-  uint32_t counts2[4];
-  glm::vec4 local_shadow;  // 1 when the atlas was drawn, its views' near plane
-};
-struct GpuDirectional {
-  glm::vec4 direction, irradiance;
-};
-struct GpuPoint {
-  glm::vec4 position_range, intensity;
-};
-struct GpuSpot {
-  glm::vec4 position_range, direction_angle_scale, intensity_angle_offset, shadow;
-};
-struct GpuShadowView {
-  glm::mat4 clip_from_world;
-  glm::vec4 tile;
-};
-struct GpuSphere {
-  glm::vec4 center_radius, radiance;
-};
-struct GpuTube {
-  glm::vec4 end0_radius, end1, radiance;
-};
-struct GpuRect {
-  glm::vec4 center_two_sided, half_x, half_y, radiance;
-};
-
-// The cone as glTF's falloff wants it: the ramp is cos(angle) * scale + offset, 0 at the outer
-// cone and 1 at the inner; an inner cone as wide as the outer one is kept 0.001 apart in
-// cosine (the spec's guard), a hard but finite edge.
-GpuSpot gpu_spot(const SpotLightData& l, int first_view, int views) {
-  const float cos_outer = std::cos(l.outer_cone_angle);
-  const float scale = 1.0f / std::max(0.001f, std::cos(l.inner_cone_angle) - cos_outer);
-  return {glm::vec4(l.position, l.range), glm::vec4(l.direction, scale), glm::vec4(l.intensity, -cos_outer * scale),
-          glm::vec4(float(first_view), float(views), 0.0f, 0.0f)};
-}
-
 // One view of a depth pass: a matrix into clip space and the square of the map it draws into.
 struct DepthView {
   glm::mat4 clip_from_world;
   glm::uvec2 origin;
   uint32_t size;
 };
-
-// The first directional light that casts shadows owns the shadow map, or -1.
-int shadow_caster(const SceneView& scene) {
-  for (size_t i = 0; i < scene.directional_lights.size(); ++i)
-    if (scene.directional_lights[i].casts_shadows) return static_cast<int>(i);
-  return -1;
-}
 
 class DeferredKernel final : public NodeKernel {
  public:
@@ -102,25 +52,14 @@ class DeferredKernel final : public NodeKernel {
   }
 
  private:
-  struct Buffers {
-    HostBuffer constants, directional, points, spots, spheres, tubes, rects, worlds, shadow_views;
-    explicit Buffers(Context& gpu, const std::string& id)
-        : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
-          directional(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          points(gpu, id + " point lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          spots(gpu, id + " spot lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          spheres(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          tubes(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          rects(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          worlds(gpu, id + " draw transforms", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-          shadow_views(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
-  };
-
   // Once per frame, before the frame's first pass of this node: the constants and light lists.
   void prepare(PassContext& ctx) {
-    if (prepared_frame_ == ctx.frame_index() && buffers_) return;
+    if (prepared_frame_ == ctx.frame_index() && lights_) return;
     prepared_frame_ = ctx.frame_index();
-    if (!buffers_) buffers_.emplace(ctx.gpu(), ctx.node().id);
+    if (!lights_) {
+      lights_.emplace(ctx.gpu(), ctx.node().id);
+      worlds_.emplace(ctx.gpu(), ctx.node().id + " draw transforms", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    }
     const SceneView& scene = ctx.scene();
     if (bounds_version_ != scene.version || !bounds_) {
       bounds_ = scene_bounds(scene);
@@ -131,52 +70,13 @@ class DeferredKernel final : public NodeKernel {
     // The light lists and the shadow budget see only the lights that reach the view.
     const SceneView lights = lights_in_view(scene, cull_lights_);
     local_ = plan_local_shadows(lights, shadow_budget_, atlas_size_);
-    Constants c{};
+    LightConstants c{};
     if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
+    lights_->write_lights(lights, caster, local_, c);
     constants_ = c;
-
-    std::vector<GpuDirectional> directional;
-    for (size_t i = 0; i < scene.directional_lights.size(); ++i) {
-      const auto& l = scene.directional_lights[i];
-      directional.push_back({glm::vec4(l.direction, int(i) == caster ? 1.0f : 0.0f), glm::vec4(l.irradiance, 0.0f)});
-    }
-    std::vector<GpuPoint> points;
-    for (size_t i = 0; i < lights.point_lights.size(); ++i) {
-      const auto& l = lights.point_lights[i];
-      points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, float(local_.point_first_view[i]))});
-    }
-    std::vector<GpuSpot> spots;
-    for (size_t i = 0; i < lights.spot_lights.size(); ++i)
-      spots.push_back(gpu_spot(lights.spot_lights[i], local_.spot_first_view[i], local_.spot_view_count[i]));
-    std::vector<GpuShadowView> views;
-    for (const LocalShadowView& v : local_.views)
-      views.push_back({v.clip_from_world, glm::vec4(glm::vec2(v.origin), float(v.size), v.texel_per_distance)});
-    std::vector<GpuSphere> spheres;
-    for (const auto& l : scene.sphere_lights)
-      spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
-    std::vector<GpuTube> tubes;
-    for (const auto& l : scene.tube_lights)
-      tubes.push_back({glm::vec4(l.end0, l.radius), glm::vec4(l.end1, 0.0f), glm::vec4(l.radiance, 0.0f)});
-    std::vector<GpuRect> rects;
-    for (const auto& l : scene.rect_lights)
-      rects.push_back({glm::vec4(l.center, l.two_sided ? 1.0f : 0.0f), glm::vec4(l.half_x, 0.0f),
-                       glm::vec4(l.half_y, 0.0f), glm::vec4(l.radiance, 0.0f)});
     std::vector<glm::mat4> worlds;
     for (const DrawItem& d : scene.draws) worlds.push_back(d.world);
-    constants_.counts[0] = uint32_t(directional.size());
-    constants_.counts[1] = uint32_t(points.size());
-    constants_.counts[2] = uint32_t(spheres.size());
-    constants_.counts[3] = uint32_t(tubes.size());
-    constants_.counts2[0] = uint32_t(rects.size());
-    constants_.counts2[1] = uint32_t(spots.size());
-    buffers_->directional.write(directional);
-    buffers_->points.write(points);
-    buffers_->spots.write(spots);
-    buffers_->spheres.write(spheres);
-    buffers_->tubes.write(tubes);
-    buffers_->rects.write(rects);
-    buffers_->worlds.write(worlds);
-    buffers_->shadow_views.write(views);
+    worlds_->write(worlds);
   }
 
   void record_shadows(PassContext& ctx) {
@@ -224,7 +124,7 @@ class DeferredKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    const DescriptorWrite writes[] = {storage_buffer(0, buffers_->worlds.handle())};
+    const DescriptorWrite writes[] = {storage_buffer(0, worlds_->handle())};
     bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
     for (const DepthView& view : views) {
       const VkViewport viewport{float(view.origin.x), float(view.origin.y), float(view.size), float(view.size), 0, 1};
@@ -239,7 +139,7 @@ class DeferredKernel final : public NodeKernel {
     vkCmdEndRendering(cmd);
   }
 
-  // The G-buffer's four surface images at bindings 1 to 4, as lights.glsl declares them.
+  // The G-buffer's four surface images at bindings 1 to 4, as surface.glsl declares them.
   void add_gbuffer(PassContext& ctx, std::vector<DescriptorWrite>& writes) {
     for (int c = 0; c < 4; ++c)
       writes.push_back(sampled_image(uint32_t(1 + c), ctx.image("in.gbuffer", c).view(), ctx.nearest_sampler()));
@@ -251,21 +151,19 @@ class DeferredKernel final : public NodeKernel {
     if (!local_drawn_) constants_.local_shadow = glm::vec4(0.0f);
     Image& color = ctx.image("out.color");
     constants_.camera = camera_constants(ctx.scene().camera, color.desc().width, color.desc().height);
-    buffers_->constants.write_value(constants_);
-    std::vector<DescriptorWrite> writes = {uniform_buffer(0, buffers_->constants.handle())};
+    lights_->constants.write_value(constants_);
+    std::vector<DescriptorWrite> writes;
+    lights_->add_constants(writes);
     add_gbuffer(ctx, writes);
+    writes.push_back(storage_image(5, color.view()));
     // Without a shadow pass (no shadow-casting light) any depth image binds; shadow.y = 0 skips it.
     Image& shadow_map = ctx.has("tmp.shadow_map") ? ctx.image("tmp.shadow_map") : ctx.image("in.gbuffer", 0);
-    writes.push_back(sampled_image(5, shadow_map.view(), ctx.nearest_sampler()));
-    writes.push_back(storage_image(6, color.view()));
-    writes.push_back(storage_buffer(7, buffers_->directional.handle()));
-    writes.push_back(storage_buffer(8, buffers_->points.handle()));
-    writes.push_back(storage_buffer(9, buffers_->spots.handle()));
+    writes.push_back(sampled_image(10, shadow_map.view(), ctx.nearest_sampler()));
     // Without the local shadow pass (no point or spot light casts shadows) any depth image binds;
     // local_shadow.x = 0 skips it.
     Image& atlas = ctx.has("tmp.local_shadow_atlas") ? ctx.image("tmp.local_shadow_atlas") : ctx.image("in.gbuffer", 0);
-    writes.push_back(sampled_image(10, atlas.view(), ctx.nearest_sampler()));
-    writes.push_back(storage_buffer(11, buffers_->shadow_views.handle()));
+    writes.push_back(sampled_image(14, atlas.view(), ctx.nearest_sampler()));
+    lights_->add_direct_lists(writes);
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width,
                      color.desc().height);
   }
@@ -273,12 +171,11 @@ class DeferredKernel final : public NodeKernel {
   void record_area(PassContext& ctx) {
     prepare(ctx);
     Image& color = ctx.image("out.color");
-    std::vector<DescriptorWrite> writes = {uniform_buffer(0, buffers_->constants.handle())};
+    std::vector<DescriptorWrite> writes;
+    lights_->add_constants(writes);
     add_gbuffer(ctx, writes);
     writes.push_back(storage_image(5, color.view()));
-    writes.push_back(storage_buffer(6, buffers_->spheres.handle()));
-    writes.push_back(storage_buffer(7, buffers_->tubes.handle()));
-    writes.push_back(storage_buffer(8, buffers_->rects.handle()));
+    lights_->add_area_lists(writes);
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height);
   }
 
@@ -290,8 +187,9 @@ class DeferredKernel final : public NodeKernel {
 
   const uint32_t shadow_budget_, atlas_size_;
   const bool cull_lights_;
-  std::optional<Buffers> buffers_;
-  Constants constants_{};
+  std::optional<LightBuffers> lights_;
+  std::optional<HostBuffer> worlds_;
+  LightConstants constants_{};
   std::optional<Bounds> bounds_;
   uint64_t bounds_version_ = 0;
   uint64_t prepared_frame_ = ~uint64_t{0};

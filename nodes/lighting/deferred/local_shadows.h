@@ -3,7 +3,7 @@
 // spot one perspective view down its cone; a point light, or a spot wider than 60 degrees,
 // six views along the axes, a cube map), and each view's matrix into its tile. Lights past the
 // budget light without shadows. Plain data: the deferred kernel draws the views and the direct
-// pass (shaders/direct.comp) reads them back.
+// pass (shaders/direct_lights.glsl) reads them back.
 #pragma once
 
 #include <cstdint>
@@ -33,7 +33,7 @@ struct LocalShadowView {
 struct LocalShadows {
   std::vector<LocalShadowView> views;
   // Per light of the SceneView's lists: its first view, or -1 for none; a light has one view
-  // or six (cube faces +X, -X, +Y, -Y, +Z, -Z, the order shaders/direct.comp picks them in).
+  // or six (cube faces +X, -X, +Y, -Y, +Z, -Z, the order shaders/direct_lights.glsl picks them in).
   std::vector<int> point_first_view, spot_first_view, spot_view_count;
 };
 

@@ -55,13 +55,13 @@ class GbufferKernel final : public NodeKernel {
     for (uint32_t i : drawn) {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
+      if (m.alpha_mode == AlphaMode::blend) continue;  // scene.forward_transparent draws it
       const auto maps = material_maps(m);
       DescriptorWrite writes[2 + material_map_count] = {uniform_buffer(0, camera_->handle()),
                                                         storage_buffer(1, draws_->handle())};
       for (uint32_t t = 0; t < material_map_count; ++t)
         writes[2 + t] =
             sampled_image(2 + t, gpu_scene.texture(maps[t]->texture).view(), gpu_scene.sampler(maps[t]->sampling));
-      // BLEND is drawn as opaque until a forward pass for transparent surfaces exists.
       Variant kind = m.alpha_mode == AlphaMode::mask ? masked : textured;
       if (kind == textured && scene.mesh_of(d).colors.empty() &&
           std::all_of(maps.begin(), maps.end(), [](const TextureRef* t) { return t->texture < 0; }))

@@ -5,8 +5,8 @@
 // normal and occlusion textures, vertex colours, the MASK alpha test (a pipeline variant with
 // the discard, so opaque draws keep early depth testing) and double-sided materials drawn
 // without culling; draws without textures or vertex colours take a plain variant that reads
-// the factors only. BLEND materials are drawn as opaque: a forward pass for them is still to
-// come. The emissive texture and factor are not drawn: the G-buffer has no channel for them.
+// the factors only. BLEND materials are skipped: scene.forward_transparent draws them over the
+// lit image. The emissive texture and factor are not drawn: the G-buffer has no channel for them.
 #pragma once
 
 #include <memory>

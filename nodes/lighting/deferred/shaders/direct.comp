@@ -1,102 +1,18 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Directional, point and spot lights on every G-buffer texel, with the shadow map for the first
-// shadow-casting directional light and the local shadow atlas for the point and spot lights
-// the budget gave one; writes (and so clears) the node's output.
+// Directional, point and spot lights (direct_lights.glsl) on every G-buffer texel; writes (and
+// so clears) the node's output.
+#include "nodes/lighting/deferred/shaders/direct_lights.glsl"
 #include "nodes/lighting/deferred/shaders/surface.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 5) uniform sampler2D shadow_map;
-layout(binding = 6, rgba16f) uniform writeonly image2D color;
-layout(std430, binding = 7) readonly buffer Directional { DirectionalLight directional[]; };
-layout(std430, binding = 8) readonly buffer Points { PointLight points[]; };
-layout(std430, binding = 9) readonly buffer Spots { SpotLight spots[]; };
-layout(binding = 10) uniform sampler2D local_shadow_atlas;
-layout(std430, binding = 11) readonly buffer ShadowViews { ShadowView views[]; };
-
-// 3x3 percentage-closer filtering: the fraction of taps nearer the light than p is shadowed.
-// Reversed depth: a larger stored value is nearer the light.
-float sun_visibility(Surface s) {
-  if (shadow.y == 0.0) return 1.0;
-  vec3 offset_p = s.position + s.normal * shadow.z;
-  vec4 clip = shadow_from_world * vec4(offset_p, 1.0);
-  vec2 uv = clip.xy * 0.5 + 0.5;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-  ivec2 size = textureSize(shadow_map, 0);
-  ivec2 center = ivec2(uv * vec2(size));
-  float lit = 0.0;
-  for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) {
-      ivec2 t = clamp(center + ivec2(x, y), ivec2(0), size - 1);
-      lit += texelFetch(shadow_map, t, 0).r > clip.z + shadow.w ? 0.0 : 1.0;
-    }
-  return lit / 9.0;
-}
-
-// The same filter and bias for a point or spot light's view: a normal offset of 1.5 texels and
-// a depth bias of two, in texels of the view at p's distance (a perspective map's texels grow
-// with distance). `first` is the light's first view, `count` 1 or 6 (cube faces +X, -X, +Y,
-// -Y, +Z, -Z: the one of p's major axis from the light).
-float local_visibility(Surface s, vec3 light_position, float first, float count) {
-  if (first < 0.0 || local_shadow.x == 0.0) return 1.0;
-  vec3 d = s.position - light_position;
-  vec3 a = abs(d);
-  int face = a.x >= a.y && a.x >= a.z ? (d.x > 0.0 ? 0 : 1) : a.y >= a.z ? (d.y > 0.0 ? 2 : 3) : (d.z > 0.0 ? 4 : 5);
-  ShadowView view = views[int(first) + (count > 1.0 ? face : 0)];
-  float distance = (view.clip_from_world * vec4(s.position, 1.0)).w;
-  if (distance <= local_shadow.y) return 1.0;  // behind the light or nearer than its map sees
-  float texel = view.tile.w * distance;
-  vec4 clip = view.clip_from_world * vec4(s.position + s.normal * (1.5 * texel), 1.0);
-  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;  // outside a spot's cone
-  // Reversed depth: a stored value above this is nearer the light than p less the bias.
-  float reference = local_shadow.y / max(clip.w - 2.0 * texel, 1e-6);
-  ivec2 lo = ivec2(view.tile.xy), hi = lo + ivec2(view.tile.z) - 1;
-  ivec2 center = lo + ivec2(uv * view.tile.z);
-  float lit = 0.0;
-  for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x)
-      lit += texelFetch(local_shadow_atlas, clamp(center + ivec2(x, y), lo, hi), 0).r > reference ? 0.0 : 1.0;
-  return lit / 9.0;
-}
-
-// A point light's radiance toward the eye: intensity over distance squared, with a smooth
-// window to 0 at the range (Karis 2013; range 0: none) so a cut-off light shows no edge.
-vec3 punctual(Surface s, vec4 position_range, vec3 intensity) {
-  vec3 to_light = position_range.xyz - s.position;
-  float d2 = max(dot(to_light, to_light), 1e-8);
-  float range = position_range.w;
-  float window = range > 0.0 ? pow(clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0), 2.0) : 1.0;
-  return brdf_cosine(s, to_light * inversesqrt(d2)) * intensity * (window / d2);
-}
+layout(binding = 5, rgba16f) uniform writeonly image2D color;
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(texel, imageSize(color)))) return;
   Surface s;
-  vec3 radiance = vec3(0.0);
-  if (read_surface(texel, s)) {
-    for (uint i = 0; i < counts.x; ++i) {
-      DirectionalLight light = directional[i];
-      float visibility = light.direction.w > 0.0 ? sun_visibility(s) : 1.0;
-      radiance += brdf_cosine(s, -light.direction.xyz) * light.irradiance.rgb * visibility;
-    }
-    for (uint i = 0; i < counts.y; ++i) {
-      PointLight light = points[i];
-      float visibility = local_visibility(s, light.position_range.xyz, light.intensity.w, 6.0);
-      radiance += punctual(s, light.position_range, light.intensity.rgb * visibility);
-    }
-    for (uint i = 0; i < counts2.y; ++i) {
-      SpotLight light = spots[i];
-      vec3 l = normalize(light.position_range.xyz - s.position);
-      // glTF KHR_lights_punctual's falloff: the square of a linear ramp in the cosine of the
-      // angle to the axis, 0 at the outer cone and 1 from the inner cone in.
-      float ramp = clamp(dot(light.direction_angle_scale.xyz, -l) * light.direction_angle_scale.w +
-                             light.intensity_angle_offset.w, 0.0, 1.0);
-      float visibility = local_visibility(s, light.position_range.xyz, light.shadow.x, light.shadow.y);
-      radiance += punctual(s, light.position_range, light.intensity_angle_offset.rgb * (ramp * ramp * visibility));
-    }
-  }
+  vec3 radiance = read_surface(texel, s) ? direct_radiance(s) : vec3(0.0);
   imageStore(color, texel, vec4(finite_or_zero(radiance), 1.0));
 }

@@ -1,5 +1,6 @@
-// The light lists of the deferred node (std430, one buffer per kind; deferred_kernel.cpp fills
-// them from the scene) and the constants its passes share.
+// The light lists of the deferred node (std430, one buffer per kind; light_buffers.cpp fills
+// them from the scene) and the constants its passes share, at binding 0. The lists' bindings
+// are in direct_lights.glsl and area_lights.glsl; scene.forward_transparent binds the same.
 #ifndef LG_DEFERRED_LIGHTS_GLSL
 #define LG_DEFERRED_LIGHTS_GLSL
 
@@ -48,11 +49,5 @@ layout(std140, binding = 0) uniform Constants {
   uvec4 counts2;           // rectangles, spots
   vec4 local_shadow;       // 1 when the local shadow atlas was drawn, the views' near plane
 };
-
-// Surfaces the G-buffer holds: depth > 0 (0 is the far plane, where no surface was drawn).
-layout(binding = 1) uniform sampler2D gbuffer_depth;
-layout(binding = 2) uniform sampler2D gbuffer_normal;
-layout(binding = 3) uniform sampler2D gbuffer_albedo;
-layout(binding = 4) uniform sampler2D gbuffer_material;
 
 #endif

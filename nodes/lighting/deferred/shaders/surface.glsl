@@ -7,6 +7,12 @@
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
 
+// Surfaces the G-buffer holds: depth > 0 (0 is the far plane, where no surface was drawn).
+layout(binding = 1) uniform sampler2D gbuffer_depth;
+layout(binding = 2) uniform sampler2D gbuffer_normal;
+layout(binding = 3) uniform sampler2D gbuffer_albedo;
+layout(binding = 4) uniform sampler2D gbuffer_material;
+
 // False where no surface was drawn (the far plane) or the depth is not a finite number.
 bool read_surface(ivec2 texel, out Surface s) {
   float depth = texelFetch(gbuffer_depth, texel, 0).r;

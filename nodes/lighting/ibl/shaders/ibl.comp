@@ -9,7 +9,7 @@
 // bent normal; with AO alone, the irradiance at the normal. Either is scaled by the visibility:
 // the AO input where linked, else the cone's own, through Jimenez et al.'s multi-bounce fit
 // with the diffuse albedo when asked. Specular: the prefiltered map at mip roughness (mips - 1)
-// along the reflection, through the split sum (ibl_shading.glsl), occluded when asked by the
+// along the reflection, through the split sum (ibl_environment.glsl), occluded when asked by the
 // cone-cone intersection with bent normals, else by Lagarde's form from AO. The material's own
 // occlusion (its glTF occlusion texture, in the G-buffer albedo's alpha) multiplies the
 // diffuse visibility and, through Lagarde's form, the specular: image-based light only, never
@@ -19,8 +19,8 @@
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
+#include "nodes/lighting/ibl/shaders/ibl_environment.glsl"
 #include "nodes/lighting/ibl/shaders/ibl_occlusion.glsl"
-#include "nodes/lighting/ibl/shaders/ibl_shading.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -30,10 +30,6 @@ layout(binding = 2) uniform sampler2D normal_tex;
 layout(binding = 3) uniform sampler2D albedo_tex;    // sRGB: the sampler decodes it; a: material occlusion
 layout(binding = 4) uniform sampler2D material_tex;  // r: perceptual roughness, g: metalness
 layout(binding = 5) uniform sampler2D direct_tex;
-layout(std430, binding = 6) readonly buffer Sh { vec4 sh[]; };
-layout(binding = 7) uniform samplerCube irradiance_map;
-layout(binding = 8) uniform samplerCube specular_map;
-layout(binding = 9) uniform sampler2D dfg_lut;
 layout(binding = 10) uniform sampler2D ao_tex;
 layout(binding = 11) uniform sampler2D bent_normal_tex;
 layout(binding = 12, rgba16f) uniform writeonly image2D color;
@@ -44,15 +40,6 @@ layout(push_constant) uniform Push {
   uint flags;
   float intensity;
 };
-
-vec3 sh_irradiance(vec3 n) {
-  float y[LG_SH_MAX_COUNT];
-  sh_evaluate(n, y);
-  int count = min(int(sh.length()), LG_SH_MAX_COUNT);
-  vec3 e = vec3(0.0);
-  for (int k = 0; k < count; ++k) e += sh[k].rgb * y[k];
-  return max(e, vec3(0.0));  // ringing must not light negatively
-}
 
 // Irradiance through the visibility cone about `bent` per unit visibility (ibl_occlusion.glsl):
 // bands 0 to 2 by the cone's moments, band 4 by its zonal factor about the bent normal.
@@ -122,11 +109,8 @@ void main() {
   }
   vec3 diffuse = diffuse_color * irradiance_over_pi * occlusion;
 
-  float mips = float(textureQueryLevels(specular_map));
   vec3 r = reflect(-v, n);
-  vec3 prefiltered = textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
-  vec2 scale_bias = textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
-  vec3 specular = split_sum_specular(prefiltered, f0, scale_bias);
+  vec3 specular = environment_specular(r, n_dot_v, f0, roughness);
   if ((flags & 16u) != 0u && cones)
     specular *= specular_occlusion_from_cone(n, r, bent, cone_cos, roughness);
   else if ((flags & 16u) != 0u && (flags & 4u) != 0u)

@@ -22,7 +22,12 @@ struct Draw {
   vec4 uv_transforms[8];
 };
 
+// A fragment stage that reads a larger block at binding 0 starting with the camera
+// (scene.forward_transparent: lighting.deferred's constants) defines LG_CAMERA_DECLARED; std140
+// puts the camera at offset 0 in both, so the vertex stage's view of the buffer stays right.
+#ifndef LG_CAMERA_DECLARED
 layout(std140, binding = 0) uniform CameraBlock { Camera camera; };
+#endif
 layout(std430, binding = 1) readonly buffer Draws { Draw draws[]; };
 layout(push_constant) uniform DrawIndex { uint draw_index; };
 

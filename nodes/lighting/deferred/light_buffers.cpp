@@ -1,0 +1,129 @@
+// LightBuffers: the scene's lights in the std430 layouts of shaders/lights.glsl.
+#include "nodes/lighting/deferred/light_buffers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lg {
+namespace {
+
+struct GpuDirectional {
+  glm::vec4 direction, irradiance;
+};
+struct GpuPoint {
+  glm::vec4 position_range, intensity;
+};
+struct GpuSpot {
+  glm::vec4 position_range, direction_angle_scale, intensity_angle_offset, shadow;
+};
+struct GpuShadowView {
+  glm::mat4 clip_from_world;
+  glm::vec4 tile;
+};
+struct GpuSphere {
+  glm::vec4 center_radius, radiance;
+};
+struct GpuTube {
+  glm::vec4 end0_radius, end1, radiance;
+};
+struct GpuRect {
+  glm::vec4 center_two_sided, half_x, half_y, radiance;
+};
+
+// The cone as glTF's falloff wants it: the ramp is cos(angle) * scale + offset, 0 at the outer
+// cone and 1 at the inner; an inner cone as wide as the outer one is kept 0.001 apart in
+// cosine (the spec's guard), a hard but finite edge.
+GpuSpot gpu_spot(const SpotLightData& l, int first_view, int views) {
+  const float cos_outer = std::cos(l.outer_cone_angle);
+  const float scale = 1.0f / std::max(0.001f, std::cos(l.inner_cone_angle) - cos_outer);
+  return {glm::vec4(l.position, l.range), glm::vec4(l.direction, scale), glm::vec4(l.intensity, -cos_outer * scale),
+          glm::vec4(float(first_view), float(views), 0.0f, 0.0f)};
+}
+
+}  // namespace
+
+int shadow_caster(const SceneView& scene) {
+  for (size_t i = 0; i < scene.directional_lights.size(); ++i)
+    if (scene.directional_lights[i].casts_shadows) return static_cast<int>(i);
+  return -1;
+}
+
+LocalShadows no_local_shadows(const SceneView& scene) {
+  LocalShadows out;
+  out.point_first_view.assign(scene.point_lights.size(), -1);
+  out.spot_first_view.assign(scene.spot_lights.size(), -1);
+  out.spot_view_count.assign(scene.spot_lights.size(), 0);
+  return out;
+}
+
+LightBuffers::LightBuffers(Context& gpu, const std::string& id)
+    : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      directional_(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      points_(gpu, id + " point lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      spots_(gpu, id + " spot lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      spheres_(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      tubes_(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      rects_(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
+
+void LightBuffers::write_lights(const SceneView& scene, int caster, const LocalShadows& local,
+                                LightConstants& constants_out) {
+  std::vector<GpuDirectional> directional;
+  for (size_t i = 0; i < scene.directional_lights.size(); ++i) {
+    const auto& l = scene.directional_lights[i];
+    directional.push_back({glm::vec4(l.direction, int(i) == caster ? 1.0f : 0.0f), glm::vec4(l.irradiance, 0.0f)});
+  }
+  std::vector<GpuPoint> points;
+  for (size_t i = 0; i < scene.point_lights.size(); ++i) {
+    const auto& l = scene.point_lights[i];
+    points.push_back({glm::vec4(l.position, l.range), glm::vec4(l.intensity, float(local.point_first_view[i]))});
+  }
+  std::vector<GpuSpot> spots;
+  for (size_t i = 0; i < scene.spot_lights.size(); ++i)
+    spots.push_back(gpu_spot(scene.spot_lights[i], local.spot_first_view[i], local.spot_view_count[i]));
+  std::vector<GpuShadowView> views;
+  for (const LocalShadowView& v : local.views)
+    views.push_back({v.clip_from_world, glm::vec4(glm::vec2(v.origin), float(v.size), v.texel_per_distance)});
+  std::vector<GpuSphere> spheres;
+  for (const auto& l : scene.sphere_lights)
+    spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
+  std::vector<GpuTube> tubes;
+  for (const auto& l : scene.tube_lights)
+    tubes.push_back({glm::vec4(l.end0, l.radius), glm::vec4(l.end1, 0.0f), glm::vec4(l.radiance, 0.0f)});
+  std::vector<GpuRect> rects;
+  for (const auto& l : scene.rect_lights)
+    rects.push_back({glm::vec4(l.center, l.two_sided ? 1.0f : 0.0f), glm::vec4(l.half_x, 0.0f),
+                     glm::vec4(l.half_y, 0.0f), glm::vec4(l.radiance, 0.0f)});
+  constants_out.counts[0] = uint32_t(directional.size());
+  constants_out.counts[1] = uint32_t(points.size());
+  constants_out.counts[2] = uint32_t(spheres.size());
+  constants_out.counts[3] = uint32_t(tubes.size());
+  constants_out.counts2[0] = uint32_t(rects.size());
+  constants_out.counts2[1] = uint32_t(spots.size());
+  directional_.write(directional);
+  points_.write(points);
+  spots_.write(spots);
+  spheres_.write(spheres);
+  tubes_.write(tubes);
+  rects_.write(rects);
+  shadow_views_.write(views);
+}
+
+void LightBuffers::add_constants(std::vector<DescriptorWrite>& writes) const {
+  writes.push_back(uniform_buffer(0, constants.handle()));
+}
+
+void LightBuffers::add_direct_lists(std::vector<DescriptorWrite>& writes) const {
+  writes.push_back(storage_buffer(11, directional_.handle()));
+  writes.push_back(storage_buffer(12, points_.handle()));
+  writes.push_back(storage_buffer(13, spots_.handle()));
+  writes.push_back(storage_buffer(15, shadow_views_.handle()));
+}
+
+void LightBuffers::add_area_lists(std::vector<DescriptorWrite>& writes) const {
+  writes.push_back(storage_buffer(16, spheres_.handle()));
+  writes.push_back(storage_buffer(17, tubes_.handle()));
+  writes.push_back(storage_buffer(18, rects_.handle()));
+}
+
+}  // namespace lg

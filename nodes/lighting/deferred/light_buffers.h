@@ -1,0 +1,55 @@
+// The lights as lighting.deferred's shaders read them (shaders/lights.glsl, direct_lights.glsl,
+// area_lights.glsl): the constants block and one storage buffer per kind of light, filled from
+// the scene. scene.forward_transparent lights its surfaces from the same buffers.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <string>
+#include <vector>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/lighting/deferred/local_shadows.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+
+// shaders/lights.glsl's Constants (std140).
+struct LightConstants {
+  CameraConstants camera;
+  glm::mat4 shadow_from_world;
+  glm::vec4 shadow;  // 1 / map size, map drawn, normal offset, depth bias
+  uint32_t counts[4];
+  uint32_t counts2[4];
+  glm::vec4 local_shadow;  // 1 when the atlas was drawn, its views' near plane
+};
+
+// The first directional light that casts shadows owns the shadow map, or -1.
+int shadow_caster(const SceneView& scene);
+
+// No light with a view in the local shadow atlas (what a pass without the atlas lights with).
+LocalShadows no_local_shadows(const SceneView& scene);
+
+class LightBuffers {
+ public:
+  LightBuffers(Context& gpu, const std::string& id);
+
+  // Writes every light list: `caster` (shadow_caster()) marked as using the shadow map, the
+  // point and spot lights with their views of `local`; sets the counts in `constants`.
+  void write_lights(const SceneView& scene, int caster, const LocalShadows& local, LightConstants& constants);
+
+  // The constants at binding 0 and the lists at the bindings direct_lights.glsl and
+  // area_lights.glsl declare (the shadow map and atlas images are the caller's: 10 and 14).
+  void add_constants(std::vector<DescriptorWrite>& writes) const;
+  void add_direct_lists(std::vector<DescriptorWrite>& writes) const;
+  void add_area_lists(std::vector<DescriptorWrite>& writes) const;
+
+  HostBuffer constants;
+
+ private:
+  HostBuffer directional_, points_, spots_, spheres_, tubes_, rects_, shadow_views_;
+};
+
+}  // namespace lg

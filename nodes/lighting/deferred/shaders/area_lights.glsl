@@ -1,0 +1,67 @@
+// Sphere, tube and rectangle lights on a surface: exact diffuse irradiance
+// (area_light_formulas.glsl) and representative-point GGX specular with energy normalisation
+// (area_light_specular.glsl). lighting.deferred's area pass and scene.forward_transparent's
+// surfaces; bindings 16 to 18, the constants at 0 (lights.glsl).
+#ifndef LG_AREA_LIGHTS_GLSL
+#define LG_AREA_LIGHTS_GLSL
+
+#include "nodes/common/shaders/brdf.glsl"
+#include "nodes/lighting/deferred/shaders/area_light_formulas.glsl"
+#include "nodes/lighting/deferred/shaders/area_light_specular.glsl"
+#include "nodes/lighting/deferred/shaders/lights.glsl"
+
+layout(std430, binding = 16) readonly buffer Spheres { SphereLight spheres[]; };
+layout(std430, binding = 17) readonly buffer Tubes { TubeLight tubes[]; };
+layout(std430, binding = 18) readonly buffer Rects { RectLight rects[]; };
+
+vec3 reflection_dir(Surface s) {
+  return reflect(-s.view, s.normal);
+}
+
+// The representative point shaded as a point light whose intensity is the light's radiance
+// times its projected area toward the point (`area`, m^2).
+vec3 area_specular(Surface s, RepresentativePoint rp, vec3 radiance, float area) {
+  if (rp.normalization <= 0.0) return vec3(0.0);
+  float d2 = max(rp.distance * rp.distance, 1e-8);
+  return specular_term(s, rp.direction, s.alpha) * radiance * (area / d2 * rp.normalization);
+}
+
+// Radiance toward the eye from every sphere, tube and rectangle light.
+vec3 area_radiance(Surface s) {
+  vec3 diffuse_brdf = s.diffuse_color / LG_PI;
+  vec3 r = reflection_dir(s);
+  vec3 added = vec3(0.0);
+  for (uint i = 0; i < counts.z; ++i) {
+    SphereLight l = spheres[i];
+    vec3 c = l.center_radius.xyz;
+    float radius = l.center_radius.w;
+    added += diffuse_brdf * l.radiance.rgb * sphere_irradiance(c, radius, s.position, s.normal);
+    RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
+    added += area_specular(s, rp, l.radiance.rgb, LG_PI * radius * radius);
+  }
+  for (uint i = 0; i < counts.w; ++i) {
+    TubeLight l = tubes[i];
+    vec3 a = l.end0_radius.xyz, b = l.end1.xyz;
+    float radius = l.end0_radius.w;
+    added += diffuse_brdf * l.radiance.rgb * tube_irradiance(a, b, radius, s.position, s.normal);
+    RepresentativePoint rp = tube_specular_point(a, b, radius, s.position, r, s.alpha);
+    // Seen from the side a capsule shows its caps' disc and the cylinder's length x diameter.
+    vec3 axis = b - a;
+    float len = length(axis);
+    float sin_side = len > 0.0 ? length(cross(axis / len, rp.direction)) : 0.0;
+    added += area_specular(s, rp, l.radiance.rgb, LG_PI * radius * radius + 2.0 * radius * len * sin_side);
+  }
+  for (uint i = 0; i < counts2.x; ++i) {
+    RectLight l = rects[i];
+    vec3 c = l.center_two_sided.xyz, hx = l.half_x.xyz, hy = l.half_y.xyz;
+    bool two_sided = l.center_two_sided.w > 0.0;
+    added += diffuse_brdf * l.radiance.rgb * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
+    RepresentativePoint rp = rect_specular_point(c, hx, hy, two_sided, s.position, r, s.alpha);
+    vec3 normal = cross(hx, hy);
+    float facing = abs(dot(normalize(normal), rp.direction));
+    added += area_specular(s, rp, l.radiance.rgb, 4.0 * length(normal) * facing);
+  }
+  return added;
+}
+
+#endif

@@ -1,0 +1,46 @@
+// The environment as lighting.ibl and scene.forward_transparent read it, at bindings 6 to 9:
+// SH irradiance coefficients (env.sh_project with convolve_cosine) or an irradiance map holding
+// E / pi (env.irradiance), the prefiltered specular map and the DFG table, with the shading of
+// ibl_shading.glsl (nodes/lighting/ibl/ibl_reference.h is the same in double precision).
+#ifndef LG_IBL_ENVIRONMENT_GLSL
+#define LG_IBL_ENVIRONMENT_GLSL
+
+#include "nodes/env/common/shaders/sh_basis.glsl"
+#include "nodes/lighting/ibl/shaders/ibl_shading.glsl"
+
+layout(std430, binding = 6) readonly buffer Sh { vec4 sh[]; };
+layout(binding = 7) uniform samplerCube irradiance_map;
+layout(binding = 8) uniform samplerCube specular_map;
+layout(binding = 9) uniform sampler2D dfg_lut;
+
+// Irradiance at unit normal n from the (cosine-convolved) SH coefficients.
+vec3 sh_irradiance(vec3 n) {
+  float y[LG_SH_MAX_COUNT];
+  sh_evaluate(n, y);
+  int count = min(int(sh.length()), LG_SH_MAX_COUNT);
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < count; ++k) e += sh[k].rgb * y[k];
+  return max(e, vec3(0.0));  // ringing must not light negatively
+}
+
+// Specular image-based light along the reflection r: the prefiltered map at mip roughness
+// (mips - 1), through the split sum.
+vec3 environment_specular(vec3 r, float n_dot_v, vec3 f0, float roughness) {
+  float mips = float(textureQueryLevels(specular_map));
+  vec3 prefiltered = textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
+  vec2 scale_bias = textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
+  return split_sum_specular(prefiltered, f0, scale_bias);
+}
+
+// Image-based light leaving a surface toward v with no occlusion but its material's own
+// (`occlusion`, 1: none), which darkens the diffuse part and, by Lagarde's form, the specular
+// as lighting.ibl does. Diffuse from SH when `from_sh`, else from the irradiance map.
+vec3 environment_light(vec3 n, vec3 v, vec3 diffuse_color, vec3 f0, float roughness, float occlusion, bool from_sh) {
+  float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
+  vec3 irradiance_over_pi = from_sh ? sh_irradiance(n) / LG_SH_PI : textureLod(irradiance_map, n, 0.0).rgb;
+  vec3 specular = environment_specular(reflect(-v, n), n_dot_v, f0, roughness);
+  if (occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, occlusion, roughness);
+  return diffuse_color * irradiance_over_pi * occlusion + specular;
+}
+
+#endif
