@@ -23,6 +23,7 @@
 #include <random>
 
 #include "nodes/common/camera_constants.h"
+#include "nodes/common/gbuffer_normal.h"
 #include "nodes/env/brdf_lut/dfg_reference.h"
 #include "nodes/env/sh_project/sh_reference.h"
 #include "nodes/lighting/ibl/ibl_kernel.h"
@@ -83,7 +84,8 @@ Scene make_scene(uint64_t seed, bool furnace) {
     const bool sky = t % 7 == 3;
     s.depth.insert(s.depth.end(), {sky ? 0.0f : float(0.2 + 0.7 * unit(rng)), 0, 0, 1});
     const glm::dvec3 n = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
-    s.normal.insert(s.normal.end(), {float(n.x * 0.5 + 0.5), float(n.y * 0.5 + 0.5), float(n.z * 0.5 + 0.5), 1});
+    const glm::dvec3 stored = encode_gbuffer_normal(n);
+    s.normal.insert(s.normal.end(), {float(stored.x), float(stored.y), float(stored.z), 1});
     for (int c = 0; c < 3; ++c) s.albedo.push_back(furnace ? 1.0f : float(0.05 + 0.95 * unit(rng)));
     s.albedo.push_back(1);
     s.material.insert(s.material.end(), {float(unit(rng)), furnace ? 1.0f : float(unit(rng)), 0, 1});
@@ -210,7 +212,7 @@ class IblGpuTest : public GpuTest {
     const glm::dvec3 direct = full ? texel3(s.direct, t) : glm::dvec3(0.0);
     if (s.depth[4 * t] <= 0) return direct + s.specular_base;
     const glm::dvec3 p = world_position(s.camera, x, y, s.depth[4 * t]);
-    const glm::dvec3 n = glm::normalize(texel3(s.normal, t) * 2.0 - 1.0);
+    const glm::dvec3 n = decode_gbuffer_normal(&s.normal[4 * t]);
     const glm::dvec3 v = glm::normalize(eye - p);
     const IblSurface surface{texel3(s.albedo, t), s.material[4 * t], s.material[4 * t + 1]};
     const double n_dot_v = std::clamp(glm::dot(n, v), 1e-4, 1.0);

@@ -65,6 +65,10 @@ struct Comparison {
   double relative_mean_error = 0.0;  // |mean(traced) - mean(raster)| / mean(raster)
   double relative_rms_error = 0.0;   // RMS over pixels of (traced - raster), over mean(raster)
   double relative_noise = 0.0;       // RMS of the traced standard errors, over mean(raster)
+  // The RMS difference without the reference's own noise (independent errors add in squares).
+  double systematic() const {
+    return std::sqrt(std::max(0.0, relative_rms_error * relative_rms_error - relative_noise * relative_noise));
+  }
 };
 
 Comparison compare(const World& world, uint32_t spp) {
@@ -97,18 +101,16 @@ Comparison compare(const World& world, uint32_t spp) {
           std::sqrt(noise / (3.0 * n)) / raster_mean};
 }
 
-// The reference's own noise is taken out of the per-pixel RMS difference (independent errors
-// add in squares): what is left, at most 4% of the mean, is the deferred node's approximation
-// (representative-point specular, 8-bit albedo, half-float output); the means agree to 1.5%.
+// The reference's own noise is taken out of the per-pixel RMS difference: what is left, at most 4% of the mean, is the
+// deferred node's approximation (representative-point specular, 8-bit albedo, half-float output); the means agree
+// to 1.5%.
 TEST(DirectAgreement, ReferenceDirectLightMatchesTheDeferredNode) {
   for (float roughness : {1.0f, 0.5f}) {
     const Comparison c = compare(lit_floor(roughness), 128);
-    const double systematic =
-        std::sqrt(std::max(0.0, c.relative_rms_error * c.relative_rms_error - c.relative_noise * c.relative_noise));
     std::printf("roughness %.1f: mean %.4f, rms %.4f, reference noise %.4f, rest %.4f (relative)\n", roughness,
-                c.relative_mean_error, c.relative_rms_error, c.relative_noise, systematic);
+                c.relative_mean_error, c.relative_rms_error, c.relative_noise, c.systematic());
     EXPECT_LT(c.relative_mean_error, 0.015) << "roughness " << roughness;
-    EXPECT_LT(systematic, 0.04) << "roughness " << roughness;
+    EXPECT_LT(c.systematic(), 0.04) << "roughness " << roughness;
   }
 }
 
@@ -128,24 +130,32 @@ World asset_under_point_light(const char* name) {
 // The same comparison on a glTF asset (examples/gltf/metal-rough-plane.gltf): its metalness and
 // roughness come from a texture read through texcoord set 1 with a transform (left half rough
 // dielectric, right half metal of roughness 0.2), its base colour is multiplied by vertex
-// colours. The image means agree to 0.07% (1% allowed: the G-buffer's 8-bit albedo); a reference
-// that read the material's factors alone (roughness 1, metal 1) is 85% off. Per pixel the
-// highlight of the metal half differs (RMS 38% of the mean, deterministic), and under the asset's
-// own head-on sun the metal half is 3% brighter in the reference than in the deferred node: both
-// come from the G-buffer's rgb10a2 normal, which reads the plane's normal back tilted by 1.4 mrad
-// (docs/path-tracer.md), so the sun is left out and only the mean is asserted.
-TEST(DirectAgreement, TexturedAssetMatchesTheDeferredNodeOnAverage) {
-  const Comparison c = compare(asset_under_point_light("metal-rough-plane.gltf"), 4);
-  std::printf("metal-rough plane: mean %.4f, rms %.4f, reference noise %.4f (relative)\n", c.relative_mean_error,
-              c.relative_rms_error, c.relative_noise);
-  EXPECT_EQ(c.relative_noise, 0.0);  // delta lights only
-  EXPECT_LT(c.relative_mean_error, 0.01);
+// colours, under the point light and under the asset's own head-on sun (a disk of the default
+// angular radius, so the reference is noisy there: its noise is taken out). A reference that read
+// the material's factors alone (roughness 1, metal 1) is 85% off in the mean. The metal's
+// narrow lobe (alpha 0.04) resolves the G-buffer's normal: before the normal was stored with
+// 0 on a step of its 10-bit channel (nodes/common/shaders/gbuffer.glsl) the plane's normal read
+// back tilted by 1.4 mrad, and the per-pixel RMS difference was 38% of the mean under the point
+// light, and the sun's image 2.2% off in the mean; now 2.1% and 0.2%. Allowed: 1% in the mean
+// (the G-buffer's 8-bit sRGB albedo is 0.1%) and 5% RMS per pixel beyond the reference's noise
+// (half-float output and the 8-bit roughness texel on the highlight's steep flank).
+TEST(DirectAgreement, TexturedAssetMatchesTheDeferredNode) {
+  const World own_sun = load_world(LUMAGRAPH_SOURCE_DIR "/examples/gltf/metal-rough-plane.gltf");
+  for (const auto& [name, world] :
+       {std::pair<const char*, World>{"point light", asset_under_point_light("metal-rough-plane.gltf")},
+        {"its own sun", own_sun}}) {
+    const Comparison c = compare(world, 4);
+    std::printf("metal-rough plane under %s: mean %.4f, rms %.4f, reference noise %.4f, rest %.4f (relative)\n", name,
+                c.relative_mean_error, c.relative_rms_error, c.relative_noise, c.systematic());
+    EXPECT_LT(c.relative_mean_error, 0.01) << name;
+    EXPECT_LT(c.systematic(), 0.05) << name;
+  }
 }
 
 // examples/gltf/normal-mapped-plane.gltf (a constant normal texel tilting the normal 30 degrees
 // toward +u, tangents generated by the importer, rough white-grey dielectric) under the same
-// point light: the reference bends its normal as the G-buffer does. The means agree to 0.27% and
-// the per-pixel RMS difference is 0.43% of the mean (a reference without the normal map: 6.3% and
+// point light: the reference bends its normal as the G-buffer does. The means agree to 0.29% and
+// the per-pixel RMS difference is 0.45% of the mean (a reference without the normal map: 6.3% and
 // 23%). Allowed: 1% for each, the G-buffer's 8-bit sRGB albedo (0.1%), its rgb10a2 normal (about
 // 1 mrad) and half-float output, not a wrong frame, which moves the light by tens of percent.
 TEST(DirectAgreement, NormalMappedAssetMatchesTheDeferredNode) {

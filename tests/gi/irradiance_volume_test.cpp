@@ -16,6 +16,7 @@
 #include "graph/graph_io.h"
 #include "nodes/builtin_schemas.h"
 #include "nodes/common/camera_constants.h"
+#include "nodes/common/gbuffer_normal.h"
 #include "nodes/gi/probes/probe_bake.h"
 #include "nodes/gi/probes/probe_lookup.h"
 #include "runtime/scene/load_world.h"
@@ -89,8 +90,7 @@ PixelInput pixel_input(const Frame& f, const CameraConstants& c, uint32_t x, uin
   const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) * glm::dvec2(c.viewport.z, c.viewport.w) * 2.0 - 1.0;
   const glm::dvec4 p = glm::dmat4(c.inverse_view_projection) * glm::dvec4(ndc, depth, 1.0);
   in.position = glm::dvec3(p) / p.w;
-  const glm::dvec3 n = glm::dvec3(f.normal[i], f.normal[i + 1], f.normal[i + 2]) * 2.0 - 1.0;
-  if (glm::length(n) > 1e-3) in.normal = glm::normalize(n);
+  in.normal = decode_gbuffer_normal(&f.normal[i]);
   return in;
 }
 

@@ -18,12 +18,13 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "nodes/common/gbuffer_normal.h"
 #include "nodes/env/common/sh_basis.h"
 #include "nodes/env/sh_project/sh_reference.h"
 #include "nodes/lighting/ibl/ibl_occlusion.h"
-#include "nodes/raytrace/parallel_for.h"
-#include "nodes/raytrace/camera_pixels.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
+#include "nodes/raytrace/camera_pixels.h"
+#include "nodes/raytrace/parallel_for.h"
 #include "tests/env/env_test_support.h"
 #include "tests/lighting/occluded_irradiance.h"
 #include "tests/occlusion/ao_render.h"

@@ -11,10 +11,11 @@
 #include <limits>
 
 #include "api/renderer.h"
+#include "nodes/common/gbuffer_normal.h"
 #include "nodes/occlusion/bake/volume_lookup.h"
-#include "nodes/raytrace/world_mesh.h"
-#include "nodes/raytrace/camera_pixels.h"
 #include "nodes/occlusion/reference/scene_reference.h"
+#include "nodes/raytrace/camera_pixels.h"
+#include "nodes/raytrace/world_mesh.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/occlusion/ao_render.h"
 #include "tests/occlusion/occlusion_worlds.h"
@@ -43,9 +44,7 @@ Pixel pixel_at(const AoRender& r, const CameraPixels& camera, uint32_t x, uint32
   if (!(depth > 0.0)) return p;
   p.surface = true;
   p.position = glm::dvec3(camera.world_from_view() * glm::dvec4(camera.view_position(x + 0.5, y + 0.5, depth), 1.0));
-  const glm::dvec3 n =
-      glm::dvec3(r.gbuffer.normal[4 * i], r.gbuffer.normal[4 * i + 1], r.gbuffer.normal[4 * i + 2]) * 2.0 - 1.0;
-  p.normal = glm::length(n) > 1e-3 ? glm::normalize(n) : glm::dvec3(0, 0, 1);
+  p.normal = decode_gbuffer_normal(&r.gbuffer.normal[4 * i]);
   return p;
 }
 

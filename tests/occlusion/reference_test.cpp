@@ -7,10 +7,11 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "nodes/raytrace/ray_scene.h"
-#include "nodes/raytrace/camera_pixels.h"
+#include "nodes/common/gbuffer_normal.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
 #include "nodes/occlusion/reference/scene_reference.h"
+#include "nodes/raytrace/camera_pixels.h"
+#include "nodes/raytrace/ray_scene.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/occlusion/occlusion_worlds.h"
@@ -96,7 +97,8 @@ TEST(AoReference, HeightFieldOfAnOpenPlaneIsUnoccluded) {
       const glm::dvec3 v = glm::dvec3(pixels.view_from_world() * glm::dvec4(p, 1.0));
       const size_t i = size_t(y) * kWidth + x;
       g.depth[i] = float(pixels.near_plane() / -v.z);
-      g.normal[4 * i + 1] = 1.0f;  // (0, 1, 0) encoded as n * 0.5 + 0.5
+      const glm::dvec3 up = encode_gbuffer_normal({0.0, 1.0, 0.0});
+      for (int c = 0; c < 3; ++c) g.normal[4 * i + c] = float(up[c]);
       ++on_plane;
     }
   for (double max_distance : {double(INFINITY), 0.5}) {

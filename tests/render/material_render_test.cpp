@@ -17,6 +17,7 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "nodes/common/gbuffer_normal.h"
 #include "runtime/scene/mesh_import.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -85,7 +86,10 @@ class Frame {
     const auto& v = found->second;
     return {v[i], v[i + 1], v[i + 2], v[i + 3]};
   }
-  glm::vec3 normal(int x, int y) { return glm::normalize(glm::vec3(at("gbuf.gbuffer.normal", x, y)) * 2.0f - 1.0f); }
+  glm::vec3 normal(int x, int y) {
+    const glm::vec4 stored = at("gbuf.gbuffer.normal", x, y);
+    return glm::vec3(decode_gbuffer_normal(&stored.x));
+  }
 
  private:
   static RendererOptions options() {

@@ -6,8 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "nodes/raytrace/parallel_for.h"
+#include "nodes/common/gbuffer_normal.h"
 #include "nodes/raytrace/camera_pixels.h"
+#include "nodes/raytrace/parallel_for.h"
 
 namespace lg {
 namespace {
@@ -76,12 +77,6 @@ class HeightField {
 };
 
 }  // namespace
-
-glm::dvec3 decode_gbuffer_normal(const float* rgba) {
-  const glm::dvec3 n = glm::dvec3(rgba[0], rgba[1], rgba[2]) * 2.0 - 1.0;
-  const double length = glm::length(n);
-  return length > 1e-3 ? n / length : glm::dvec3(0.0, 0.0, 1.0);
-}
 
 AoImage trace_height_field_reference(const CameraView& camera, const GbufferReadback& gbuffer,
                                      const AoSettings& settings, uint32_t stride) {

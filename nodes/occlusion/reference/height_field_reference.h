@@ -17,7 +17,7 @@ namespace lg {
 struct GbufferReadback {
   uint32_t width = 0, height = 0;
   std::vector<float> depth;   // device depth, one per pixel (0: nothing there)
-  std::vector<float> normal;  // RGBA per pixel as stored: n * 0.5 + 0.5 (world space)
+  std::vector<float> normal;  // RGBA per pixel as stored (nodes/common/gbuffer_normal.h), world space
 };
 
 // Pixels whose x and y are multiples of `stride` get a reference; the rest stay NaN (a 1280x720
@@ -28,8 +28,5 @@ struct GbufferReadback {
 // buffers do not hold width x height pixels.
 AoImage trace_height_field_reference(const CameraView& camera, const GbufferReadback& gbuffer,
                                      const AoSettings& settings, uint32_t stride = 1);
-
-// The G-buffer's normal decoding (nodes/common/shaders/gbuffer.glsl): zero length gives +z.
-glm::dvec3 decode_gbuffer_normal(const float* rgba);
 
 }  // namespace lg
