@@ -37,7 +37,8 @@ const std::map<std::string, KindInfo, std::less<>>& kinds() {
            {"normal", "rgb10a2", 4},
            {"albedo", "rgba8_srgb", 4},
            {"material", "rg8", 2},
-           {"motion", "rg16f", 4}}}}}},
+           {"motion", "rg16f", 4},
+           {"emissive", "rgba16f", 8}}}}}},
   };
   return table;
 }

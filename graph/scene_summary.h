@@ -28,8 +28,9 @@ enum class SceneFeature : uint8_t {
   reflection_probes,
   glossy_materials,
   thin_lens_camera,
-  baked_occlusion,  // a drawn mesh carries occlusion baked offline (a scene file's "occlusion")
-  blend_materials,  // something is drawn with a glTF alphaMode BLEND (transparent) material
+  baked_occlusion,     // a drawn mesh carries occlusion baked offline (a scene file's "occlusion")
+  blend_materials,     // something is drawn with a glTF alphaMode BLEND (transparent) material
+  emissive_materials,  // something is drawn with a material that emits light (emissive factor above 0)
   count
 };
 
@@ -53,6 +54,7 @@ struct SceneSummary {
   bool glossy_materials = true;
   bool baked_occlusion = false;
   bool blend_materials = false;
+  bool emissive_materials = false;
   double aperture = 0;  // lens aperture diameter in metres; 0 is a pinhole camera
   double focus_distance = 5;
 

@@ -43,6 +43,8 @@ SceneSummary SceneView::summary() const {
     // A metallic-roughness texture can only lower the roughness factor and raise no metal above it.
     s.glossy_materials |= m.roughness < 0.9f || m.metalness > 0.0f || m.metallic_roughness_texture.texture >= 0;
     s.blend_materials |= m.alpha_mode == AlphaMode::blend;
+    // The emissive texture multiplies the factor, so a factor of 0 emits nothing.
+    s.emissive_materials |= m.emissive.r > 0.0f || m.emissive.g > 0.0f || m.emissive.b > 0.0f;
     s.baked_occlusion |=
         d.mesh >= 0 && size_t(d.mesh) < meshes.size() && meshes[size_t(d.mesh)] && meshes[size_t(d.mesh)]->occlusion;
   }

@@ -2,6 +2,8 @@
 // plan, the plan says why, and what is left still reads only what it wrote.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "graph/plan_format.h"
 #include "tests/compiler/compiler_fixtures.h"
 
@@ -39,8 +41,10 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   EXPECT_EQ(light->state, NodeState::Kind::active);
   const std::pair<std::string, std::string> no_local_shadows{"local_shadows",
                                                              "no point or spot light in the scene casts shadows"};
+  const std::pair<std::string, std::string> no_emission{"emission",
+                                                        "nothing in the scene is drawn with an emissive material"};
   EXPECT_EQ(dropped(plan, "light"), (std::vector<std::pair<std::string, std::string>>{
-                                        no_local_shadows, {"area", "the scene has no area lights"}}));
+                                        no_local_shadows, {"area", "the scene has no area lights"}, no_emission}));
   EXPECT_EQ(pass_at(plan, "light/area"), -1);
   EXPECT_GE(pass_at(plan, "light/direct"), 0);
   // light.color is now written once, by direct, and read by ibl.
@@ -61,7 +65,7 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   // The default room has a sphere and a tube light: the pass stays.
   Plan room = test::compile_example("examples/default.json");
   EXPECT_GE(pass_at(room, "light/area"), 0);
-  EXPECT_EQ(dropped(room, "light"), (std::vector<std::pair<std::string, std::string>>{no_local_shadows}));
+  EXPECT_EQ(dropped(room, "light"), (std::vector<std::pair<std::string, std::string>>{no_local_shadows, no_emission}));
 }
 
 TEST(CompilerSpecialization, PinholeCameraBypassesDepthOfField) {
@@ -133,7 +137,8 @@ TEST(CompilerSpecialization, NoShadowCastersDropsTheShadowPass) {
       Plan plan = test::compile_ok(test::load_example(path), builtin_registry(), o);
       EXPECT_EQ(dropped(plan, "light"), (std::vector<std::pair<std::string, std::string>>{
                                             {"shadows", "no light in the scene casts shadows"},
-                                            {"local_shadows", "no point or spot light in the scene casts shadows"}}));
+                                            {"local_shadows", "no point or spot light in the scene casts shadows"},
+                                            {"emission", "nothing in the scene is drawn with an emissive material"}}));
       EXPECT_EQ(pass_at(plan, "light/shadows"), -1);
       // The shadow map is neither drawn nor sampled, so it takes no memory.
       int map = resource_at(plan, "light/shadow_map");
@@ -167,6 +172,27 @@ TEST(CompilerSpecialization, LocalShadowsCostNothingWithoutPointOrSpotShadows) {
     EXPECT_GE(lit.resources[resource_at(lit, "light/local_shadow_atlas")].placement.block, 0);
     expect_nothing_read_before_written(lit);
   }
+}
+
+// The emission pass adds the G-buffer's emissive target onto the lit image only for scenes that
+// draw an emissive material; otherwise the plan drops it with the reason.
+TEST(CompilerSpecialization, EmissionPassRunsOnlyForEmissiveMaterials) {
+  Plan plain = test::compile_example("examples/default.json");
+  EXPECT_EQ(pass_at(plain, "light/emission"), -1);
+  const auto drops = dropped(plain, "light");
+  EXPECT_NE(std::find(drops.begin(), drops.end(),
+                      std::pair<std::string, std::string>{"emission",
+                                                          "nothing in the scene is drawn with an emissive material"}),
+            drops.end());
+
+  CompileOptions emissive;
+  emissive.scene.emissive_materials = true;
+  Plan lit = test::compile_ok(test::load_example("examples/default.json"), builtin_registry(), emissive);
+  const int emission = pass_at(lit, "light/emission");
+  ASSERT_GE(emission, 0);
+  EXPECT_LT(pass_at(lit, "light/direct"), emission);
+  EXPECT_LT(emission, pass_at(lit, "ibl/shade"));
+  expect_nothing_read_before_written(lit);
 }
 
 TEST(CompilerSpecialization, NoEnvironmentBypassesImageBasedLighting) {

@@ -65,13 +65,18 @@ struct Comparison {
   double relative_mean_error = 0.0;  // |mean(traced) - mean(raster)| / mean(raster)
   double relative_rms_error = 0.0;   // RMS over pixels of (traced - raster), over mean(raster)
   double relative_noise = 0.0;       // RMS of the traced standard errors, over mean(raster)
+  // The RMS over pixels whose 3x3 neighbourhood is all drawn (not black) in the raster image: away
+  // from silhouettes against the dark, where the raster path covers a pixel by its centre and the
+  // reference by the share of its area.
+  double relative_interior_rms_error = 0.0;
   // The RMS difference without the reference's own noise (independent errors add in squares).
   double systematic() const {
     return std::sqrt(std::max(0.0, relative_rms_error * relative_rms_error - relative_noise * relative_noise));
   }
 };
 
-Comparison compare(const World& world, uint32_t spp) {
+// lighting.deferred's image against the reference's `aov` (its direct light unless said).
+Comparison compare(const World& world, uint32_t spp, ReferenceAov aov = ReferenceAov::direct) {
   RendererOptions options;
   options.device.validation = true;
   options.alias = false;  // light.color is read back after the frame
@@ -86,8 +91,8 @@ Comparison compare(const World& world, uint32_t spp) {
   PathTracerOptions o;
   o.width = kFrame.width, o.height = kFrame.height, o.samples_per_pixel = spp, o.max_bounces = 1;
   const ReferenceImage traced = trace_reference(scene, o);
-  const auto& mean = traced.mean_of(ReferenceAov::direct);
-  const auto& error = traced.error_of(ReferenceAov::direct);
+  const auto& mean = traced.mean_of(aov);
+  const auto& error = traced.error_of(aov);
   double raster_sum = 0.0, traced_sum = 0.0, squared = 0.0, noise = 0.0;
   const size_t n = traced.pixel_count();
   for (size_t i = 0; i < n; ++i)
@@ -97,8 +102,25 @@ Comparison compare(const World& world, uint32_t spp) {
       noise += double(error[i][c]) * error[i][c];
     }
   const double raster_mean = raster_sum / (3.0 * n);
+  const auto drawn = [&](int x, int y) {
+    const size_t i = size_t(y) * kFrame.width + size_t(x);
+    return raster[4 * i] + raster[4 * i + 1] + raster[4 * i + 2] > 0.0f;
+  };
+  double interior_squared = 0.0;
+  size_t interior = 0;
+  for (int y = 1; y + 1 < int(kFrame.height); ++y)
+    for (int x = 1; x + 1 < int(kFrame.width); ++x) {
+      bool all = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) all = all && drawn(x + dx, y + dy);
+      if (!all) continue;
+      const size_t i = size_t(y) * kFrame.width + size_t(x);
+      for (int c = 0; c < 3; ++c) interior_squared += std::pow(mean[i][c] - raster[4 * i + c], 2.0);
+      ++interior;
+    }
   return {std::abs(traced_sum - raster_sum) / raster_sum, std::sqrt(squared / (3.0 * n)) / raster_mean,
-          std::sqrt(noise / (3.0 * n)) / raster_mean};
+          std::sqrt(noise / (3.0 * n)) / raster_mean,
+          interior > 0 ? std::sqrt(interior_squared / (3.0 * double(interior))) / raster_mean : 0.0};
 }
 
 // The reference's own noise is taken out of the per-pixel RMS difference: what is left, at most 4% of the mean, is the
@@ -165,6 +187,27 @@ TEST(DirectAgreement, NormalMappedAssetMatchesTheDeferredNode) {
   EXPECT_EQ(c.relative_noise, 0.0);  // delta lights only
   EXPECT_LT(c.relative_mean_error, 0.01);
   EXPECT_LT(c.relative_rms_error, 0.01);
+}
+
+// examples/gltf/emissive-surface.gltf (an emissive texture of orange and blue texels times a
+// factor times KHR_materials_emissive_strength 4) with its sun removed: what lighting.deferred
+// writes is then the emission alone, which must be the reference's emission AOV. The means
+// agree to 0.7% (without the emission pass the image is black: 100%). Allowed: 2%, for the
+// texture's 8-bit sRGB texels and half-float output (0.1%) and the reference averaging the
+// texture over each pixel where the raster path samples its centre. Per pixel they do not agree
+// yet, and this is not asserted: away from the outline the RMS difference is 40% of the mean,
+// because lavapipe's anisotropic filtering blurs this 2x2 texture magnified 20 times toward its
+// 1x1 mip (18% with anisotropy off, still lower in contrast than the bilinear reference, and
+// with a visible seam along the triangles' shared edge): a finding about texture sampling, left open.
+TEST(DirectAgreement, EmissionMatchesTheReference) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/gltf/emissive-surface.gltf");
+  std::vector<Entity> suns;
+  world.each<DirectionalLight>([&](Entity e, DirectionalLight&) { suns.push_back(e); });
+  for (Entity e : suns) world.destroy(e);
+  const Comparison c = compare(world, 4, ReferenceAov::emission);
+  std::printf("emissive surface: mean %.4f, rms %.4f (away from the outline %.4f), reference noise %.4f (relative)\n",
+              c.relative_mean_error, c.relative_rms_error, c.relative_interior_rms_error, c.relative_noise);
+  EXPECT_LT(c.relative_mean_error, 0.02);
 }
 
 }  // namespace

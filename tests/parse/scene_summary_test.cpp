@@ -1,6 +1,8 @@
 // Scene summaries (`lumagraph compile --scene FILE`): the example scenes read, keys left out keep
 // the default scene's values, and every wrong key or value is reported at its line and column
 // with its JSON pointer, all of them at once.
+#include "graph/scene_summary.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,7 +10,6 @@
 #include <vector>
 
 #include "graph/json_reader.h"
-#include "graph/scene_summary.h"
 #include "parse_test_support.h"
 
 namespace lg {
@@ -72,7 +73,7 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
                 "local_shadows": true },
     "environment": { "present": false },
     "probes": { "irradiance_volumes": 4, "reflection_probes": 1000000 },
-    "materials": { "glossy": false, "blend": true },
+    "materials": { "glossy": false, "blend": true, "emissive": true },
     "camera": { "aperture": 0.025, "focus_distance": 1.5 }
   })",
                         d);
@@ -91,6 +92,7 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   EXPECT_EQ(s->reflection_probes, 1000000);
   EXPECT_FALSE(s->glossy_materials);
   EXPECT_TRUE(s->blend_materials);
+  EXPECT_TRUE(s->emissive_materials);
   EXPECT_EQ(s->aperture, 0.025);
   EXPECT_EQ(s->focus_distance, 1.5);
   // And the features follow from them.
@@ -100,6 +102,7 @@ TEST(ParseSceneSummary, EveryFieldIsRead) {
   EXPECT_FALSE(s->has(SceneFeature::shadow_casting_lights));
   EXPECT_TRUE(s->has(SceneFeature::thin_lens_camera));
   EXPECT_TRUE(s->has(SceneFeature::blend_materials));
+  EXPECT_TRUE(s->has(SceneFeature::emissive_materials));
   EXPECT_FALSE(s->has(SceneFeature::environment_light));
 }
 
@@ -157,7 +160,9 @@ struct SummaryCase {
   std::string error;  // the whole diagnostic, as printed
 };
 
-void PrintTo(const SummaryCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const SummaryCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class ParseSceneSummaryError : public testing::TestWithParam<SummaryCase> {};
 
@@ -174,7 +179,8 @@ INSTANTIATE_TEST_SUITE_P(
                     "s.json:1:1: error: missing \"format\": \"lumagraph-scene-summary/1\""},
         SummaryCase{"GraphFormat", "{\n  \"format\": \"lumagraph/1\"\n}",
                     "s.json:2:13: error: expected \"lumagraph-scene-summary/1\" (/format)"},
-        SummaryCase{"FormatNotAString", "{\n  \"format\": 1\n}", "s.json:2:13: error: expected \"lumagraph-scene-summary/1\" (/format)"},
+        SummaryCase{"FormatNotAString", "{\n  \"format\": 1\n}",
+                    "s.json:2:13: error: expected \"lumagraph-scene-summary/1\" (/format)"},
         SummaryCase{"RootIsAnArray", "\n  []", "s.json:2:3: error: expected a scene summary object, found an array"},
         SummaryCase{"SectionIsANumber", "{\"format\": \"lumagraph-scene-summary/1\",\n \"lights\": 2}",
                     "s.json:2:12: error: expected an object, found a number (/lights)"},
@@ -185,10 +191,12 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ParseSceneSummary, LoadingAFileNamesItInErrors) {
   parse_test::TempDir dir;
   std::string path = dir.file("scene.json");
-  parse_test::write_text(path, "{\n  \"format\": \"lumagraph-scene-summary/1\",\n  \"lights\": { \"point\": true }\n}\n");
+  parse_test::write_text(path,
+                         "{\n  \"format\": \"lumagraph-scene-summary/1\",\n  \"lights\": { \"point\": true }\n}\n");
   Diagnostics d(path);
   EXPECT_FALSE(load_scene_summary(path, d));
-  EXPECT_EQ(lines(d), std::vector<std::string>{path + ":3:24: error: expected a whole number from 0 to 1000000 (/lights/point)"});
+  EXPECT_EQ(lines(d),
+            std::vector<std::string>{path + ":3:24: error: expected a whole number from 0 to 1000000 (/lights/point)"});
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // How the G-buffer stores a surface (written by scene.gbuffer, read by every lighting pass):
 // the normal in rgb10a2 (below), albedo in rgba8 sRGB (the sampler decodes it) with the
 // material's ambient occlusion (glTF occlusion texture; 1: none) in its alpha, which sRGB leaves
-// linear, perceptual roughness and metalness in rg8, motion as uv(now) - uv(last frame) in rg16f.
+// linear, perceptual roughness and metalness in rg8, motion as uv(now) - uv(last frame) in rg16f,
+// emitted radiance in rgba16f.
 // nodes/common/gbuffer_normal.h is the C++ twin of the normal's encoding.
 #ifndef LG_GBUFFER_GLSL
 #define LG_GBUFFER_GLSL

@@ -47,6 +47,8 @@ class DeferredKernel final : public NodeKernel {
       record_direct(ctx);
     else if (pass == "area")
       record_area(ctx);
+    else if (pass == "emission")
+      record_emission(ctx);
     else
       throw std::logic_error("lighting.deferred has no pass '" + pass + "'");
   }
@@ -178,6 +180,17 @@ class DeferredKernel final : public NodeKernel {
     lights_->add_area_lists(writes);
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height);
   }
+
+  void record_emission(PassContext& ctx) {
+    Image& color = ctx.image("out.color");
+    const DescriptorWrite writes[] = {
+        sampled_image(0, ctx.image("in.gbuffer", gbuffer_emissive).view(), ctx.nearest_sampler()),
+        storage_image(1, color.view())};
+    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/emission.comp", writes, color.desc().width,
+                     color.desc().height);
+  }
+
+  static constexpr int gbuffer_emissive = 5;  // the bundle's component (graph/port_type.cpp)
 
   struct ShadowPush {
     glm::mat4 shadow_from_world;

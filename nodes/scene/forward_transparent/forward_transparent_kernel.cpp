@@ -10,6 +10,7 @@
 #include "nodes/lighting/deferred/light_buffers.h"
 #include "nodes/scene/forward_transparent/blend_order.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
+#include "nodes/scene/gbuffer/material_textures.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
@@ -75,11 +76,8 @@ class ForwardTransparentKernel final : public NodeKernel {
     for (uint32_t i : blend_draws_back_to_front(scene, centers_)) {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
-      const auto maps = material_maps(m);
       writes.resize(shared_write_count_);
-      for (uint32_t t = 0; t < material_map_count; ++t)
-        writes.push_back(
-            sampled_image(2 + t, gpu_scene.texture(maps[t]->texture).view(), gpu_scene.sampler(maps[t]->sampling)));
+      add_material_textures(gpu_scene, m, writes);
       const Pipeline& pipeline = draw_pipeline(ctx, color.desc().format, m.double_sided);
       bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       push_constants(cmd, pipeline, i);
@@ -89,7 +87,7 @@ class ForwardTransparentKernel final : public NodeKernel {
   }
 
  private:
-  // What every draw binds (forward.frag's bindings but the material's textures at 2 to 5).
+  // What every draw binds (forward.frag's bindings but the material's textures).
   // Where an input is unused, any resource of its kind binds: the settings' flags skip it.
   std::vector<DescriptorWrite> shared_writes(PassContext& ctx) {
     Image& depth = ctx.image("in.gbuffer", 0);
@@ -130,7 +128,7 @@ class ForwardTransparentKernel final : public NodeKernel {
     desc.name = ctx.pass().name;
     desc.vertex_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.vert");
     desc.fragment_shader = node_shader("nodes/scene/forward_transparent/shaders/forward.frag");
-    for (uint32_t b = 0; b <= 20; ++b) desc.bindings.push_back({b, binding_type(b)});
+    for (uint32_t b = 0; b <= 21; ++b) desc.bindings.push_back({b, binding_type(b)});
     desc.push_constant_bytes = sizeof(uint32_t);
     use_gpu_vertices(desc, true);
     desc.cull = double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
@@ -140,7 +138,8 @@ class ForwardTransparentKernel final : public NodeKernel {
   }
 
   // forward.frag's bindings: constants 0 and settings 20 uniform; draws 1, SH 6 and the light
-  // lists (11 to 13, 15 to 18) storage buffers; the rest sampled images.
+  // lists (11 to 13, 15 to 18) storage buffers; the rest sampled images (the material's
+  // textures at material_texture_bindings among them).
   static VkDescriptorType binding_type(uint32_t b) {
     if (b == 0 || b == 20) return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     if (b == 1 || b == 6 || (b >= 11 && b <= 13) || (b >= 15 && b <= 18)) return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;

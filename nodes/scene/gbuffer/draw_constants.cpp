@@ -8,7 +8,8 @@
 namespace lg {
 
 std::array<const TextureRef*, material_map_count> material_maps(const PbrMaterial& m) {
-  return {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture, &m.occlusion_texture};
+  return {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture, &m.occlusion_texture,
+          &m.emissive_texture};
 }
 
 void uv_transform_rows(const TextureRef& ref, glm::vec4 rows[2]) {
@@ -31,6 +32,7 @@ std::vector<DrawConstants> draw_constants(const SceneView& scene) {
     c.material = {m.roughness, m.metalness, m.normal_texture.texture >= 0 ? m.normal_scale : 0.0f,
                   m.occlusion_strength};
     c.alpha = {m.alpha_mode == AlphaMode::mask ? m.alpha_cutoff : 0.0f, 0.0f, 0.0f, 0.0f};
+    c.emissive = glm::vec4(m.emissive, 0.0f);
     const auto maps = material_maps(m);
     for (int t = 0; t < material_map_count; ++t) uv_transform_rows(*maps[size_t(t)], &c.uv_transforms[2 * t]);
   }

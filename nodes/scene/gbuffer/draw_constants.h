@@ -1,6 +1,6 @@
 // Per-draw constants of passes that rasterize the scene's meshes as the G-buffer pass does
 // (nodes/scene/gbuffer/shaders/draw.glsl, std430): world and last frame's world matrices, the
-// normal matrix, and the draw's material: factors, alpha test, and per texture its uv transform
+// normal matrix, and the draw's material: factors, alpha test, emission, and per texture its uv transform
 // and texcoord set.
 #pragma once
 
@@ -14,13 +14,21 @@
 namespace lg {
 
 // The material's textures in the order of DrawConstants::uv_transforms (and draw.glsl).
-enum MaterialTexture : int { base_color_map, metallic_roughness_map, normal_map, occlusion_map, material_map_count };
+enum MaterialTexture : int {
+  base_color_map,
+  metallic_roughness_map,
+  normal_map,
+  occlusion_map,
+  emissive_map,
+  material_map_count
+};
 
 struct DrawConstants {
   glm::mat4 world, previous_world, normal_matrix;
   glm::vec4 base_color;
   glm::vec4 material;  // perceptual roughness, metalness, normal scale (0: no normal map), occlusion strength
   glm::vec4 alpha;     // x: alpha cutoff of MASK materials (0 otherwise)
+  glm::vec4 emissive;  // rgb: emitted radiance, multiplies the emissive texture
   // Per MaterialTexture, the two rows of KHR_texture_transform's 2x3 matrix (uv' = M (u, v, 1)),
   // the texcoord set (0 or 1) in the first row's w, 1 in the second's where the texture exists.
   glm::vec4 uv_transforms[2 * material_map_count];

@@ -9,6 +9,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
+#include "nodes/scene/gbuffer/material_textures.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
@@ -26,8 +27,8 @@ class GbufferKernel final : public NodeKernel {
       : cull_backfaces_(param_bool(node, "cull_backfaces")), frustum_culling_(param_bool(node, "frustum_culling")) {}
 
   void record(PassContext& ctx) override {
-    Image* targets[5];
-    for (int c = 0; c < 5; ++c) targets[c] = &ctx.image("out.gbuffer", c);  // depth, normal, albedo, material, motion
+    Image* targets[gbuffer_targets];
+    for (int c = 0; c < gbuffer_targets; ++c) targets[c] = &ctx.image("out.gbuffer", c);
     const uint32_t w = targets[0]->desc().width, h = targets[0]->desc().height;
     const SceneView& scene = ctx.scene();
     if (!camera_) {
@@ -37,8 +38,8 @@ class GbufferKernel final : public NodeKernel {
     camera_->write_value(camera_constants(scene.camera, w, h));
     draws_->write(draw_constants(scene));
 
-    VkRenderingAttachmentInfo colors[4];
-    for (int c = 0; c < 4; ++c) colors[c] = cleared_attachment(targets[c + 1]->view(), {});
+    VkRenderingAttachmentInfo colors[gbuffer_targets - 1];
+    for (int c = 1; c < gbuffer_targets; ++c) colors[c - 1] = cleared_attachment(targets[c]->view(), {});
     VkRenderingAttachmentInfo depth =
         cleared_attachment(targets[0]->view(), {.depthStencil = {0.0f, 0}});  // reversed Z: 0 is infinity
     const VkRenderingInfo rendering = rendering_info(w, h, colors, &depth);
@@ -56,13 +57,10 @@ class GbufferKernel final : public NodeKernel {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
       if (m.alpha_mode == AlphaMode::blend) continue;  // scene.forward_transparent draws it
-      const auto maps = material_maps(m);
-      DescriptorWrite writes[2 + material_map_count] = {uniform_buffer(0, camera_->handle()),
-                                                        storage_buffer(1, draws_->handle())};
-      for (uint32_t t = 0; t < material_map_count; ++t)
-        writes[2 + t] =
-            sampled_image(2 + t, gpu_scene.texture(maps[t]->texture).view(), gpu_scene.sampler(maps[t]->sampling));
+      std::vector<DescriptorWrite> writes = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle())};
+      add_material_textures(gpu_scene, m, writes);
       Variant kind = m.alpha_mode == AlphaMode::mask ? masked : textured;
+      const auto maps = material_maps(m);
       if (kind == textured && scene.mesh_of(d).colors.empty() &&
           std::all_of(maps.begin(), maps.end(), [](const TextureRef* t) { return t->texture < 0; }))
         kind = plain;
@@ -77,6 +75,9 @@ class GbufferKernel final : public NodeKernel {
   }
 
  private:
+  // Depth, then the colour targets: normal, albedo, material, motion, emissive (graph/port_type.cpp).
+  static constexpr int gbuffer_targets = 6;
+
   // Shader variants (gbuffer_surface.glsl): factors only for draws without textures or vertex
   // colours (fewer inputs to interpolate), the whole material, or the whole material with the
   // alpha test.
@@ -94,14 +95,14 @@ class GbufferKernel final : public NodeKernel {
                                                    : "nodes/scene/gbuffer/shaders/gbuffer.vert");
     desc.fragment_shader = node_shader(fragment_shaders[kind]);
     desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-    for (uint32_t t = 0; t < material_map_count; ++t)
-      desc.bindings.push_back({2 + t, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    for (uint32_t binding : material_texture_bindings)
+      desc.bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     desc.push_constant_bytes = sizeof(uint32_t);
     use_gpu_vertices(desc, kind != plain);
     // Meshes wind counter-clockwise seen from outside; the projection flips y for Vulkan, which
     // keeps that winding counter-clockwise in framebuffer terms: the pipeline's default front face.
     desc.cull = cull_backfaces_ && !double_sided ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
-    for (int c = 1; c < 5; ++c) desc.color_formats.push_back(targets[c]->desc().format);
+    for (int c = 1; c < gbuffer_targets; ++c) desc.color_formats.push_back(targets[c]->desc().format);
     desc.depth_format = targets[0]->desc().format;
     desc.depth_test = desc.depth_write = true;
     return ctx.pipelines().graphics(desc);

@@ -4,7 +4,7 @@
 // gbuffer.vert), its material sampled as the G-buffer samples it (gbuffer_material.glsl) and
 // lit as opaque surfaces are: lighting.deferred's directional, point, spot (direct_lights.glsl)
 // and area lights (area_lights.glsl), and lighting.ibl's environment (ibl_environment.glsl)
-// with the material's own occlusion. Out: premultiplied radiance x alpha and alpha, alpha the
+// with the material's own occlusion, plus its emission. Out: premultiplied radiance x alpha and alpha, alpha the
 // base colour's (factor x texture x vertex colour), for "over" blending (ONE,
 // ONE_MINUS_SRC_ALPHA). Behind the G-buffer's depth the fragment is discarded; nothing writes
 // depth. Shadow maps are not read: the constants say none was drawn.
@@ -41,5 +41,6 @@ void main() {
   ivec2 depth_texel = ivec2(gl_FragCoord.xy * camera.viewport.zw * vec2(textureSize(scene_depth, 0)));
   if (gl_FragCoord.z < texelFetch(scene_depth, depth_texel, 0).r) discard;  // reversed Z: behind
   float alpha = clamp(m.base.a, 0.0, 1.0);
-  out_color = vec4(finite_or_zero(radiance) * alpha, alpha);
+  // Alpha is the share of the pixel the surface covers, so its emission is weighed by it too.
+  out_color = vec4(finite_or_zero(radiance + m.emission) * alpha, alpha);
 }

@@ -9,6 +9,7 @@
 #define LG_METALLIC_ROUGHNESS_MAP 1
 #define LG_NORMAL_MAP 2
 #define LG_OCCLUSION_MAP 3
+#define LG_EMISSIVE_MAP 4
 
 struct Draw {
   mat4 world;
@@ -17,9 +18,10 @@ struct Draw {
   vec4 base_color;     // linear RGBA, multiplies the texture and the vertex colour
   vec4 material;       // perceptual roughness, metalness, normal scale (0: no normal map), occlusion strength
   vec4 alpha;          // x: alpha cutoff of MASK materials
+  vec4 emissive;       // rgb: emitted radiance, multiplies the emissive texture
   // Per texture two rows of its 2x3 uv transform; the first row's w is its texcoord set, the
   // second's 1 where the material has the texture.
-  vec4 uv_transforms[8];
+  vec4 uv_transforms[10];
 };
 
 // A fragment stage that reads a larger block at binding 0 starting with the camera

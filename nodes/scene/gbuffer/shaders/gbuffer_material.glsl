@@ -12,6 +12,7 @@ layout(binding = 2) uniform sampler2D base_color_texture;          // sRGB
 layout(binding = 3) uniform sampler2D metallic_roughness_texture;  // G roughness, B metalness
 layout(binding = 4) uniform sampler2D normal_texture;              // tangent space, n * 0.5 + 0.5
 layout(binding = 5) uniform sampler2D occlusion_texture;           // R
+layout(binding = 21) uniform sampler2D emissive_texture;           // sRGB (material_textures.h)
 
 layout(location = 0) in vec3 world_normal;
 layout(location = 2) in vec4 clip_now;
@@ -66,12 +67,14 @@ vec3 mapped_normal(Draw d, vec3 n) {
 #endif
 
 // The material at this fragment: the shading normal facing the viewer's side, base colour
-// with alpha (factor x texture x vertex colour), metallic-roughness texel and occlusion.
+// with alpha (factor x texture x vertex colour), metallic-roughness texel, occlusion and
+// emitted radiance.
 struct MaterialSample {
   vec3 normal;
   vec4 base;
   vec4 metal_rough;  // g: roughness, b: metalness, to multiply the factors
   float occlusion;
+  vec3 emission;
 };
 
 MaterialSample sample_material(Draw d) {
@@ -82,10 +85,12 @@ MaterialSample sample_material(Draw d) {
   m.base = d.base_color * vertex_color * sample_map(d, LG_BASE_COLOR_MAP, base_color_texture, vec4(1.0));
   m.metal_rough = sample_map(d, LG_METALLIC_ROUGHNESS_MAP, metallic_roughness_texture, vec4(1.0));
   m.occlusion = 1.0 + d.material.w * (sample_map(d, LG_OCCLUSION_MAP, occlusion_texture, vec4(1.0)).r - 1.0);
+  m.emission = d.emissive.rgb * sample_map(d, LG_EMISSIVE_MAP, emissive_texture, vec4(1.0)).rgb;
 #else
   m.base = d.base_color;
   m.metal_rough = vec4(1.0);
   m.occlusion = 1.0;
+  m.emission = d.emissive.rgb;
 #endif
   if (!gl_FrontFacing) m.normal = -m.normal;  // a back face (double-sided, or culling off) shades its visible side
   return m;

@@ -3,7 +3,7 @@
 // LG_ALPHA_MASK defined as well (gbuffer_masked.frag), fragments whose alpha is below the
 // material's cutoff are discarded; the other variants have no discard, so that depth testing
 // can happen before shading. The material's occlusion goes into the albedo target's alpha for
-// lighting.ibl.
+// lighting.ibl; the emitted radiance into its own target, which lighting.deferred adds.
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/scene/gbuffer/shaders/gbuffer_material.glsl"
 
@@ -11,6 +11,7 @@ layout(location = 0) out vec4 out_normal;
 layout(location = 1) out vec4 out_albedo;
 layout(location = 2) out vec2 out_material;
 layout(location = 3) out vec2 out_motion;
+layout(location = 4) out vec4 out_emissive;
 
 void main() {
   Draw d = draws[draw_index];
@@ -25,4 +26,5 @@ void main() {
   vec2 uv_now = clip_now.xy / clip_now.w * 0.5;
   vec2 uv_before = clip_before.xy / max(clip_before.w, 1e-6) * 0.5;
   out_motion = uv_now - uv_before;
+  out_emissive = vec4(m.emission, 0.0);
 }
