@@ -88,59 +88,95 @@ std::optional<SceneFeature> parse_scene_feature(std::string_view name) {
 
 std::string scene_lacks_reason(SceneFeature f) {
   switch (f) {
-    case SceneFeature::directional_lights: return "the scene has no directional lights";
-    case SceneFeature::point_lights: return "the scene has no point lights";
-    case SceneFeature::spot_lights: return "the scene has no spot lights";
-    case SceneFeature::sphere_lights: return "the scene has no sphere lights";
-    case SceneFeature::tube_lights: return "the scene has no tube lights";
-    case SceneFeature::rectangle_lights: return "the scene has no rectangle lights";
-    case SceneFeature::area_lights: return "the scene has no area lights";
-    case SceneFeature::shadow_casting_lights: return "no light in the scene casts shadows";
-    case SceneFeature::local_shadow_casting_lights: return "no point or spot light in the scene casts shadows";
-    case SceneFeature::environment_light: return "the scene has no environment light";
-    case SceneFeature::irradiance_volumes: return "the scene has no irradiance volumes";
-    case SceneFeature::reflection_probes: return "the scene has no reflection probes";
-    case SceneFeature::glossy_materials: return "the scene has no glossy materials";
-    case SceneFeature::thin_lens_camera: return "the camera is a pinhole (aperture 0): nothing is out of focus";
-    case SceneFeature::baked_occlusion: return "no mesh in the scene carries baked occlusion";
-    case SceneFeature::blend_materials: return "nothing in the scene is drawn with a BLEND (transparent) material";
-    case SceneFeature::count: break;
+    case SceneFeature::directional_lights:
+      return "the scene has no directional lights";
+    case SceneFeature::point_lights:
+      return "the scene has no point lights";
+    case SceneFeature::spot_lights:
+      return "the scene has no spot lights";
+    case SceneFeature::sphere_lights:
+      return "the scene has no sphere lights";
+    case SceneFeature::tube_lights:
+      return "the scene has no tube lights";
+    case SceneFeature::rectangle_lights:
+      return "the scene has no rectangle lights";
+    case SceneFeature::area_lights:
+      return "the scene has no area lights";
+    case SceneFeature::shadow_casting_lights:
+      return "no light in the scene casts shadows";
+    case SceneFeature::local_shadow_casting_lights:
+      return "no point, spot or area light in the scene casts shadows";
+    case SceneFeature::environment_light:
+      return "the scene has no environment light";
+    case SceneFeature::irradiance_volumes:
+      return "the scene has no irradiance volumes";
+    case SceneFeature::reflection_probes:
+      return "the scene has no reflection probes";
+    case SceneFeature::glossy_materials:
+      return "the scene has no glossy materials";
+    case SceneFeature::thin_lens_camera:
+      return "the camera is a pinhole (aperture 0): nothing is out of focus";
+    case SceneFeature::baked_occlusion:
+      return "no mesh in the scene carries baked occlusion";
+    case SceneFeature::blend_materials:
+      return "nothing in the scene is drawn with a BLEND (transparent) material";
+    case SceneFeature::count:
+      break;
   }
   return "the scene lacks what this node needs";
 }
 
 bool SceneSummary::has(SceneFeature f) const {
   switch (f) {
-    case SceneFeature::directional_lights: return directional_lights > 0;
-    case SceneFeature::point_lights: return point_lights > 0;
-    case SceneFeature::spot_lights: return spot_lights > 0;
-    case SceneFeature::sphere_lights: return sphere_lights > 0;
-    case SceneFeature::tube_lights: return tube_lights > 0;
-    case SceneFeature::rectangle_lights: return rectangle_lights > 0;
-    case SceneFeature::area_lights: return sphere_lights + tube_lights + rectangle_lights > 0;
-    case SceneFeature::shadow_casting_lights: return shadows && directional_lights + point_lights > 0;
-    case SceneFeature::local_shadow_casting_lights: return local_shadows && point_lights + spot_lights > 0;
-    case SceneFeature::environment_light: return environment;
-    case SceneFeature::irradiance_volumes: return irradiance_volumes > 0;
-    case SceneFeature::reflection_probes: return reflection_probes > 0;
-    case SceneFeature::glossy_materials: return glossy_materials;
-    case SceneFeature::thin_lens_camera: return aperture > 0;
-    case SceneFeature::baked_occlusion: return baked_occlusion;
-    case SceneFeature::blend_materials: return blend_materials;
-    case SceneFeature::count: break;
+    case SceneFeature::directional_lights:
+      return directional_lights > 0;
+    case SceneFeature::point_lights:
+      return point_lights > 0;
+    case SceneFeature::spot_lights:
+      return spot_lights > 0;
+    case SceneFeature::sphere_lights:
+      return sphere_lights > 0;
+    case SceneFeature::tube_lights:
+      return tube_lights > 0;
+    case SceneFeature::rectangle_lights:
+      return rectangle_lights > 0;
+    case SceneFeature::area_lights:
+      return sphere_lights + tube_lights + rectangle_lights > 0;
+    case SceneFeature::shadow_casting_lights:
+      return shadows && directional_lights + point_lights > 0;
+    case SceneFeature::local_shadow_casting_lights:
+      return local_shadows && point_lights + spot_lights + sphere_lights + tube_lights + rectangle_lights > 0;
+    case SceneFeature::environment_light:
+      return environment;
+    case SceneFeature::irradiance_volumes:
+      return irradiance_volumes > 0;
+    case SceneFeature::reflection_probes:
+      return reflection_probes > 0;
+    case SceneFeature::glossy_materials:
+      return glossy_materials;
+    case SceneFeature::thin_lens_camera:
+      return aperture > 0;
+    case SceneFeature::baked_occlusion:
+      return baked_occlusion;
+    case SceneFeature::blend_materials:
+      return blend_materials;
+    case SceneFeature::count:
+      break;
   }
   return false;
 }
 
-SceneSummary default_scene_summary() { return SceneSummary{}; }
+SceneSummary default_scene_summary() {
+  return SceneSummary{};
+}
 
 std::optional<SceneSummary> scene_summary_from_json(const JsonValue& root, Diagnostics& diagnostics) {
   size_t errors_before = diagnostics.error_count();
   SceneSummary summary;
   summary.name.clear();  // named by the file unless it says otherwise
   if (!root.is_object()) {
-    diagnostics.error(root.pos(), "", std::string("expected a scene summary object, found ") +
-                                          JsonValue::kind_name(root.kind()));
+    diagnostics.error(root.pos(), "",
+                      std::string("expected a scene summary object, found ") + JsonValue::kind_name(root.kind()));
     return std::nullopt;
   }
   for (const auto& [key, value] : root.members()) {
@@ -151,19 +187,23 @@ std::optional<SceneSummary> scene_summary_from_json(const JsonValue& root, Diagn
       continue;
     }
     if (key == "name") {
-      if (value.is_string()) summary.name = value.as_string();
-      else diagnostics.error(value.pos(), pointer, "expected a string");
+      if (value.is_string())
+        summary.name = value.as_string();
+      else
+        diagnostics.error(value.pos(), pointer, "expected a string");
       continue;
     }
     bool is_section = false;
     for (const auto& f : fields()) is_section |= f.section == key;
     if (!is_section) {
       diagnostics.error(value.pos(), pointer,
-                        "unknown key '" + key + "'; expected format, name, lights, environment, probes, materials, occlusion or camera");
+                        "unknown key '" + key +
+                            "'; expected format, name, lights, environment, probes, materials, occlusion or camera");
       continue;
     }
     if (!value.is_object()) {
-      diagnostics.error(value.pos(), pointer, std::string("expected an object, found ") + JsonValue::kind_name(value.kind()));
+      diagnostics.error(value.pos(), pointer,
+                        std::string("expected an object, found ") + JsonValue::kind_name(value.kind()));
       continue;
     }
     for (const auto& [sub, sub_value] : value.members()) {
@@ -184,8 +224,7 @@ std::optional<SceneSummary> scene_summary_from_json(const JsonValue& root, Diagn
         diagnostics.error(sub_value.pos(), sub_pointer, "expected " + expected);
     }
   }
-  if (!root.find("format"))
-    diagnostics.error(root.pos(), "", "missing \"format\": \"lumagraph-scene-summary/1\"");
+  if (!root.find("format")) diagnostics.error(root.pos(), "", "missing \"format\": \"lumagraph-scene-summary/1\"");
   if (diagnostics.error_count() > errors_before) return std::nullopt;
   return summary;
 }
