@@ -61,8 +61,8 @@ vec2 extent_tap(uint i, uint n, bool square) {
 }
 
 // One tap, along D + `offset` from the light's centre: 0 when its ray misses the receiver's
-// plane (the part of the light it stands for is below the surface's horizon and lights
-// nothing), 1 when the map holds nothing nearer than the plane less the bias, 2 when it holds
+// plane (it is left out: the part of the light it stands for is low over the surface's
+// horizon, where it lights little), 1 when the map holds nothing nearer than the plane less the bias, 2 when it holds
 // a blocker, whose depth along unit `w` it sets.
 int area_shadow_tap(float first, vec3 center, vec3 D, vec3 w, Surface s, float texel, vec3 offset, out float blocker) {
   vec3 dir = normalize(D + offset);
