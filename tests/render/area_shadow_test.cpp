@@ -119,10 +119,13 @@ PenumbraError penumbra_error(const std::vector<double>& exact, const std::vector
   return {relative(0), relative(1), count[0], count[1]};
 }
 
-// The tolerances hold at the default 16 taps. PCSS is an estimate (one mean blocker depth, the
-// penumbra of a rectangle projected through it, 16 taps of a fixed pattern, map texels of
-// about 3 mm here), so the penumbra's relative RMS is bounded at 15% and the whole floor's at
-// 5%; without shadows the errors are several times larger (checked below).
+// The tolerances hold at the default 16 taps, where this scene measures 11.4% over the penumbra
+// and 4.2% over the floor (the pattern is fixed, so only rounding moves these). PCSS is an estimate: one mean blocker
+// depth per pixel (the box's top, nearer the light than the bottom edges that bound part of the penumbra, so the
+// penumbra comes out too wide), 16 taps of a fixed pattern (steps of 1/16 in visibility), map
+// texels of about 1 cm at the floor. So the penumbra's relative RMS is bounded at 15% and the
+// whole floor's at 6%; without shadows they are 71% and 36% (checked below, so the test sees a
+// missing shadow).
 TEST(AreaShadows, PenumbraAgreesWithExactVisibility) {
   const World world = box_over_floor();
   const std::vector<double> exact = exact_visibility(world);
@@ -138,8 +141,8 @@ TEST(AreaShadows, PenumbraAgreesWithExactVisibility) {
   std::printf("no shadows, %.4f, %.4f\n", none.penumbra, none.overall);
   EXPECT_GT(at_default.penumbra_pixels, 200u);
   EXPECT_LT(at_default.penumbra, 0.15);
-  EXPECT_LT(at_default.overall, 0.05);
-  EXPECT_GT(none.overall, 0.1) << "without shadows the test must see the error";
+  EXPECT_LT(at_default.overall, 0.06);
+  EXPECT_GT(none.overall, 0.2) << "without shadows the test must see the error";
 }
 
 }  // namespace

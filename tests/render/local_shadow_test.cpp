@@ -85,7 +85,7 @@ void add_sphere(World& world) {
 void add_tube(World& world) {
   Entity e = world.create("tube");
   world.add(e, TubeLight{.intensity = 500.0f, .length = 0.6f, .radius = 0.03f});
-  world.add(e, Transform{.position = {-0.6f, 1.2f, 0.2f}, .rotation = look_rotation({0.0f, 0.0f, 1.0f})});
+  world.add(e, Transform{.position = {-0.6f, 1.2f, 0.2f}, .rotation = look_rotation({1.0f, 0.0f, 0.0f})});
 }
 
 // Facing the shared wall and room B's floor beyond it (it emits along its local -Z).

@@ -1,9 +1,9 @@
 // Soft shadows of sphere, tube and rectangle lights from their cube maps in the local shadow
 // atlas, percentage-closer soft shadows (Fernando 2005) taken in directions from the light's
 // centre, so the filter crosses cube faces freely:
-//   1. blocker search: a fixed pattern of `local_shadow.z` directions D + 3 s, s over the
-//      light's extent across D (D from the light's centre to the shaded point), finds the
-//      blockers that hide part of the light and lie at least a quarter of the way from it;
+//   1. blocker search: D itself and a fixed pattern of `local_shadow.z` directions D + s, s over
+//      the light's extent across D (D from the light's centre to the shaded point), finds the
+//      blockers that hide part of the light (all of them from half way to the receiver on);
 //   2. their mean depth z along D gives the penumbra's scale k = (d - z) / z, d = |D|
 //      (penumbra width = light size x (d_receiver - d_blocker) / d_blocker);
 //   3. the same pattern, D + k s, is tested against the map: the fraction not blocked.
@@ -13,6 +13,7 @@
 // (direct_lights.glsl): a normal offset of 1.5 texels and a depth bias of two.
 #ifndef LG_AREA_SHADOWS_GLSL
 #define LG_AREA_SHADOWS_GLSL
+
 
 #include "nodes/common/shaders/brdf.glsl"
 #include "nodes/lighting/deferred/shaders/local_shadow_atlas.glsl"
@@ -51,13 +52,17 @@ LightExtent rect_extent(vec3 half_x, vec3 half_y, vec3 w) {
   return LightExtent(across(half_x, w), across(half_y, w), true);
 }
 
-// Tap i of n: a Vogel spiral in the unit disk, or the R2 low-discrepancy lattice (Roberts 2018)
-// in the unit square.
+// Tap i of n, in pairs mirrored through the centre (so the pattern's mean is the light's
+// centre, and the shadow does not shift): a Vogel spiral of n / 2 points in the unit disk, or
+// the R2 low-discrepancy lattice (Roberts 2018) in the unit square. An odd n's last tap is the
+// centre.
 vec2 extent_tap(uint i, uint n, bool square) {
-  float fi = float(i) + 0.5;
-  if (square) return 2.0 * fract(vec2(0.5) + float(i) * vec2(0.7548776662, 0.5698402910)) - 1.0;
-  float angle = float(i) * 2.3999632;  // the golden angle
-  return sqrt(fi / float(n)) * vec2(cos(angle), sin(angle));
+  uint pairs = n / 2u, j = i / 2u;
+  if (j >= pairs) return vec2(0.0);
+  float sign = (i & 1u) == 0u ? 1.0 : -1.0;
+  if (square) return sign * (2.0 * fract(vec2(0.5) + float(j) * vec2(0.7548776662, 0.5698402910)) - 1.0);
+  float angle = float(j) * 2.3999632;  // the golden angle
+  return sign * sqrt((float(j) + 0.5) / float(pairs)) * vec2(cos(angle), sin(angle));
 }
 
 // One tap, along D + `offset` from the light's centre: 0 when its ray misses the receiver's
@@ -94,10 +99,17 @@ float area_visibility(Surface s, float first, vec3 center, LightExtent extent) {
   vec3 w = D / d;
   uint n = uint(local_shadow.z);
 
+  // The search's taps, and one along D itself: a blocker at depth z along tap D + s hides the
+  // light's point centre + s z / (d - z), so it counts only where that point is on the light
+  // (z <= d / (1 + r), r the tap's reach in the disk or square). Else a wall near the light
+  // but beside the receiver's line of sight would widen the penumbra, and past a corner the
+  // filter would see the wall's far side, which lies in the receiver's plane, as lit.
   float blocker_sum = 0.0, blockers = 0.0, blocker;
-  for (uint i = 0; i < n; ++i) {
-    vec2 uv = extent_tap(i, n, extent.square);
-    if (area_shadow_tap(first, center, D, w, s, texel, 3.0 * (uv.x * extent.x + uv.y * extent.y), blocker) == 2) {
+  for (uint i = 0; i <= n; ++i) {
+    vec2 uv = i < n ? extent_tap(i, n, extent.square) : vec2(0.0);
+    float reach = extent.square ? max(abs(uv.x), abs(uv.y)) : length(uv);
+    if (area_shadow_tap(first, center, D, w, s, texel, (uv.x * extent.x + uv.y * extent.y), blocker) == 2 &&
+        blocker * (1.0 + reach) <= d) {
       blocker_sum += blocker;
       blockers += 1.0;
     }
