@@ -47,7 +47,8 @@ LocalShadows no_local_shadows(const SceneView& scene) {
 LocalShadows plan_local_shadows(const SceneView& scene, uint32_t budget, uint32_t atlas_size) {
   LocalShadows out = no_local_shadows(scene);
 
-  // An area light's map is a cube about its centre, and the list it goes back to is `first`.
+  // A light that casts: where its map looks from, the spot it is (null: a cube), and the
+  // entry of its list that gets its first view.
   struct Caster {
     float distance2;  // from the camera
     glm::vec3 position;
