@@ -106,7 +106,7 @@ std::string scene_lacks_reason(SceneFeature f) {
     case SceneFeature::shadow_casting_lights:
       return "no light in the scene casts shadows";
     case SceneFeature::local_shadow_casting_lights:
-      return "no point or spot light in the scene casts shadows";
+      return "no point, spot or area light in the scene casts shadows";
     case SceneFeature::environment_light:
       return "the scene has no environment light";
     case SceneFeature::irradiance_volumes:
@@ -148,7 +148,7 @@ bool SceneSummary::has(SceneFeature f) const {
     case SceneFeature::shadow_casting_lights:
       return shadows && directional_lights + point_lights > 0;
     case SceneFeature::local_shadow_casting_lights:
-      return local_shadows && point_lights + spot_lights > 0;
+      return local_shadows && point_lights + spot_lights + sphere_lights + tube_lights + rectangle_lights > 0;
     case SceneFeature::environment_light:
       return environment;
     case SceneFeature::irradiance_volumes:

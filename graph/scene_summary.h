@@ -22,7 +22,7 @@ enum class SceneFeature : uint8_t {
   rectangle_lights,
   area_lights,  // any of sphere, tube, rectangle
   shadow_casting_lights,
-  local_shadow_casting_lights,  // a point or spot light that casts shadows
+  local_shadow_casting_lights,  // a point, spot, sphere, tube or rectangle light that casts shadows
   environment_light,
   irradiance_volumes,
   reflection_probes,
@@ -47,7 +47,7 @@ struct SceneSummary {
   int tube_lights = 1;
   int rectangle_lights = 0;
   bool shadows = true;
-  bool local_shadows = false;  // whether the point and spot lights cast shadows
+  bool local_shadows = false;  // whether the point, spot and area lights cast shadows
   bool environment = true;
   int irradiance_volumes = 0;
   int reflection_probes = 0;

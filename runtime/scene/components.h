@@ -70,6 +70,7 @@ struct SphereLight {
   glm::vec3 color{1.0f};
   float intensity = 1.0f;  // radiance, W/(m^2 sr)
   float radius = 0.1f;
+  bool casts_shadows = true;
 };
 
 struct TubeLight {
@@ -77,6 +78,7 @@ struct TubeLight {
   float intensity = 1.0f;  // radiance, W/(m^2 sr)
   float length = 1.0f;     // of the segment, along local X, centred on the entity
   float radius = 0.05f;
+  bool casts_shadows = true;
 };
 
 struct RectLight {
@@ -84,6 +86,7 @@ struct RectLight {
   float intensity = 1.0f;             // radiance, W/(m^2 sr)
   float width = 1.0f, height = 1.0f;  // along local X and Y
   bool two_sided = false;
+  bool casts_shadows = true;
 };
 
 struct EnvironmentLight {

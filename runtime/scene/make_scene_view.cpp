@@ -79,18 +79,21 @@ void add_lights(const World& world, SceneView& view) {
   });
   world.each<SphereLight>([&](Entity e, const SphereLight& l) {
     glm::mat4 m = world.world_matrix(e);
-    view.sphere_lights.push_back({point(m, glm::vec3(0.0f)), l.radius * max_scale(m), l.color * l.intensity});
+    view.sphere_lights.push_back(
+        {point(m, glm::vec3(0.0f)), l.radius * max_scale(m), l.color * l.intensity, l.casts_shadows});
   });
   world.each<TubeLight>([&](Entity e, const TubeLight& l) {
     glm::mat4 m = world.world_matrix(e);
     glm::vec3 half{l.length * 0.5f, 0.0f, 0.0f};
-    view.tube_lights.push_back({point(m, -half), point(m, half), l.radius * max_scale(m), l.color * l.intensity});
+    view.tube_lights.push_back(
+        {point(m, -half), point(m, half), l.radius * max_scale(m), l.color * l.intensity, l.casts_shadows});
   });
   world.each<RectLight>([&](Entity e, const RectLight& l) {
     glm::mat4 m = world.world_matrix(e);
     view.rect_lights.push_back({point(m, glm::vec3(0.0f)), vector(m, {l.width * 0.5f, 0.0f, 0.0f}),
                                 // -Y so that cross(half_x, half_y), the side that emits, is local -Z.
-                                vector(m, {0.0f, -l.height * 0.5f, 0.0f}), l.color * l.intensity, l.two_sided});
+                                vector(m, {0.0f, -l.height * 0.5f, 0.0f}), l.color * l.intensity, l.two_sided,
+                                l.casts_shadows});
   });
 }
 

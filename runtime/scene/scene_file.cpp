@@ -254,8 +254,9 @@ class SceneFileReader {
     std::vector<Drawn> drawn = drawn_by([](Entity) { return true; });
     for (const Drawn& d : drawn)
       if (world_.meshes()[size_t(d.mesh)]->occlusion)
-        return f.error_at("occlusion", "an entity has an 'occlusion' of its own, and the scene file's bake covers "
-                                       "every draw: give one or the other");
+        return f.error_at("occlusion",
+                          "an entity has an 'occlusion' of its own, and the scene file's bake covers "
+                          "every draw: give one or the other");
     read_bake(f, v, drawn, "this scene file");
   }
 
@@ -273,7 +274,8 @@ class SceneFileReader {
     world_.each<MeshRenderer>([&](Entity d, const MeshRenderer& r) {
       if (wanted(d)) drawn.push_back({d.index, r.mesh, world_.world_matrix(d)});
     });
-    std::sort(drawn.begin(), drawn.end(), [](const Drawn& a, const Drawn& b) { return a.entity_index < b.entity_index; });
+    std::sort(drawn.begin(), drawn.end(),
+              [](const Drawn& a, const Drawn& b) { return a.entity_index < b.entity_index; });
     return drawn;
   }
 
@@ -420,28 +422,31 @@ class SceneFileReader {
            f.boolean("shadows", l.casts_shadows);
            world_.add<SpotLight>(e, l);
          });
-    with("sphere_light", {"color", "radiance", "radius"}, [&](const JsonFields& f) {
+    with("sphere_light", {"color", "radiance", "radius", "shadows"}, [&](const JsonFields& f) {
       SphereLight l;
       f.vec3("color", l.color, 0, max_power);
       f.number("radiance", l.intensity, 0, max_power, "W/(m^2 sr)");
       f.number("radius", l.radius, 1e-4, 1e3, "metres");
+      f.boolean("shadows", l.casts_shadows);
       world_.add<SphereLight>(e, l);
     });
-    with("tube_light", {"color", "radiance", "length", "radius"}, [&](const JsonFields& f) {
+    with("tube_light", {"color", "radiance", "length", "radius", "shadows"}, [&](const JsonFields& f) {
       TubeLight l;
       f.vec3("color", l.color, 0, max_power);
       f.number("radiance", l.intensity, 0, max_power, "W/(m^2 sr)");
       f.number("length", l.length, 0, 1e3, "metres");
       f.number("radius", l.radius, 1e-4, 1e3, "metres");
+      f.boolean("shadows", l.casts_shadows);
       world_.add<TubeLight>(e, l);
     });
-    with("rect_light", {"color", "radiance", "width", "height", "two_sided"}, [&](const JsonFields& f) {
+    with("rect_light", {"color", "radiance", "width", "height", "two_sided", "shadows"}, [&](const JsonFields& f) {
       RectLight l;
       f.vec3("color", l.color, 0, max_power);
       f.number("radiance", l.intensity, 0, max_power, "W/(m^2 sr)");
       f.number("width", l.width, 1e-4, 1e3, "metres");
       f.number("height", l.height, 1e-4, 1e3, "metres");
       f.boolean("two_sided", l.two_sided);
+      f.boolean("shadows", l.casts_shadows);
       world_.add<RectLight>(e, l);
     });
     with("irradiance_volume", {"size", "probes"}, [&](const JsonFields& f) {

@@ -33,6 +33,9 @@ SceneSummary SceneView::summary() const {
   s.local_shadows = false;
   for (const auto& l : point_lights) s.local_shadows |= l.casts_shadows;
   for (const auto& l : spot_lights) s.local_shadows |= l.casts_shadows;
+  for (const auto& l : sphere_lights) s.local_shadows |= l.casts_shadows;
+  for (const auto& l : tube_lights) s.local_shadows |= l.casts_shadows;
+  for (const auto& l : rect_lights) s.local_shadows |= l.casts_shadows;
   s.environment = has_environment;
   s.irradiance_volumes = int(irradiance_volumes.size());
   s.reflection_probes = reflection_probes;

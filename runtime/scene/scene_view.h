@@ -148,12 +148,14 @@ struct SphereLightData {
   glm::vec3 center{0.0f};
   float radius = 0.1f;
   glm::vec3 radiance{1.0f};
+  bool casts_shadows = true;
 };
 
 struct TubeLightData {  // a capsule around the segment end0-end1
   glm::vec3 end0{0.0f}, end1{1.0f, 0.0f, 0.0f};
   float radius = 0.05f;
   glm::vec3 radiance{1.0f};
+  bool casts_shadows = true;
 };
 
 struct RectLightData {  // one-sided lights emit toward cross(half_x, half_y)
@@ -161,6 +163,7 @@ struct RectLightData {  // one-sided lights emit toward cross(half_x, half_y)
   glm::vec3 half_x{0.5f, 0.0f, 0.0f}, half_y{0.0f, 0.5f, 0.0f};
   glm::vec3 radiance{1.0f};
   bool two_sided = false;
+  bool casts_shadows = true;
 };
 
 // A box of probes on a regular grid, centred on its entity (the IrradianceVolume component).

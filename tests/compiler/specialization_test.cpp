@@ -40,7 +40,7 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   ASSERT_NE(light, nullptr);
   EXPECT_EQ(light->state, NodeState::Kind::active);
   const std::pair<std::string, std::string> no_local_shadows{"local_shadows",
-                                                             "no point or spot light in the scene casts shadows"};
+                                                             "no point, spot or area light in the scene casts shadows"};
   const std::pair<std::string, std::string> no_emission{"emission",
                                                         "nothing in the scene is drawn with an emissive material"};
   EXPECT_EQ(dropped(plan, "light"), (std::vector<std::pair<std::string, std::string>>{
@@ -54,11 +54,11 @@ TEST(CompilerSpecialization, SunOnlySceneDropsTheAreaLightPass) {
   for (const auto& p : plan.passes)
     for (const auto& a : plan.accesses_of(p)) writers += a.resource == color && usage_writes(a.usage);
   EXPECT_EQ(writers, 1);
-  EXPECT_NE(
-      plan_to_text(plan).find("passes dropped:\n  light/local_shadows (lighting.deferred): no point or spot light in "
-                              "the scene casts shadows\n  light/area (lighting.deferred): the scene has no area "
-                              "lights\n"),
-      std::string::npos)
+  EXPECT_NE(plan_to_text(plan).find(
+                "passes dropped:\n  light/local_shadows (lighting.deferred): no point, spot or area light in "
+                "the scene casts shadows\n  light/area (lighting.deferred): the scene has no area "
+                "lights\n"),
+            std::string::npos)
       << plan_to_text(plan);
   expect_nothing_read_before_written(plan);
 
@@ -135,10 +135,11 @@ TEST(CompilerSpecialization, NoShadowCastersDropsTheShadowPass) {
       CompileOptions o;
       o.scene = scene;
       Plan plan = test::compile_ok(test::load_example(path), builtin_registry(), o);
-      EXPECT_EQ(dropped(plan, "light"), (std::vector<std::pair<std::string, std::string>>{
-                                            {"shadows", "no light in the scene casts shadows"},
-                                            {"local_shadows", "no point or spot light in the scene casts shadows"},
-                                            {"emission", "nothing in the scene is drawn with an emissive material"}}));
+      EXPECT_EQ(dropped(plan, "light"),
+                (std::vector<std::pair<std::string, std::string>>{
+                    {"shadows", "no light in the scene casts shadows"},
+                    {"local_shadows", "no point, spot or area light in the scene casts shadows"},
+                    {"emission", "nothing in the scene is drawn with an emissive material"}}));
       EXPECT_EQ(pass_at(plan, "light/shadows"), -1);
       // The shadow map is neither drawn nor sampled, so it takes no memory.
       int map = resource_at(plan, "light/shadow_map");

@@ -1,8 +1,9 @@
-// No point or spot light passes through an opaque wall: two sealed rooms share a wall 1 cm
-// thick, a light in one room and a camera in the other, whose direct light must be exactly 0
-// (the criterion, so no tolerance). With a shadow budget of 0 the same frame is lit
-// through the wall, which shows the test sees a leak when there is one; and seen from the lit
-// room, shadows take nothing away (no acne), since nothing stands between light and walls.
+// No point, spot, sphere, tube or rectangle light passes through an opaque wall: two sealed
+// rooms share a wall 1 cm thick, a light in one room and a camera in the other, whose direct
+// light must be exactly 0 (the criterion, so no tolerance). With a shadow budget of 0
+// the same frame is lit through the wall, which shows the test sees a leak when there is one;
+// and seen from the lit room, shadows take nothing away (no acne), since nothing stands between
+// light and walls.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,6 +72,27 @@ void add_narrow_spot(World& world) {
   Entity e = world.create("spot");
   world.add(e, SpotLight{.intensity = 20.0f, .inner_cone_angle = 0.3f, .outer_cone_angle = 0.5f});
   world.add(e, Transform{.position = {-1.5f, 1.6f, 0.3f}, .rotation = look_rotation({1.0f, -0.5f, -0.2f})});
+}
+
+// About as bright as the point light: radiance times the light's area seen from the side.
+void add_sphere(World& world) {
+  Entity e = world.create("sphere");
+  world.add(e, SphereLight{.intensity = 600.0f, .radius = 0.1f});
+  world.add(e, Transform{.position = {-1.0f, 1.0f, 0.0f}});
+}
+
+// Along the shared wall, near it.
+void add_tube(World& world) {
+  Entity e = world.create("tube");
+  world.add(e, TubeLight{.intensity = 500.0f, .length = 0.6f, .radius = 0.03f});
+  world.add(e, Transform{.position = {-0.6f, 1.2f, 0.2f}, .rotation = look_rotation({1.0f, 0.0f, 0.0f})});
+}
+
+// Facing the shared wall and room B's floor beyond it (it emits along its local -Z).
+void add_rect(World& world) {
+  Entity e = world.create("rect");
+  world.add(e, RectLight{.intensity = 100.0f, .width = 0.5f, .height = 0.4f});
+  world.add(e, Transform{.position = {-1.2f, 1.4f, 0.1f}, .rotation = look_rotation({1.0f, -0.5f, -0.1f})});
 }
 
 // The direct light the camera sees, RGBA.
@@ -158,9 +180,32 @@ TEST(LocalShadowPlan, NearestCastersFirstInTilesOfTheAtlas) {
   EXPECT_TRUE(plan_local_shadows(scene, 0, 2048).views.empty());
 }
 
+// Sphere, tube and rectangle lights share the budget, nearest first, each with a cube of six
+// views about its centre; one that casts no shadows gets none.
+TEST(LocalShadowPlan, AreaLightsTakeCubesFromTheSameBudget) {
+  SceneView scene;  // the camera at the origin
+  scene.point_lights.push_back({.position = {4.0f, 0.0f, 0.0f}});
+  scene.sphere_lights.push_back({.center = {0.0f, 3.0f, 0.0f}});
+  scene.sphere_lights.push_back({.center = {0.0f, 0.5f, 0.0f}, .casts_shadows = false});
+  scene.tube_lights.push_back({.end0 = {0.0f, 0.0f, 0.0f}, .end1 = {0.0f, 0.0f, 2.0f}});  // centre 1 m away
+  scene.rect_lights.push_back({.center = {0.0f, 0.0f, -2.0f}});
+  const LocalShadows plan = plan_local_shadows(scene, 3, 2048);
+  EXPECT_EQ(plan.tube_first_view, (std::vector<int>{0}));
+  EXPECT_EQ(plan.rect_first_view, (std::vector<int>{6}));
+  EXPECT_EQ(plan.sphere_first_view, (std::vector<int>{12, -1}));
+  EXPECT_EQ(plan.point_first_view, (std::vector<int>{-1}));  // past the budget
+  ASSERT_EQ(plan.views.size(), 18u);
+  // The tube's cube looks from the middle of its segment: +Z, its fifth face, sees (0, 0, 3) at the centre.
+  const glm::vec4 clip = plan.views[4].clip_from_world * glm::vec4(0.0f, 0.0f, 3.0f, 1.0f);
+  EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-6f);
+  EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-6f);
+  EXPECT_NEAR(clip.w, 2.0f, 1e-5f);
+}
+
 INSTANTIATE_TEST_SUITE_P(Lights, SealedRooms,
                          testing::Values(Case{"point", add_point}, Case{"wide_spot", add_wide_spot},
-                                         Case{"narrow_spot", add_narrow_spot}),
+                                         Case{"narrow_spot", add_narrow_spot}, Case{"sphere", add_sphere},
+                                         Case{"tube", add_tube}, Case{"rect", add_rect}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

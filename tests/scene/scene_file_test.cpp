@@ -69,7 +69,7 @@ const char* every_kind = R"({
                     "shadows": false}},
     {"name": "orb", "transform": {"position": [1, 2, 3]}, "sphere_light": {"radiance": 20, "radius": 0.1}},
     {"name": "tube", "tube_light": {"color": [0.5, 0.5, 1], "radiance": 8, "length": 2, "radius": 0.05}},
-    {"name": "panel", "rect_light": {"radiance": 4, "width": 2, "height": 1, "two_sided": true}},
+    {"name": "panel", "rect_light": {"radiance": 4, "width": 2, "height": 1, "two_sided": true, "shadows": false}},
     {"name": "volume", "irradiance_volume": {"size": [10, 4, 10], "probes": [8, 4, 8]}},
     {"name": "probe", "reflection_probe": {"radius": 3}},
     {"name": "eye", "transform": {"position": [0, 1.5, 6], "look_at": [0, 1, 0]},
@@ -109,6 +109,8 @@ TEST(SceneFile, EveryKindOfEntityLoads) {
   EXPECT_FLOAT_EQ(v.exposure, -1.0f);
   EXPECT_NEAR(v.sphere_lights[0].center.z, 3.0f, 1e-6f);
   EXPECT_FLOAT_EQ(v.sphere_lights[0].radiance.x, 20.0f);
+  EXPECT_TRUE(v.sphere_lights[0].casts_shadows);  // area lights cast shadows unless told not to
+  EXPECT_FALSE(v.rect_lights.at(0).casts_shadows);
   EXPECT_NEAR(v.directional_lights.size(), 2u, 0);
   EXPECT_NEAR(v.camera.vertical_fov, glm::radians(45.0f), 1e-6f);
   // The override applies to every mesh of cube.obj, which hangs under "stage".

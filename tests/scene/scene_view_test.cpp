@@ -81,13 +81,13 @@ TEST(SceneView, LightsAreInWorldSpace) {
   w.add<Transform>(parent, {{10, 0, 0}, glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0)), glm::vec3(2.0f), {}});
   Entity tube = w.create(), rect = w.create(), sun = w.create(), sphere = w.create();
   w.add<Transform>(tube, {{0, 1, 0}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f), parent});
-  w.add<TubeLight>(tube, {{1, 1, 1}, 4.0f, 1.0f, 0.1f});
+  w.add<TubeLight>(tube, {{1, 1, 1}, 4.0f, 1.0f, 0.1f, true});
   w.add<Transform>(rect, {{0, 0, 0}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f), parent});
-  w.add<RectLight>(rect, {{0.5f, 1, 1}, 2.0f, 1.0f, 0.5f, true});
+  w.add<RectLight>(rect, {{0.5f, 1, 1}, 2.0f, 1.0f, 0.5f, true, true});
   w.add<Transform>(sun, {{0, 0, 0}, look_rotation({0, -1, 0}), glm::vec3(1.0f), {}});
   w.add<DirectionalLight>(sun, {{1, 1, 1}, 3.0f, 0.01f, false});
   w.add<Transform>(sphere, {{0, 0, 0}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f), parent});
-  w.add<SphereLight>(sphere, {{1, 0, 0}, 5.0f, 0.25f});
+  w.add<SphereLight>(sphere, {{1, 0, 0}, 5.0f, 0.25f, true});
   SceneView v = make_scene_view(w, 1.0f);
   ASSERT_EQ(v.tube_lights.size(), 1u);
   // The tube lies along the parent's local X, which the 90 degree turn about Y maps to -Z.

@@ -35,6 +35,7 @@ class DeferredKernel final : public NodeKernel {
   explicit DeferredKernel(const PlanNode& node)
       : shadow_budget_(static_cast<uint32_t>(param_number(node, "shadow_budget"))),
         atlas_size_(static_cast<uint32_t>(param_number(node, "local_shadow_atlas_size"))),
+        area_shadow_samples_(static_cast<uint32_t>(param_number(node, "area_shadow_samples"))),
         cull_lights_(param_bool(node, "cull_lights")) {}
 
   void record(PassContext& ctx) override {
@@ -95,13 +96,13 @@ class DeferredKernel final : public NodeKernel {
     draw_depth(ctx, map, {{constants_.shadow_from_world, glm::uvec2(0), size}});
   }
 
-  // Every view of the point and spot lights the budget chose, each into its tile of the atlas.
+  // Every view of the point, spot and area lights the budget chose, each into its tile of the atlas.
   void record_local_shadows(PassContext& ctx) {
     prepare(ctx);
     std::vector<DepthView> views;
     for (const LocalShadowView& v : local_.views) views.push_back({v.clip_from_world, v.origin, v.size});
     draw_depth(ctx, ctx.image("tmp.local_shadow_atlas"), views);
-    constants_.local_shadow = glm::vec4(1.0f, local_shadow_near, 0.0f, 0.0f);
+    constants_.local_shadow = glm::vec4(1.0f, local_shadow_near, float(area_shadow_samples_), 0.0f);
     local_drawn_ = true;
   }
 
@@ -147,6 +148,14 @@ class DeferredKernel final : public NodeKernel {
       writes.push_back(sampled_image(uint32_t(1 + c), ctx.image("in.gbuffer", c).view(), ctx.nearest_sampler()));
   }
 
+  // The atlas and its views at bindings 14 and 15. Without the local shadow pass (no light casts
+  // shadows into it) any depth image binds; local_shadow.x = 0 skips it.
+  void add_local_shadow_atlas(PassContext& ctx, std::vector<DescriptorWrite>& writes) {
+    Image& atlas = ctx.has("tmp.local_shadow_atlas") ? ctx.image("tmp.local_shadow_atlas") : ctx.image("in.gbuffer", 0);
+    writes.push_back(sampled_image(14, atlas.view(), ctx.nearest_sampler()));
+    lights_->add_shadow_views(writes);
+  }
+
   void record_direct(PassContext& ctx) {
     prepare(ctx);
     if (!shadow_drawn_) constants_.shadow = glm::vec4(0.0f);
@@ -161,10 +170,7 @@ class DeferredKernel final : public NodeKernel {
     // Without a shadow pass (no shadow-casting light) any depth image binds; shadow.y = 0 skips it.
     Image& shadow_map = ctx.has("tmp.shadow_map") ? ctx.image("tmp.shadow_map") : ctx.image("in.gbuffer", 0);
     writes.push_back(sampled_image(10, shadow_map.view(), ctx.nearest_sampler()));
-    // Without the local shadow pass (no point or spot light casts shadows) any depth image binds;
-    // local_shadow.x = 0 skips it.
-    Image& atlas = ctx.has("tmp.local_shadow_atlas") ? ctx.image("tmp.local_shadow_atlas") : ctx.image("in.gbuffer", 0);
-    writes.push_back(sampled_image(14, atlas.view(), ctx.nearest_sampler()));
+    add_local_shadow_atlas(ctx, writes);
     lights_->add_direct_lists(writes);
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width,
                      color.desc().height);
@@ -177,6 +183,7 @@ class DeferredKernel final : public NodeKernel {
     lights_->add_constants(writes);
     add_gbuffer(ctx, writes);
     writes.push_back(storage_image(5, color.view()));
+    add_local_shadow_atlas(ctx, writes);
     lights_->add_area_lists(writes);
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height);
   }
@@ -198,7 +205,7 @@ class DeferredKernel final : public NodeKernel {
     uint32_t pad[3];
   };
 
-  const uint32_t shadow_budget_, atlas_size_;
+  const uint32_t shadow_budget_, atlas_size_, area_shadow_samples_;
   const bool cull_lights_;
   std::optional<LightBuffers> lights_;
   std::optional<HostBuffer> worlds_;

@@ -48,14 +48,6 @@ int shadow_caster(const SceneView& scene) {
   return -1;
 }
 
-LocalShadows no_local_shadows(const SceneView& scene) {
-  LocalShadows out;
-  out.point_first_view.assign(scene.point_lights.size(), -1);
-  out.spot_first_view.assign(scene.spot_lights.size(), -1);
-  out.spot_view_count.assign(scene.spot_lights.size(), 0);
-  return out;
-}
-
 LightBuffers::LightBuffers(Context& gpu, const std::string& id)
     : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       directional_(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
@@ -85,15 +77,22 @@ void LightBuffers::write_lights(const SceneView& scene, int caster, const LocalS
   for (const LocalShadowView& v : local.views)
     views.push_back({v.clip_from_world, glm::vec4(glm::vec2(v.origin), float(v.size), v.texel_per_distance)});
   std::vector<GpuSphere> spheres;
-  for (const auto& l : scene.sphere_lights)
-    spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, 0.0f)});
+  for (size_t i = 0; i < scene.sphere_lights.size(); ++i) {
+    const auto& l = scene.sphere_lights[i];
+    spheres.push_back({glm::vec4(l.center, l.radius), glm::vec4(l.radiance, float(local.sphere_first_view[i]))});
+  }
   std::vector<GpuTube> tubes;
-  for (const auto& l : scene.tube_lights)
-    tubes.push_back({glm::vec4(l.end0, l.radius), glm::vec4(l.end1, 0.0f), glm::vec4(l.radiance, 0.0f)});
+  for (size_t i = 0; i < scene.tube_lights.size(); ++i) {
+    const auto& l = scene.tube_lights[i];
+    tubes.push_back(
+        {glm::vec4(l.end0, l.radius), glm::vec4(l.end1, float(local.tube_first_view[i])), glm::vec4(l.radiance, 0.0f)});
+  }
   std::vector<GpuRect> rects;
-  for (const auto& l : scene.rect_lights)
+  for (size_t i = 0; i < scene.rect_lights.size(); ++i) {
+    const auto& l = scene.rect_lights[i];
     rects.push_back({glm::vec4(l.center, l.two_sided ? 1.0f : 0.0f), glm::vec4(l.half_x, 0.0f),
-                     glm::vec4(l.half_y, 0.0f), glm::vec4(l.radiance, 0.0f)});
+                     glm::vec4(l.half_y, 0.0f), glm::vec4(l.radiance, float(local.rect_first_view[i]))});
+  }
   constants_out.counts[0] = uint32_t(directional.size());
   constants_out.counts[1] = uint32_t(points.size());
   constants_out.counts[2] = uint32_t(spheres.size());
@@ -117,6 +116,9 @@ void LightBuffers::add_direct_lists(std::vector<DescriptorWrite>& writes) const 
   writes.push_back(storage_buffer(11, directional_.handle()));
   writes.push_back(storage_buffer(12, points_.handle()));
   writes.push_back(storage_buffer(13, spots_.handle()));
+}
+
+void LightBuffers::add_shadow_views(std::vector<DescriptorWrite>& writes) const {
   writes.push_back(storage_buffer(15, shadow_views_.handle()));
 }
 

@@ -23,14 +23,11 @@ struct LightConstants {
   glm::vec4 shadow;  // 1 / map size, map drawn, normal offset, depth bias
   uint32_t counts[4];
   uint32_t counts2[4];
-  glm::vec4 local_shadow;  // 1 when the atlas was drawn, its views' near plane
+  glm::vec4 local_shadow;  // 1 when the atlas was drawn, its views' near plane, area-light shadow samples
 };
 
 // The first directional light that casts shadows owns the shadow map, or -1.
 int shadow_caster(const SceneView& scene);
-
-// No light with a view in the local shadow atlas (what a pass without the atlas lights with).
-LocalShadows no_local_shadows(const SceneView& scene);
 
 class LightBuffers {
  public:
@@ -40,10 +37,12 @@ class LightBuffers {
   // point and spot lights with their views of `local`; sets the counts in `constants`.
   void write_lights(const SceneView& scene, int caster, const LocalShadows& local, LightConstants& constants);
 
-  // The constants at binding 0 and the lists at the bindings direct_lights.glsl and
-  // area_lights.glsl declare (the shadow map and atlas images are the caller's: 10 and 14).
+  // The constants at binding 0 and the lists at the bindings direct_lights.glsl,
+  // local_shadow_atlas.glsl and area_lights.glsl declare (the shadow map and atlas images are
+  // the caller's: 10 and 14).
   void add_constants(std::vector<DescriptorWrite>& writes) const;
   void add_direct_lists(std::vector<DescriptorWrite>& writes) const;
+  void add_shadow_views(std::vector<DescriptorWrite>& writes) const;
   void add_area_lists(std::vector<DescriptorWrite>& writes) const;
 
   HostBuffer constants;

@@ -33,26 +33,49 @@ uint32_t local_shadow_tile_size(uint32_t atlas_size, uint32_t budget) {
   return atlas_size / grid_columns(budget);
 }
 
-LocalShadows plan_local_shadows(const SceneView& scene, uint32_t budget, uint32_t atlas_size) {
+LocalShadows no_local_shadows(const SceneView& scene) {
   LocalShadows out;
   out.point_first_view.assign(scene.point_lights.size(), -1);
   out.spot_first_view.assign(scene.spot_lights.size(), -1);
   out.spot_view_count.assign(scene.spot_lights.size(), 0);
+  out.sphere_first_view.assign(scene.sphere_lights.size(), -1);
+  out.tube_first_view.assign(scene.tube_lights.size(), -1);
+  out.rect_first_view.assign(scene.rect_lights.size(), -1);
+  return out;
+}
 
+LocalShadows plan_local_shadows(const SceneView& scene, uint32_t budget, uint32_t atlas_size) {
+  LocalShadows out = no_local_shadows(scene);
+
+  // A light that casts: where its map looks from, the spot it is (null: a cube), and the
+  // entry of its list that gets its first view.
   struct Caster {
     float distance2;  // from the camera
-    bool point;
-    size_t index;
+    glm::vec3 position;
+    const SpotLightData* spot;  // null: a cube
+    int* first;
   };
   std::vector<Caster> casters;
   const glm::vec3 eye = scene.camera.position;
+  auto add = [&](bool casts, glm::vec3 position, const SpotLightData* spot, int& first) {
+    if (casts) casters.push_back({glm::dot(position - eye, position - eye), position, spot, &first});
+  };
   for (size_t i = 0; i < scene.point_lights.size(); ++i)
-    if (scene.point_lights[i].casts_shadows)
-      casters.push_back(
-          {glm::dot(scene.point_lights[i].position - eye, scene.point_lights[i].position - eye), true, i});
+    add(scene.point_lights[i].casts_shadows, scene.point_lights[i].position, nullptr, out.point_first_view[i]);
   for (size_t i = 0; i < scene.spot_lights.size(); ++i)
-    if (scene.spot_lights[i].casts_shadows)
-      casters.push_back({glm::dot(scene.spot_lights[i].position - eye, scene.spot_lights[i].position - eye), false, i});
+    add(scene.spot_lights[i].casts_shadows, scene.spot_lights[i].position, &scene.spot_lights[i],
+        out.spot_first_view[i]);
+  for (size_t i = 0; i < scene.sphere_lights.size(); ++i)
+    add(scene.sphere_lights[i].casts_shadows, scene.sphere_lights[i].center, nullptr, out.sphere_first_view[i]);
+  for (size_t i = 0; i < scene.tube_lights.size(); ++i) {
+    const TubeLightData& l = scene.tube_lights[i];
+    add(l.casts_shadows, 0.5f * (l.end0 + l.end1), nullptr, out.tube_first_view[i]);
+  }
+  // A rectangle emits into one hemisphere only, yet it gets all six faces: a face lies wholly
+  // behind the rectangle only when the rectangle is aligned with the axes, and even then it
+  // is one face of six, not worth a second way of indexing the views.
+  for (size_t i = 0; i < scene.rect_lights.size(); ++i)
+    add(scene.rect_lights[i].casts_shadows, scene.rect_lights[i].center, nullptr, out.rect_first_view[i]);
   // Ties keep the lists' order, so the choice is stable from frame to frame.
   std::stable_sort(casters.begin(), casters.end(),
                    [](const Caster& a, const Caster& b) { return a.distance2 < b.distance2; });
@@ -72,22 +95,17 @@ LocalShadows plan_local_shadows(const SceneView& scene, uint32_t budget, uint32_
       }
   };
   for (const Caster& c : casters) {
-    const int first = static_cast<int>(out.views.size());
-    if (c.point) {
-      out.point_first_view[c.index] = first;
-      add_cube(scene.point_lights[c.index].position);
-      continue;
-    }
-    const SpotLightData& l = scene.spot_lights[c.index];
-    out.spot_first_view[c.index] = first;
-    if (l.outer_cone_angle <= max_single_view_angle) {
+    *c.first = static_cast<int>(out.views.size());
+    const SpotLightData* spot = c.spot;
+    int views = 6;
+    if (spot && spot->outer_cone_angle <= max_single_view_angle) {
       // A cone of angle 0 still gets a view a hundredth of a radian wide.
-      add_view(l.position, l.direction, std::tan(std::max(l.outer_cone_angle, 0.01f)));
-      out.spot_view_count[c.index] = 1;
+      add_view(spot->position, spot->direction, std::tan(std::max(spot->outer_cone_angle, 0.01f)));
+      views = 1;
     } else {
-      add_cube(l.position);
-      out.spot_view_count[c.index] = 6;
+      add_cube(c.position);
     }
+    if (spot) out.spot_view_count[size_t(spot - scene.spot_lights.data())] = views;
   }
   return out;
 }

@@ -1,9 +1,10 @@
-// Which point and spot lights get shadow maps in a frame, and where: the shadow budget goes to
-// the shadow-casting lights nearest the camera, each gets square tiles of one depth atlas (a
-// spot one perspective view down its cone; a point light, or a spot wider than 60 degrees,
-// six views along the axes, a cube map), and each view's matrix into its tile. Lights past the
-// budget light without shadows. Plain data: the deferred kernel draws the views and the direct
-// pass (shaders/direct_lights.glsl) reads them back.
+// Which point, spot, sphere, tube and rectangle lights get shadow maps in a frame, and where:
+// the shadow budget goes to the shadow-casting lights nearest the camera, each gets square tiles
+// of one depth atlas (a spot one perspective view down its cone; a point light, a spot wider
+// than 60 degrees and every area light six views along the axes, a cube map about its centre),
+// and each view's matrix into its tile. Lights past the budget light without shadows. Plain
+// data: the deferred kernel draws the views, the direct pass (shaders/direct_lights.glsl) and
+// the area pass (shaders/area_shadows.glsl) read them back.
 #pragma once
 
 #include <cstdint>
@@ -33,9 +34,14 @@ struct LocalShadowView {
 struct LocalShadows {
   std::vector<LocalShadowView> views;
   // Per light of the SceneView's lists: its first view, or -1 for none; a light has one view
-  // or six (cube faces +X, -X, +Y, -Y, +Z, -Z, the order shaders/direct_lights.glsl picks them in).
+  // or six (cube faces +X, -X, +Y, -Y, +Z, -Z, the order shaders/local_shadow_atlas.glsl picks
+  // them in). Only a spot may have one; every area light with a map has six.
   std::vector<int> point_first_view, spot_first_view, spot_view_count;
+  std::vector<int> sphere_first_view, tube_first_view, rect_first_view;
 };
+
+// No light with a view (what a pass without the atlas lights with).
+LocalShadows no_local_shadows(const SceneView& scene);
 
 // The atlas is a grid of ceil(sqrt(6 budget))^2 tiles, room for `budget` point lights.
 uint32_t local_shadow_tile_size(uint32_t atlas_size, uint32_t budget);

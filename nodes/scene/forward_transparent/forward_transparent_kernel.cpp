@@ -104,6 +104,7 @@ class ForwardTransparentKernel final : public NodeKernel {
     writes.push_back(sampled_image(10, depth.view(), ctx.nearest_sampler()));
     writes.push_back(sampled_image(14, depth.view(), ctx.nearest_sampler()));
     lights_->add_direct_lists(writes);
+    lights_->add_shadow_views(writes);
     lights_->add_area_lists(writes);
     writes.push_back(sampled_image(19, depth.view(), ctx.nearest_sampler()));
     writes.push_back(uniform_buffer(20, settings_->handle()));

@@ -1,13 +1,15 @@
 // Sphere, tube and rectangle lights on a surface: exact diffuse irradiance
 // (area_light_formulas.glsl) and representative-point GGX specular with energy normalisation
-// (area_light_specular.glsl). lighting.deferred's area pass and scene.forward_transparent's
-// surfaces; bindings 16 to 18, the constants at 0 (lights.glsl).
+// (area_light_specular.glsl), both times the light's visibility from its shadow map
+// (area_shadows.glsl). lighting.deferred's area pass and scene.forward_transparent's surfaces;
+// bindings 16 to 18, the atlas at 14 and 15, the constants at 0 (lights.glsl).
 #ifndef LG_AREA_LIGHTS_GLSL
 #define LG_AREA_LIGHTS_GLSL
 
 #include "nodes/common/shaders/brdf.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_formulas.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_specular.glsl"
+#include "nodes/lighting/deferred/shaders/area_shadows.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
 
 layout(std430, binding = 16) readonly buffer Spheres { SphereLight spheres[]; };
@@ -35,31 +37,35 @@ vec3 area_radiance(Surface s) {
     SphereLight l = spheres[i];
     vec3 c = l.center_radius.xyz;
     float radius = l.center_radius.w;
-    added += diffuse_brdf * l.radiance.rgb * sphere_irradiance(c, radius, s.position, s.normal);
+    vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, sphere_extent(radius, normalize(s.position - c)));
+    added += diffuse_brdf * radiance * sphere_irradiance(c, radius, s.position, s.normal);
     RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
-    added += area_specular(s, rp, l.radiance.rgb, LG_PI * radius * radius);
+    added += area_specular(s, rp, radiance, LG_PI * radius * radius);
   }
   for (uint i = 0; i < counts.w; ++i) {
     TubeLight l = tubes[i];
     vec3 a = l.end0_radius.xyz, b = l.end1.xyz;
     float radius = l.end0_radius.w;
-    added += diffuse_brdf * l.radiance.rgb * tube_irradiance(a, b, radius, s.position, s.normal);
+    vec3 c = 0.5 * (a + b);
+    vec3 radiance = l.radiance.rgb * area_visibility(s, l.end1.w, c, tube_extent(a, b, radius, normalize(s.position - c)));
+    added += diffuse_brdf * radiance * tube_irradiance(a, b, radius, s.position, s.normal);
     RepresentativePoint rp = tube_specular_point(a, b, radius, s.position, r, s.alpha);
     // Seen from the side a capsule shows its caps' disc and the cylinder's length x diameter.
     vec3 axis = b - a;
     float len = length(axis);
     float sin_side = len > 0.0 ? length(cross(axis / len, rp.direction)) : 0.0;
-    added += area_specular(s, rp, l.radiance.rgb, LG_PI * radius * radius + 2.0 * radius * len * sin_side);
+    added += area_specular(s, rp, radiance, LG_PI * radius * radius + 2.0 * radius * len * sin_side);
   }
   for (uint i = 0; i < counts2.x; ++i) {
     RectLight l = rects[i];
     vec3 c = l.center_two_sided.xyz, hx = l.half_x.xyz, hy = l.half_y.xyz;
     bool two_sided = l.center_two_sided.w > 0.0;
-    added += diffuse_brdf * l.radiance.rgb * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
+    vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, rect_extent(hx, hy, normalize(s.position - c)));
+    added += diffuse_brdf * radiance * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
     RepresentativePoint rp = rect_specular_point(c, hx, hy, two_sided, s.position, r, s.alpha);
     vec3 normal = cross(hx, hy);
     float facing = abs(dot(normalize(normal), rp.direction));
-    added += area_specular(s, rp, l.radiance.rgb, 4.0 * length(normal) * facing);
+    added += area_specular(s, rp, radiance, 4.0 * length(normal) * facing);
   }
   return added;
 }

@@ -8,13 +8,12 @@
 
 #include "nodes/common/shaders/brdf.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
+#include "nodes/lighting/deferred/shaders/local_shadow_atlas.glsl"
 
 layout(binding = 10) uniform sampler2D shadow_map;
 layout(std430, binding = 11) readonly buffer Directional { DirectionalLight directional[]; };
 layout(std430, binding = 12) readonly buffer Points { PointLight points[]; };
 layout(std430, binding = 13) readonly buffer Spots { SpotLight spots[]; };
-layout(binding = 14) uniform sampler2D local_shadow_atlas;
-layout(std430, binding = 15) readonly buffer ShadowViews { ShadowView views[]; };
 
 // 3x3 percentage-closer filtering: the fraction of taps nearer the light than p is shadowed.
 // Reversed depth: a larger stored value is nearer the light.
@@ -41,10 +40,7 @@ float sun_visibility(Surface s) {
 // -Y, +Z, -Z: the one of p's major axis from the light).
 float local_visibility(Surface s, vec3 light_position, float first, float count) {
   if (first < 0.0 || local_shadow.x == 0.0) return 1.0;
-  vec3 d = s.position - light_position;
-  vec3 a = abs(d);
-  int face = a.x >= a.y && a.x >= a.z ? (d.x > 0.0 ? 0 : 1) : a.y >= a.z ? (d.y > 0.0 ? 2 : 3) : (d.z > 0.0 ? 4 : 5);
-  ShadowView view = views[int(first) + (count > 1.0 ? face : 0)];
+  ShadowView view = view_toward(first, count, s.position - light_position);
   float distance = (view.clip_from_world * vec4(s.position, 1.0)).w;
   if (distance <= local_shadow.y) return 1.0;  // behind the light or nearer than its map sees
   float texel = view.tile.w * distance;
@@ -53,12 +49,10 @@ float local_visibility(Surface s, vec3 light_position, float first, float count)
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;  // outside a spot's cone
   // Reversed depth: a stored value above this is nearer the light than p less the bias.
   float reference = local_shadow.y / max(clip.w - 2.0 * texel, 1e-6);
-  ivec2 lo = ivec2(view.tile.xy), hi = lo + ivec2(view.tile.z) - 1;
-  ivec2 center = lo + ivec2(uv * view.tile.z);
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x)
-      lit += texelFetch(local_shadow_atlas, clamp(center + ivec2(x, y), lo, hi), 0).r > reference ? 0.0 : 1.0;
+      lit += texelFetch(local_shadow_atlas, atlas_texel(view, clip, ivec2(x, y)), 0).r > reference ? 0.0 : 1.0;
   return lit / 9.0;
 }
 

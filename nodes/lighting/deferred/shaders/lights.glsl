@@ -25,6 +25,8 @@ struct ShadowView {
   mat4 clip_from_world;  // reversed Z: depth near / distance along the view
   vec4 tile;             // x, y: corner in the atlas, texels; z: edge, texels; w: texel size at distance 1
 };
+// An area light's w of `radiance` (a tube's of `end1`) is its first shadow view, -1 for none
+// (six views, a cube about its centre).
 struct SphereLight {
   vec4 center_radius;
   vec4 radiance;
@@ -47,7 +49,7 @@ layout(std140, binding = 0) uniform Constants {
   vec4 shadow;             // 1 / map size, 1 when the map was drawn, normal offset (world units), depth bias
   uvec4 counts;            // directional, point, sphere, tube (the rectangles' count is in counts2)
   uvec4 counts2;           // rectangles, spots
-  vec4 local_shadow;       // 1 when the local shadow atlas was drawn, the views' near plane
+  vec4 local_shadow;       // 1 when the local shadow atlas was drawn, the views' near plane, area-light shadow taps
 };
 
 #endif
