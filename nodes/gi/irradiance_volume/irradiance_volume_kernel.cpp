@@ -7,6 +7,7 @@
 // back to full resolution (nodes/common/shaders/joint_upsample.glsl).
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -33,8 +34,6 @@ namespace {
 
 struct Push {  // shaders/irradiance_volume.comp
   uint32_t volume_count;
-  uint32_t representation;  // ProbeRepresentation
-  uint32_t visibility;
   float normal_bias;
   float view_bias;
   float scale;  // the lookup target's resolution over the G-buffer's
@@ -48,9 +47,8 @@ class IrradianceVolumeKernel final : public NodeKernel {
     settings_.seed = uint64_t(param_number(node, "seed"));
     const std::optional<ProbeRepresentation> r = parse_probe_representation(param_string(node, "representation"));
     if (!r) throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': unknown representation");
+    constants_ = {uint32_t(*r), param_bool(node, "visibility") ? 1u : 0u};
     push_ = {0,
-             uint32_t(*r),
-             param_bool(node, "visibility") ? 1u : 0u,
              float(param_number(node, "normal_bias")),
              float(param_number(node, "view_bias")),
              float(param_number(node, "resolution_scale"))};
@@ -77,13 +75,13 @@ class IrradianceVolumeKernel final : public NodeKernel {
         uniform_buffer(0, camera_->handle()),
         sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
         sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-        storage_buffer(3, probes_->volumes()),
+        uniform_buffer(3, probes_->volumes()),
         sampled_image(4, probes_->records().view(), ctx.nearest_sampler()),
         sampled_image(5, probes_->irradiance().view(), ctx.linear_sampler()),
         sampled_image(6, probes_->distance().view(), ctx.linear_sampler()),
         storage_image(7, target.view())};
     dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/irradiance_volume.comp", writes, target.desc().width,
-                     target.desc().height, std::as_bytes(std::span(&push_, 1)));
+                     target.desc().height, std::as_bytes(std::span(&push_, 1)), kTileSize, constants_);
   }
 
   // At full resolution the lookup wrote the output itself, and there is nothing to do.
@@ -130,6 +128,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
 
   ProbeBakeSettings settings_;
   Push push_{};
+  std::array<uint32_t, 2> constants_{};  // shaders/irradiance_volume.comp: representation, visibility
   uint64_t baked_key_ = 0;
   std::optional<HostBuffer> camera_;
   std::optional<ProbeAtlasImages> probes_;

@@ -50,9 +50,15 @@ ProbeAtlas pack_probe_atlas(std::span<const ProbeGrid> grids, uint32_t max_image
   ProbeAtlas atlas;
   size_t probes = 0;
   for (const ProbeGrid& grid : grids) probes += grid.probes.size();
+  if (grids.size() > kMaxProbeVolumes)
+    throw std::invalid_argument("the scene has " + std::to_string(grids.size()) +
+                                " irradiance volumes, more than the lookup takes (" + std::to_string(kMaxProbeVolumes) +
+                                ")");
   const uint32_t widest = uint32_t(kDistanceTile);  // distance and record tiles are 16 texels wide
-  const size_t per_row = std::max<size_t>(1, size_t(std::ceil(std::sqrt(double(probes)))));
-  atlas.tiles_per_row = uint32_t(std::min<size_t>(per_row, max_image_side / widest));
+  const size_t square = size_t(std::ceil(std::sqrt(double(probes))));
+  size_t per_row = 1;
+  while (per_row < square && 2 * per_row * widest <= max_image_side) per_row *= 2;
+  atlas.tiles_per_row = uint32_t(per_row * widest <= max_image_side ? per_row : 0);
   const size_t rows =
       atlas.tiles_per_row ? std::max<size_t>(1, (probes + atlas.tiles_per_row - 1) / atlas.tiles_per_row) : probes;
   if (rows * widest > max_image_side)

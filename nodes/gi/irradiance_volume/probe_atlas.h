@@ -33,6 +33,7 @@ struct GpuProbeVolume {  // shaders/probe_volume.glsl ProbeVolume (std430)
 };
 static_assert(sizeof(GpuProbeVolume) == 160);
 
+inline constexpr size_t kMaxProbeVolumes = 64;  // shaders/probe_volume.glsl LG_MAX_PROBE_VOLUMES
 inline constexpr int kIrradianceTile = kProbeIrradianceTexels + 2;  // with the border
 inline constexpr int kDistanceTile = kProbeDistanceTexels + 2;
 inline constexpr int kProbeRecordTexels = 1 + kProbeShCount + 6;  // position, SH, ambient cube
@@ -46,15 +47,16 @@ struct AtlasImage {
 };
 
 struct ProbeAtlas {
-  std::vector<GpuProbeVolume> volumes;
+  std::vector<GpuProbeVolume> volumes;  // at most kMaxProbeVolumes
   uint32_t probe_count = 0;
   uint32_t tiles_per_row = 1, tile_rows = 1;
   AtlasImage irradiance, distance, records;
 };
 
-// Lays out every probe of `grids`; tiles fill rows of at most ceil(sqrt(probes)) tiles, so the
-// images stay about square. Throws std::invalid_argument when a side would exceed
-// `max_image_side` texels (the device's maxImageDimension2D).
+// Lays out every probe of `grids`; tiles fill rows of the power of two of tiles at or above
+// sqrt(probes), so the images stay about square and the shader finds a tile with shifts. Throws
+// std::invalid_argument when a side would exceed `max_image_side` texels (the device's
+// maxImageDimension2D) or there are more than kMaxProbeVolumes volumes.
 ProbeAtlas pack_probe_atlas(std::span<const ProbeGrid> grids, uint32_t max_image_side);
 
 }  // namespace lg

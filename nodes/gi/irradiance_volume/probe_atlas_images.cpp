@@ -21,11 +21,14 @@ struct Target {
 ProbeAtlasImages::ProbeAtlasImages(Context& gpu, std::string name)
     : gpu_(gpu),
       name_(std::move(name)),
-      volumes_(gpu, name_ + " volumes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      volumes_(gpu, name_ + " volumes", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       staging_(gpu, name_ + " atlas staging", VK_BUFFER_USAGE_TRANSFER_SRC_BIT) {}
 
 void ProbeAtlasImages::upload(VkCommandBuffer cmd, const ProbeAtlas& atlas) {
-  volumes_.write(atlas.volumes);
+  // The shader declares kMaxProbeVolumes of them: the buffer holds that many.
+  std::vector<GpuProbeVolume> volumes = atlas.volumes;
+  volumes.resize(kMaxProbeVolumes);
+  volumes_.write(volumes);
   const Target targets[] = {{&records_, &atlas.records, VK_FORMAT_R32G32B32A32_SFLOAT, "records"},
                             {&irradiance_, &atlas.irradiance, VK_FORMAT_R16G16B16A16_SFLOAT, "irradiance"},
                             {&distance_, &atlas.distance, VK_FORMAT_R32G32_SFLOAT, "distance"}};

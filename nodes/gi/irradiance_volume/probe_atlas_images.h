@@ -1,4 +1,4 @@
-// A probe atlas (probe_atlas.h) on the device: its volumes in a storage buffer and its three
+// A probe atlas (probe_atlas.h) on the device: its volumes in a uniform buffer and its three
 // images, uploaded through a staging buffer by commands recorded ahead of the reads in the same
 // command buffer. What gi.irradiance_volume's lookup binds; whoever changes probes (the in-graph
 // bake, dynamic updates) packs them with pack_probe_atlas() and calls upload().

@@ -20,10 +20,10 @@ layout(std140, binding = 0) uniform CameraBlock { Camera camera; };  // at the G
 layout(binding = 1) uniform sampler2D depth_tex;
 layout(binding = 2) uniform sampler2D normal_tex;
 layout(binding = 7, rgba16f) uniform writeonly image2D irradiance;
+layout(constant_id = 0) const uint representation = LG_PROBE_OCTAHEDRAL;  // ProbeRepresentation
+layout(constant_id = 1) const bool visibility = true;
 layout(push_constant) uniform Push {  // irradiance_volume_kernel.cpp
   uint volume_count;
-  uint representation;
-  uint visibility;
   float normal_bias;
   float view_bias;
   float scale;  // the target's resolution over the G-buffer's
@@ -40,6 +40,6 @@ void main() {
   }
   vec3 p = world_position(camera, source, depth);
   vec3 n = decode_normal(texelFetch(normal_tex, source, 0).rgb);
-  ProbeLookup s = ProbeLookup(representation, visibility != 0u, normal_bias, view_bias);
+  ProbeLookup s = ProbeLookup(representation, visibility, normal_bias, view_bias);
   imageStore(irradiance, texel, lookup_volumes(int(volume_count), p, n, camera.position.xyz, s));
 }

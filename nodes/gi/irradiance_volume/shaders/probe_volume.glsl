@@ -3,13 +3,16 @@
 // pack_probe_atlas() fills, and the GLSL port of lookup_irradiance() (nodes/gi/probes/
 // probe_lookup.cpp) and lookup_volumes(): change one, change the other. The octahedral maps are
 // read with one bilinear fetch each from the bordered atlas tiles, which reads the texels and
-// weights octahedral_taps() does on the CPU.
+// weights octahedral_taps() does on the CPU. The includer makes ProbeLookup's representation and
+// visibility specialization constants: lavapipe runs both sides of a branch on a value that is
+// only uniform, so every form would cost what all of them do.
 #ifndef LG_PROBE_VOLUME_GLSL
 #define LG_PROBE_VOLUME_GLSL
 
 const int LG_PROBE_IRRADIANCE_TEXELS = 6;  // kProbeIrradianceTexels
 const int LG_PROBE_DISTANCE_TEXELS = 14;   // kProbeDistanceTexels
 const int LG_PROBE_RECORD_TEXELS = 16;     // kProbeRecordTexels: position, 9 SH, 6 ambient cube
+const int LG_MAX_PROBE_VOLUMES = 64;       // kMaxProbeVolumes
 
 struct ProbeVolume {
   mat4 world_from_grid;  // probe (i, j, k) at (i, j, k)
@@ -21,7 +24,9 @@ struct ProbeVolume {
 // ProbeRepresentation
 const uint LG_PROBE_SH_L1 = 0u, LG_PROBE_SH_L2 = 1u, LG_PROBE_AMBIENT_CUBE = 2u, LG_PROBE_OCTAHEDRAL = 3u;
 
-layout(std430, binding = LG_PROBE_VOLUME_BINDING) readonly buffer ProbeVolumes { ProbeVolume volumes[]; };
+// A uniform buffer, not a storage buffer: lavapipe loads a storage buffer lane by lane, a uniform
+// one at an index every lane shares once.
+layout(std140, binding = LG_PROBE_VOLUME_BINDING) uniform ProbeVolumes { ProbeVolume volumes[LG_MAX_PROBE_VOLUMES]; };
 layout(binding = LG_PROBE_RECORD_BINDING) uniform sampler2D probe_records;        // nearest
 layout(binding = LG_PROBE_IRRADIANCE_BINDING) uniform sampler2D probe_irradiance_atlas;  // linear, clamped
 layout(binding = LG_PROBE_DISTANCE_BINDING) uniform sampler2D probe_distance_atlas;      // linear, clamped
@@ -33,10 +38,11 @@ vec2 octahedral_encode(vec3 d) {
   return p * 0.5 + 0.5;
 }
 
-// Where probe p's tile sits: tiles fill rows of the records image's width.
+// Where probe p's tile sits: tiles fill rows of the records image's width, a power of two of
+// tiles (shifts and masks, as lavapipe divides integers lane by lane).
 ivec2 probe_tile(int p) {
   int per_row = textureSize(probe_records, 0).x / LG_PROBE_RECORD_TEXELS;
-  return ivec2(p % per_row, p / per_row);
+  return ivec2(p & (per_row - 1), p >> findLSB(per_row));
 }
 
 vec4 probe_record(ivec2 tile, int k) {
