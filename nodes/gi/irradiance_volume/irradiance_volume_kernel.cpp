@@ -9,6 +9,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
@@ -36,8 +37,18 @@ struct Push {  // shaders/irradiance_volume.comp
   uint32_t volume_count;
   float normal_bias;
   float view_bias;
-  float scale;  // the lookup target's resolution over the G-buffer's
+  int32_t k;  // the G-buffer's resolution over the lookup target's: 1 / resolution_scale
 };
+
+// resolution_scale as 1 / k: the upsample works in blocks of k x k pixels.
+int32_t resolution_divisor(const PlanNode& node) {
+  const double scale = param_number(node, "resolution_scale");
+  const double k = std::round(1.0 / scale);
+  if (!(std::abs(scale * k - 1.0) < 1e-6))
+    throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': resolution_scale " + std::to_string(scale) +
+                                " is not 1 over a whole number (1, 0.5, 0.333333, 0.25)");
+  return int32_t(k);
+}
 
 class IrradianceVolumeKernel final : public NodeKernel {
  public:
@@ -51,7 +62,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
     push_ = {0,
              float(param_number(node, "normal_bias")),
              float(param_number(node, "view_bias")),
-             float(param_number(node, "resolution_scale"))};
+             resolution_divisor(node)};
   }
 
   void record(PassContext& ctx) override {
@@ -64,7 +75,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
   }
 
  private:
-  bool full_resolution() const { return push_.scale >= 1.0f; }
+  bool full_resolution() const { return push_.k == 1; }
 
   void lookup(PassContext& ctx) {
     bake(ctx);
@@ -84,16 +95,18 @@ class IrradianceVolumeKernel final : public NodeKernel {
                      target.desc().height, std::as_bytes(std::span(&push_, 1)), kTileSize, constants_);
   }
 
-  // At full resolution the lookup wrote the output itself, and there is nothing to do.
+  // One invocation per texel of lowres, each writing its block of k x k pixels. At full
+  // resolution the lookup wrote the output itself, and there is nothing to do.
   void upsample(PassContext& ctx) {
     if (full_resolution()) return;
     Image& out = ctx.image("out.irradiance");
-    const DescriptorWrite writes[] = {sampled_image(0, ctx.image("tmp.lowres").view(), ctx.nearest_sampler()),
+    Image& low = ctx.image("tmp.lowres");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
                                       sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
                                       storage_image(3, out.view())};
-    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/upsample.comp", writes, out.desc().width,
-                     out.desc().height, std::as_bytes(std::span(&push_.scale, 1)));
+    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/upsample.comp", writes, low.desc().width,
+                     low.desc().height, std::as_bytes(std::span(&push_.k, 1)));
   }
 
   void bake(PassContext& ctx) {

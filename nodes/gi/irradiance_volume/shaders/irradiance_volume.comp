@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // gi.irradiance_volume's lookup: per texel of its target the irradiance from the scene's probe
 // volumes (probe_volume.glsl's lookup_volumes), rgb in W/m^2 and a the coverage; 0 on the sky
-// and outside every volume. The target is the output itself, or at resolution_scale below 1 a
-// smaller image whose texel i is the G-buffer's texel upsample_source_texel(i) (upsample.comp
+// and outside every volume. The target is the output itself, or at resolution_scale 1/k below 1 a
+// smaller image whose texel i is the G-buffer's texel upsample_source_texel(i, k) (upsample.comp
 // brings it back to full resolution).
 #define LG_PROBE_VOLUME_BINDING 3
 #define LG_PROBE_RECORD_BINDING 4
@@ -26,13 +26,13 @@ layout(push_constant) uniform Push {  // irradiance_volume_kernel.cpp
   uint volume_count;
   float normal_bias;
   float view_bias;
-  float scale;  // the target's resolution over the G-buffer's
+  int k;  // the G-buffer's resolution over the target's
 };
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(texel, imageSize(irradiance)))) return;
-  ivec2 source = upsample_source_texel(texel, scale, textureSize(depth_tex, 0));
+  ivec2 source = upsample_source_texel(texel, k, textureSize(depth_tex, 0));
   float depth = texelFetch(depth_tex, source, 0).r;
   if (depth <= 0.0) {
     imageStore(irradiance, texel, vec4(0.0));
