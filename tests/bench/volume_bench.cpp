@@ -48,9 +48,7 @@ Graph lookup_graph(const Setting& s) {
   Diagnostics d("volume-bench.json");
   std::ostringstream params;
   params << R"({ "representation": ")" << s.representation << R"(", "visibility": )"
-         << (s.visibility ? "true" : "false");
-  if (s.scale != 1.0) params << R"(, "resolution_scale": )" << s.scale;
-  params << " }";
+         << (s.visibility ? "true" : "false") << R"(, "resolution_scale": )" << s.scale << " }";
   std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
       { "id": "volume", "type": "gi.irradiance_volume", "params": )" +

@@ -2,13 +2,14 @@
 // border texel repeats the map texel octahedral_wrap() names, so that a bilinear fetch from a
 // bordered tile (clamped, as the GPU's linear sampler reads it) gives what octahedral_taps() does
 // from the map itself; records and volumes say where each probe is.
+#include "nodes/gi/irradiance_volume/probe_atlas.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <random>
 
-#include "nodes/gi/irradiance_volume/probe_atlas.h"
 #include "nodes/gi/probes/octahedral_map.h"
 
 namespace lg::test {
@@ -48,7 +49,8 @@ glm::dvec4 bilinear(const AtlasImage& image, glm::dvec2 at) {
   glm::dvec4 sum(0.0);
   for (int n = 0; n < 4; ++n) {
     const int dx = n & 1, dy = n >> 1;
-    sum += (dx ? t.x : 1.0 - t.x) * (dy ? t.y : 1.0 - t.y) * glm::dvec4(atlas_texel(image, int(f.x) + dx, int(f.y) + dy));
+    sum +=
+        (dx ? t.x : 1.0 - t.x) * (dy ? t.y : 1.0 - t.y) * glm::dvec4(atlas_texel(image, int(f.x) + dx, int(f.y) + dy));
   }
   return sum;
 }
@@ -66,7 +68,8 @@ void expect_bordered_map_matches(const AtlasImage& image, glm::uvec2 tile, const
   // Random directions, and the poles and the equator's corners, where the wrap is hardest.
   std::normal_distribution<double> normal;
   std::vector<glm::dvec3> directions = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0}, {1e-9, 1e-9, -1}};
-  for (int n = 0; n < 2000; ++n) directions.push_back(glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng))));
+  for (int n = 0; n < 2000; ++n)
+    directions.push_back(glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng))));
   for (const glm::dvec3& d : directions) {
     const OctahedralTaps taps = octahedral_taps(d, k);
     glm::dvec4 expected(0.0);

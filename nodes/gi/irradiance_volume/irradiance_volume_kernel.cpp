@@ -19,9 +19,9 @@
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
-#include "nodes/gi/irradiance_volume/probe_bake_key.h"
 #include "nodes/gi/irradiance_volume/probe_atlas.h"
 #include "nodes/gi/irradiance_volume/probe_atlas_images.h"
+#include "nodes/gi/irradiance_volume/probe_bake_key.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/probes/probe_bake.h"
 #include "nodes/gi/probes/probe_lookup.h"
@@ -59,9 +59,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
     const std::optional<ProbeRepresentation> r = parse_probe_representation(param_string(node, "representation"));
     if (!r) throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': unknown representation");
     constants_ = {uint32_t(*r), param_bool(node, "visibility") ? 1u : 0u};
-    push_ = {0,
-             float(param_number(node, "normal_bias")),
-             float(param_number(node, "view_bias")),
+    push_ = {0, float(param_number(node, "normal_bias")), float(param_number(node, "view_bias")),
              resolution_divisor(node)};
   }
 
@@ -82,15 +80,14 @@ class IrradianceVolumeKernel final : public NodeKernel {
     const Image& depth = ctx.image("in.gbuffer", 0);
     Image& target = ctx.image(full_resolution() ? "out.irradiance" : "tmp.lowres");
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
-    const DescriptorWrite writes[] = {
-        uniform_buffer(0, camera_->handle()),
-        sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
-        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-        uniform_buffer(3, probes_->volumes()),
-        sampled_image(4, probes_->records().view(), ctx.nearest_sampler()),
-        sampled_image(5, probes_->irradiance().view(), ctx.linear_sampler()),
-        sampled_image(6, probes_->distance().view(), ctx.linear_sampler()),
-        storage_image(7, target.view())};
+    const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      uniform_buffer(3, probes_->volumes()),
+                                      sampled_image(4, probes_->records().view(), ctx.nearest_sampler()),
+                                      sampled_image(5, probes_->irradiance().view(), ctx.linear_sampler()),
+                                      sampled_image(6, probes_->distance().view(), ctx.linear_sampler()),
+                                      storage_image(7, target.view())};
     dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/irradiance_volume.comp", writes, target.desc().width,
                      target.desc().height, std::as_bytes(std::span(&push_, 1)), kTileSize, constants_);
   }

@@ -33,11 +33,11 @@ struct GpuProbeVolume {  // shaders/probe_volume.glsl ProbeVolume (std430)
 };
 static_assert(sizeof(GpuProbeVolume) == 160);
 
-inline constexpr size_t kMaxProbeVolumes = 64;  // shaders/probe_volume.glsl LG_MAX_PROBE_VOLUMES
+inline constexpr size_t kMaxProbeVolumes = 64;                      // shaders/probe_volume.glsl LG_MAX_PROBE_VOLUMES
 inline constexpr int kIrradianceTile = kProbeIrradianceTexels + 2;  // with the border
 inline constexpr int kDistanceTile = kProbeDistanceTexels + 2;
 inline constexpr int kProbeRecordTexels = 1 + kProbeShCount + 6;  // position, SH, ambient cube
-static_assert(kProbeRecordTexels == 16);                         // shaders/probe_volume.glsl
+static_assert(kProbeRecordTexels == 16);                          // shaders/probe_volume.glsl
 
 // One image of the atlas: float RGBA (4 floats a texel, row by row), converted to the image's
 // format on upload.

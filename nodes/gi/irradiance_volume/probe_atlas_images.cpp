@@ -41,8 +41,8 @@ void ProbeAtlasImages::upload(VkCommandBuffer cmd, const ProbeAtlas& atlas) {
     const size_t texels = size_t(t.source->width) * t.source->height;
     bytes.resize(bytes.size() + texels * format.bytes_per_texel);
     encode_texels(format, t.source->rgba, std::span(bytes).subspan(offsets.back()));
-    const bool same = *t.image && (*t.image)->desc().width == t.source->width &&
-                      (*t.image)->desc().height == t.source->height;
+    const bool same =
+        *t.image && (*t.image)->desc().width == t.source->width && (*t.image)->desc().height == t.source->height;
     if (!same)
       t.image->emplace(Image::dedicated(gpu_, {.name = name_ + " probe " + t.what,
                                                .format = t.format,
