@@ -44,7 +44,7 @@ struct Push {  // shaders/irradiance_volume.comp
 int32_t resolution_divisor(const PlanNode& node) {
   const double scale = param_number(node, "resolution_scale");
   const double k = std::round(1.0 / scale);
-  if (!(std::abs(scale * k - 1.0) < 1e-6))
+  if (!(std::abs(scale * k - 1.0) < 1e-4))
     throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': resolution_scale " + std::to_string(scale) +
                                 " is not 1 over a whole number (1, 0.5, 0.333333, 0.25)");
   return int32_t(k);
