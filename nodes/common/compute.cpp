@@ -14,8 +14,10 @@ void compute_to_compute_barrier(VkCommandBuffer cmd) {
 }
 
 void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
-                      uint32_t width, uint32_t height, std::span<const std::byte> push, uint32_t tile) {
+                      uint32_t width, uint32_t height, std::span<const std::byte> push, uint32_t tile,
+                      std::span<const uint32_t> constants) {
   ComputePipelineDesc desc;
+  desc.constants.assign(constants.begin(), constants.end());
   desc.name = ctx.pass().name;
   desc.shader = node_shader(shader);
   for (const DescriptorWrite& w : writes) desc.bindings.push_back({w.binding, w.type});

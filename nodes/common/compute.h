@@ -25,8 +25,10 @@ inline void dispatch_texels(VkCommandBuffer cmd, uint32_t width, uint32_t height
 void compute_to_compute_barrier(VkCommandBuffer cmd);
 
 // The pipeline of `shader` (a path under nodes/, see node_shaders.h) takes its bindings from
-// `writes`; the pass's name labels it in validation messages.
+// `writes` and its specialization constants from `constants` (ComputePipelineDesc::constants);
+// the pass's name labels it in validation messages.
 void dispatch_compute(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
-                      uint32_t width, uint32_t height, std::span<const std::byte> push = {}, uint32_t tile = kTileSize);
+                      uint32_t width, uint32_t height, std::span<const std::byte> push = {}, uint32_t tile = kTileSize,
+                      std::span<const uint32_t> constants = {});
 
 }  // namespace lg

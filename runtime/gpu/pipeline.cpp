@@ -146,6 +146,7 @@ const Pipeline& PipelineCache::compute(const ComputePipelineDesc& desc) {
   Key key;
   key.add('C').add_all(desc.shader);
   add_layout(key, desc.bindings, desc.push_constant_bytes);
+  key.add_all(std::span(desc.constants));
   std::string bytes = key.take();
   if (auto it = pipelines_.find(bytes); it != pipelines_.end()) return it->second;
 
@@ -158,6 +159,12 @@ const Pipeline& PipelineCache::compute(const ComputePipelineDesc& desc) {
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module.handle();
     info.stage.pName = "main";
+    std::vector<VkSpecializationMapEntry> entries;
+    for (uint32_t i = 0; i < desc.constants.size(); ++i)
+      entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
+    const VkSpecializationInfo constants{uint32_t(entries.size()), entries.data(),
+                                         desc.constants.size() * sizeof(uint32_t), desc.constants.data()};
+    if (!entries.empty()) info.stage.pSpecializationInfo = &constants;
     info.layout = out.layout;
     vk_check(vkCreateComputePipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &out.handle),
              "vkCreateComputePipelines", "for '" + desc.name + "'");

@@ -28,6 +28,10 @@ struct ComputePipelineDesc {
   std::span<const uint32_t> shader{};
   std::vector<DescriptorBinding> bindings{};
   uint32_t push_constant_bytes = 0;
+  // Specialization constants, 32 bits each: constant_id i takes constants[i]. The driver folds
+  // them like literals, so branches on them cost nothing (lavapipe runs both sides of a branch on
+  // a uniform value, masked, but drops a folded one).
+  std::vector<uint32_t> constants{};
 };
 
 // additive: src + dst; alpha: src x src alpha + dst x (1 - src alpha); premultiplied: src +

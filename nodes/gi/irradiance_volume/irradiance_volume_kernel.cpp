@@ -1,11 +1,15 @@
 // gi.irradiance_volume's kernel. The "lookup" pass first makes sure the probes are current: when
 // probe_bake_key() of the frame's scene differs from the last bake's, every volume is baked again
 // with bake_probes() (Embree on every core, the path tracer's transport under the plan's own
-// environment, plan_environment()) and uploaded; otherwise the probes on the device stay as they
-// are. Then one dispatch looks them up per pixel.
+// environment, plan_environment()) and uploaded as an atlas (probe_atlas.h); otherwise the probes
+// on the device stay as they are. Then one dispatch looks them up per pixel, at full resolution
+// into the output, or at resolution_scale into a smaller image that the "upsample" pass brings
+// back to full resolution (nodes/common/shaders/joint_upsample.glsl).
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
@@ -15,8 +19,9 @@
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
+#include "nodes/gi/irradiance_volume/probe_atlas.h"
+#include "nodes/gi/irradiance_volume/probe_atlas_images.h"
 #include "nodes/gi/irradiance_volume/probe_bake_key.h"
-#include "nodes/gi/irradiance_volume/probe_buffer.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/probes/probe_bake.h"
 #include "nodes/gi/probes/probe_lookup.h"
@@ -30,11 +35,20 @@ namespace {
 
 struct Push {  // shaders/irradiance_volume.comp
   uint32_t volume_count;
-  uint32_t representation;  // ProbeRepresentation
-  uint32_t visibility;
   float normal_bias;
   float view_bias;
+  int32_t k;  // the G-buffer's resolution over the lookup target's: 1 / resolution_scale
 };
+
+// resolution_scale as 1 / k: the upsample works in blocks of k x k pixels.
+int32_t resolution_divisor(const PlanNode& node) {
+  const double scale = param_number(node, "resolution_scale");
+  const double k = std::round(1.0 / scale);
+  if (!(std::abs(scale * k - 1.0) < 1e-4))
+    throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': resolution_scale " + std::to_string(scale) +
+                                " is not 1 over a whole number (1, 0.5, 0.333333, 0.25)");
+  return int32_t(k);
+}
 
 class IrradianceVolumeKernel final : public NodeKernel {
  public:
@@ -44,35 +58,61 @@ class IrradianceVolumeKernel final : public NodeKernel {
     settings_.seed = uint64_t(param_number(node, "seed"));
     const std::optional<ProbeRepresentation> r = parse_probe_representation(param_string(node, "representation"));
     if (!r) throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': unknown representation");
-    push_ = {0, uint32_t(*r), param_bool(node, "visibility") ? 1u : 0u, float(param_number(node, "normal_bias")),
-             float(param_number(node, "view_bias"))};
+    constants_ = {uint32_t(*r), param_bool(node, "visibility") ? 1u : 0u};
+    push_ = {0, float(param_number(node, "normal_bias")), float(param_number(node, "view_bias")),
+             resolution_divisor(node)};
   }
 
   void record(PassContext& ctx) override {
-    if (ctx.pass().pass != "lookup")
+    if (ctx.pass().pass == "lookup")
+      lookup(ctx);
+    else if (ctx.pass().pass == "upsample")
+      upsample(ctx);
+    else
       throw std::logic_error("gi.irradiance_volume has no pass '" + ctx.pass().pass + "'");
-    bake(ctx);
-    Image& out = ctx.image("out.irradiance");
-    camera_->write_value(camera_constants(ctx.scene().camera, out.desc().width, out.desc().height));
-    const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()),
-                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
-                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-                                      storage_buffer(3, volumes_->handle()),
-                                      storage_buffer(4, probes_->handle()),
-                                      storage_image(5, out.view())};
-    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/irradiance_volume.comp", writes, out.desc().width,
-                     out.desc().height, std::as_bytes(std::span(&push_, 1)));
   }
 
  private:
+  bool full_resolution() const { return push_.k == 1; }
+
+  void lookup(PassContext& ctx) {
+    bake(ctx);
+    const Image& depth = ctx.image("in.gbuffer", 0);
+    Image& target = ctx.image(full_resolution() ? "out.irradiance" : "tmp.lowres");
+    camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
+    const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      uniform_buffer(3, probes_->volumes()),
+                                      sampled_image(4, probes_->records().view(), ctx.nearest_sampler()),
+                                      sampled_image(5, probes_->irradiance().view(), ctx.linear_sampler()),
+                                      sampled_image(6, probes_->distance().view(), ctx.linear_sampler()),
+                                      storage_image(7, target.view())};
+    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/irradiance_volume.comp", writes, target.desc().width,
+                     target.desc().height, std::as_bytes(std::span(&push_, 1)), kTileSize, constants_);
+  }
+
+  // One invocation per texel of lowres, each writing its block of k x k pixels. At full
+  // resolution the lookup wrote the output itself, and there is nothing to do.
+  void upsample(PassContext& ctx) {
+    if (full_resolution()) return;
+    Image& out = ctx.image("out.irradiance");
+    Image& low = ctx.image("tmp.lowres");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(3, out.view())};
+    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/upsample.comp", writes, low.desc().width,
+                     low.desc().height, std::as_bytes(std::span(&push_.k, 1)));
+  }
+
   void bake(PassContext& ctx) {
     const SceneView& scene = ctx.scene();
     const uint64_t key = probe_bake_key(scene);
     if (camera_ && baked_key_ == key) return;
     if (!camera_) {
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-      volumes_.emplace(ctx.gpu(), ctx.node().id + " volumes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-      probes_.emplace(ctx.gpu(), ctx.node().id + " probes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      probes_.emplace(ctx.gpu(), ctx.node().id);
     }
     const auto start = std::chrono::steady_clock::now();
     const std::string who = "gi.irradiance_volume '" + ctx.node().id + "'";
@@ -82,26 +122,26 @@ class IrradianceVolumeKernel final : public NodeKernel {
       ProbeGrid& grid = grids.emplace_back(volume);
       bake_probes(traced, grid, settings_, 0, grid.probe_count());
     }
-    const ProbeBuffers buffers = pack_probes(grids);
-    const uint64_t bytes = buffers.probes.size() * sizeof(GpuProbe);
-    const uint64_t limit = ctx.gpu().properties().limits.maxStorageBufferRange;
-    if (bytes > limit)
-      throw std::invalid_argument(who + ": the scene's " + std::to_string(buffers.probes.size()) + " probes take " +
-                                  std::to_string(bytes >> 20) + " MiB, more than the device's storage buffers hold (" +
-                                  std::to_string(limit >> 20) + " MiB): use fewer probes");
-    volumes_->write(buffers.volumes);
-    probes_->write(buffers.probes);
-    push_.volume_count = uint32_t(buffers.volumes.size());
+    ProbeAtlas atlas;
+    try {
+      atlas = pack_probe_atlas(grids, ctx.gpu().properties().limits.maxImageDimension2D);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(who + ": " + e.what());
+    }
+    probes_->upload(ctx.cmd(), atlas);
+    push_.volume_count = uint32_t(atlas.volumes.size());
     baked_key_ = key;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "%s: baked %zu probes in %zu volume(s), %u rays, %u bounces, in %.2f s\n", who.c_str(),
-                 buffers.probes.size(), grids.size(), settings_.rays, settings_.bounces, seconds);
+                 size_t(atlas.probe_count), grids.size(), settings_.rays, settings_.bounces, seconds);
   }
 
   ProbeBakeSettings settings_;
   Push push_{};
+  std::array<uint32_t, 2> constants_{};  // shaders/irradiance_volume.comp: representation, visibility
   uint64_t baked_key_ = 0;
-  std::optional<HostBuffer> camera_, volumes_, probes_;
+  std::optional<HostBuffer> camera_;
+  std::optional<ProbeAtlasImages> probes_;
 };
 
 }  // namespace

@@ -1,12 +1,18 @@
-// The probes of gi.irradiance_volume on the device and their lookup: the std430 layout that
-// nodes/gi/irradiance_volume/probe_buffer.h fills (GpuProbeVolume, GpuProbe; the sizes are
-// checked there), and the GLSL port of lookup_irradiance() (nodes/gi/probes/probe_lookup.cpp)
-// and lookup_volumes(), line by line: change one, change the other.
+// The probes of gi.irradiance_volume on the device and their lookup: the volumes (std430, as
+// nodes/gi/irradiance_volume/probe_atlas.h's GpuProbeVolume) and the atlas images that
+// pack_probe_atlas() fills, and the GLSL port of lookup_irradiance() (nodes/gi/probes/
+// probe_lookup.cpp) and lookup_volumes(): change one, change the other. The octahedral maps are
+// read with one bilinear fetch each from the bordered atlas tiles, which reads the texels and
+// weights octahedral_taps() does on the CPU. The includer makes ProbeLookup's representation and
+// visibility specialization constants: lavapipe runs both sides of a branch on a value that is
+// only uniform, so every form would cost what all of them do.
 #ifndef LG_PROBE_VOLUME_GLSL
 #define LG_PROBE_VOLUME_GLSL
 
 const int LG_PROBE_IRRADIANCE_TEXELS = 6;  // kProbeIrradianceTexels
 const int LG_PROBE_DISTANCE_TEXELS = 14;   // kProbeDistanceTexels
+const int LG_PROBE_RECORD_TEXELS = 16;     // kProbeRecordTexels: position, 9 SH, 6 ambient cube
+const int LG_MAX_PROBE_VOLUMES = 64;       // kMaxProbeVolumes
 
 struct ProbeVolume {
   mat4 world_from_grid;  // probe (i, j, k) at (i, j, k)
@@ -15,16 +21,15 @@ struct ProbeVolume {
   vec4 cell;     // x: the smallest spacing in world units (ProbeGrid::min_spacing)
 };
 
-struct Probe {
-  vec4 position;  // xyz: the grid point plus its relocation, world space; w: 1 active, 0 off
-  vec4 sh[9];     // rgb
-  vec4 ambient_cube[6];
-  vec4 irradiance[LG_PROBE_IRRADIANCE_TEXELS * LG_PROBE_IRRADIANCE_TEXELS];  // row by row
-  vec2 distance[LG_PROBE_DISTANCE_TEXELS * LG_PROBE_DISTANCE_TEXELS];        // mean, mean square
-};
-
 // ProbeRepresentation
 const uint LG_PROBE_SH_L1 = 0u, LG_PROBE_SH_L2 = 1u, LG_PROBE_AMBIENT_CUBE = 2u, LG_PROBE_OCTAHEDRAL = 3u;
+
+// A uniform buffer, not a storage buffer: lavapipe loads a storage buffer lane by lane, a uniform
+// one at an index every lane shares once.
+layout(std140, binding = LG_PROBE_VOLUME_BINDING) uniform ProbeVolumes { ProbeVolume volumes[LG_MAX_PROBE_VOLUMES]; };
+layout(binding = LG_PROBE_RECORD_BINDING) uniform sampler2D probe_records;        // nearest
+layout(binding = LG_PROBE_IRRADIANCE_BINDING) uniform sampler2D probe_irradiance_atlas;  // linear, clamped
+layout(binding = LG_PROBE_DISTANCE_BINDING) uniform sampler2D probe_distance_atlas;      // linear, clamped
 
 // octahedral_map.cpp
 vec2 octahedral_encode(vec3 d) {
@@ -33,63 +38,42 @@ vec2 octahedral_encode(vec3 d) {
   return p * 0.5 + 0.5;
 }
 
-ivec2 octahedral_wrap(int i, int j, int k) {
-  bool out_i = i < 0 || i >= k, out_j = j < 0 || j >= k;
-  if (out_i && out_j) return ivec2(i < 0 ? k - 1 : 0, j < 0 ? k - 1 : 0);
-  if (out_i) return ivec2(i < 0 ? 0 : k - 1, k - 1 - j);
-  if (out_j) return ivec2(k - 1 - i, j < 0 ? 0 : k - 1);
-  return ivec2(i, j);
+// Where probe p's tile sits: tiles fill rows of the records image's width, a power of two of
+// tiles (shifts and masks, as lavapipe divides integers lane by lane).
+ivec2 probe_tile(int p) {
+  int per_row = textureSize(probe_records, 0).x / LG_PROBE_RECORD_TEXELS;
+  return ivec2(p & (per_row - 1), p >> findLSB(per_row));
 }
 
-// The bilinear taps of `d` in a k x k map: texel indices (row by row) and weights.
-void octahedral_taps(vec3 d, int k, out int texel[4], out float weight[4]) {
-  vec2 p = octahedral_encode(d) * float(k) - 0.5;
-  vec2 f = floor(p), t = p - f;
-  for (int n = 0; n < 4; ++n) {
-    int dx = n & 1, dy = n >> 1;
-    ivec2 c = octahedral_wrap(int(f.x) + dx, int(f.y) + dy, k);
-    texel[n] = c.y * k + c.x;
-    weight[n] = (dx != 0 ? t.x : 1.0 - t.x) * (dy != 0 ? t.y : 1.0 - t.y);
-  }
+vec4 probe_record(ivec2 tile, int k) {
+  return texelFetch(probe_records, ivec2(tile.x * LG_PROBE_RECORD_TEXELS + k, tile.y), 0);
 }
 
-layout(std430, binding = LG_PROBE_VOLUME_BINDING) readonly buffer ProbeVolumes { ProbeVolume volumes[]; };
-layout(std430, binding = LG_PROBE_BINDING) readonly buffer Probes { Probe probes[]; };
-
-vec3 sample_irradiance_map(int p, vec3 d) {
-  int texel[4];
-  float weight[4];
-  octahedral_taps(d, LG_PROBE_IRRADIANCE_TEXELS, texel, weight);
-  vec3 sum = vec3(0.0);
-  for (int n = 0; n < 4; ++n) sum += weight[n] * probes[p].irradiance[texel[n]].rgb;
-  return sum;
-}
-
-vec2 sample_distance_map(int p, vec3 d) {
-  int texel[4];
-  float weight[4];
-  octahedral_taps(d, LG_PROBE_DISTANCE_TEXELS, texel, weight);
-  vec2 sum = vec2(0.0);
-  for (int n = 0; n < 4; ++n) sum += weight[n] * probes[p].distance[texel[n]];
-  return sum;
+// The bilinear fetch of direction d in a bordered k x k map: map texel (i, j) sits at tile texel
+// (i + 1, j + 1), so coordinates from k * encode(d) - 0.5 reach the borders at -1 and k.
+vec4 sample_octahedral(sampler2D atlas, ivec2 tile, vec3 d, int k) {
+  vec2 texel = vec2(tile * (k + 2) + 1) + octahedral_encode(d) * float(k);
+  return textureLod(atlas, texel / vec2(textureSize(atlas, 0)), 0.0);
 }
 
 // probe_irradiance(). The SH basis up to band 2 in closed form: the env basis (sh_basis.glsl:
 // orthonormal, index l (l + 1) + m, no Condon-Shortley phase), without its band-4 loop and array.
-vec3 probe_irradiance(int p, vec3 n, uint representation) {
-  if (representation == LG_PROBE_OCTAHEDRAL) return sample_irradiance_map(p, n);
+vec3 probe_irradiance(ivec2 tile, vec3 n, uint representation) {
+  if (representation == LG_PROBE_OCTAHEDRAL)
+    return sample_octahedral(probe_irradiance_atlas, tile, n, LG_PROBE_IRRADIANCE_TEXELS).rgb;
   if (representation == LG_PROBE_AMBIENT_CUBE) {
     vec3 e = vec3(0.0);
-    for (int a = 0; a < 3; ++a) e += n[a] * n[a] * probes[p].ambient_cube[2 * a + (n[a] < 0.0 ? 1 : 0)].rgb;
+    for (int a = 0; a < 3; ++a) e += n[a] * n[a] * probe_record(tile, 10 + 2 * a + (n[a] < 0.0 ? 1 : 0)).rgb;
     return e;
   }
-  vec3 e = 0.282095 * probes[p].sh[0].rgb + 0.488603 * (n.y * probes[p].sh[1].rgb + n.z * probes[p].sh[2].rgb +
-                                                        n.x * probes[p].sh[3].rgb);
+  vec3 e = 0.282095 * probe_record(tile, 1).rgb +
+           0.488603 * (n.y * probe_record(tile, 2).rgb + n.z * probe_record(tile, 3).rgb +
+                       n.x * probe_record(tile, 4).rgb);
   if (representation == LG_PROBE_SH_L2)
-    e += 1.092548 * (n.x * n.y * probes[p].sh[4].rgb + n.y * n.z * probes[p].sh[5].rgb +
-                     n.x * n.z * probes[p].sh[7].rgb) +
-         0.315392 * (3.0 * n.z * n.z - 1.0) * probes[p].sh[6].rgb +
-         0.546274 * (n.x * n.x - n.y * n.y) * probes[p].sh[8].rgb;
+    e += 1.092548 * (n.x * n.y * probe_record(tile, 5).rgb + n.y * n.z * probe_record(tile, 6).rgb +
+                     n.x * n.z * probe_record(tile, 8).rgb) +
+         0.315392 * (3.0 * n.z * n.z - 1.0) * probe_record(tile, 7).rgb +
+         0.546274 * (n.x * n.x - n.y * n.y) * probe_record(tile, 9).rgb;
   return max(e, vec3(0.0));
 }
 
@@ -106,13 +90,12 @@ float probe_volume_margin(vec3 g, ivec3 counts) {
   return min(m.x, min(m.y, m.z));
 }
 
-// lookup_irradiance(): rgb the irradiance, a 1; vec4(0) where the volume does not serve.
+// lookup_irradiance() for a point the caller found inside volume v's served box: rgb the
+// irradiance, a 1; vec4(0) when no probe around the point is on.
 vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
   mat4 grid_from_world = volumes[v].grid_from_world;
   ivec3 counts = volumes[v].counts.xyz;
   int first = volumes[v].counts.w;
-  vec3 g = (grid_from_world * vec4(position, 1.0)).xyz;
-  if (!(probe_volume_margin(g, counts) >= 0.0)) return vec4(0.0);
   float cell = volumes[v].cell.x;
   vec3 to_eye = normalize(eye - position);
   vec3 biased = position + (n * s.normal_bias + to_eye * s.view_bias) * cell;
@@ -124,8 +107,8 @@ vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
   for (int corner = 0; corner < 8; ++corner) {
     ivec3 step = ivec3(corner & 1, (corner >> 1) & 1, corner >> 2);
     ivec3 c = min(base + step, counts - 1);
-    int p = first + (c.z * counts.y + c.y) * counts.x + c.x;
-    vec4 probe_position = probes[p].position;
+    ivec2 tile = probe_tile(first + (c.z * counts.y + c.y) * counts.x + c.x);
+    vec4 probe_position = probe_record(tile, 0);
     if (probe_position.w == 0.0) continue;
     vec3 t = mix(1.0 - alpha, alpha, vec3(step));
     float trilinear = t.x * t.y * t.z;
@@ -138,7 +121,7 @@ vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
       vec3 from_probe = biased - probe_position.xyz;
       float distance = length(from_probe);
       if (distance > 0.0) {
-        vec2 moments = sample_distance_map(p, from_probe / distance);
+        vec2 moments = sample_octahedral(probe_distance_atlas, tile, from_probe / distance, LG_PROBE_DISTANCE_TEXELS).xy;
         if (distance > moments.x) {
           float variance = abs(moments.y - moments.x * moments.x);
           float d = distance - moments.x;
@@ -152,7 +135,7 @@ vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
     const float crush = 0.2;
     if (weight < crush) weight *= weight * weight / (crush * crush);
     weight *= trilinear;
-    sum += weight * probe_irradiance(p, n, s.representation);
+    sum += weight * probe_irradiance(tile, n, s.representation);
     total += weight;
   }
   if (!(total > 0.0)) return vec4(0.0);
