@@ -1,13 +1,18 @@
-// gi.irradiance_volume's kernel. The "lookup" pass first makes sure the probes are current: when
-// probe_bake_key() of the frame's scene differs from the last bake's, every volume is baked again
-// with bake_probes() (Embree on every core, the path tracer's transport under the plan's own
-// environment, plan_environment()) and uploaded; otherwise the probes on the device stay as they
-// are. Then one dispatch looks them up per pixel.
+// gi.irradiance_volume's kernel. The "lookup" pass first makes sure the probes are current. In
+// the static mode, when probe_bake_key() of the frame's scene differs from the last bake's, every
+// volume is baked again with bake_probes() (Embree on every core, the path tracer's transport
+// under the plan's own environment, plan_environment()) and uploaded; otherwise the probes on the
+// device stay as they are. In the dynamic mode the first frame (and one whose volumes changed)
+// bakes so; later frames upload the probes of a batch of updates that has finished on the
+// worker thread (probe_updater.h) and start the next one, never waiting for it. Then one dispatch
+// looks them up per pixel.
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,6 +22,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/gi/irradiance_volume/probe_bake_key.h"
 #include "nodes/gi/irradiance_volume/probe_buffer.h"
+#include "nodes/gi/irradiance_volume/probe_updater.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/probes/probe_bake.h"
 #include "nodes/gi/probes/probe_lookup.h"
@@ -46,12 +52,23 @@ class IrradianceVolumeKernel final : public NodeKernel {
     if (!r) throw std::invalid_argument("gi.irradiance_volume '" + node.id + "': unknown representation");
     push_ = {0, uint32_t(*r), param_bool(node, "visibility") ? 1u : 0u, float(param_number(node, "normal_bias")),
              float(param_number(node, "view_bias"))};
+    if (param_string(node, "mode") == "dynamic") {
+      ProbeUpdateSettings update;
+      update.probes_per_update = uint32_t(param_number(node, "probes_per_frame"));
+      update.rays = uint32_t(param_number(node, "update_rays"));
+      update.hysteresis = param_number(node, "hysteresis");
+      update.placement_rays = settings_.rays;
+      update.seed = settings_.seed;
+      // Further bounces read the probes as this node's lookup does.
+      update.lookup = {*r, push_.visibility != 0, push_.normal_bias, push_.view_bias};
+      updater_.emplace(update);
+    }
   }
 
   void record(PassContext& ctx) override {
     if (ctx.pass().pass != "lookup")
       throw std::logic_error("gi.irradiance_volume has no pass '" + ctx.pass().pass + "'");
-    bake(ctx);
+    prepare_probes(ctx);
     Image& out = ctx.image("out.irradiance");
     camera_->write_value(camera_constants(ctx.scene().camera, out.desc().width, out.desc().height));
     const DescriptorWrite writes[] = {uniform_buffer(0, camera_->handle()),
@@ -65,43 +82,81 @@ class IrradianceVolumeKernel final : public NodeKernel {
   }
 
  private:
-  void bake(PassContext& ctx) {
+  void prepare_probes(PassContext& ctx) {
     const SceneView& scene = ctx.scene();
     const uint64_t key = probe_bake_key(scene);
-    if (camera_ && baked_key_ == key) return;
-    if (!camera_) {
-      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-      volumes_.emplace(ctx.gpu(), ctx.node().id + " volumes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-      probes_.emplace(ctx.gpu(), ctx.node().id + " probes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (!updater_) {
+      if (!camera_ || baked_key_ != key) bake(ctx, key);
+      return;
     }
+    const uint64_t volumes = probe_volume_key(scene);
+    if (!camera_ || volume_key_ != volumes) {
+      updater_->reset(bake(ctx, key));
+      volume_key_ = volumes;
+    } else if (const std::vector<ProbeGrid>* updated = updater_->finished()) {
+      upload(ctx, *updated);
+    }
+    if (!updater_->in_flight()) updater_->start(scene, key, environment(ctx));
+  }
+
+  // The plan's environment for the CPU tracers, loaded once (per environment presence).
+  std::shared_ptr<const PathEnvironment> environment(PassContext& ctx) {
+    const bool has = ctx.scene().has_environment;
+    if (!environment_ || environment_has_ != has) {
+      const std::string who = "gi.irradiance_volume '" + ctx.node().id + "'";
+      environment_ = std::make_shared<const PathEnvironment>(plan_environment(ctx.plan(), has, who.c_str()));
+      environment_has_ = has;
+    }
+    return environment_;
+  }
+
+  // Bakes every volume of the frame's scene and uploads the probes.
+  std::vector<ProbeGrid> bake(PassContext& ctx, uint64_t key) {
+    const SceneView& scene = ctx.scene();
     const auto start = std::chrono::steady_clock::now();
-    const std::string who = "gi.irradiance_volume '" + ctx.node().id + "'";
-    const PathScene traced(scene, plan_environment(ctx.plan(), scene.has_environment, who.c_str()));
+    const PathScene traced(scene, *environment(ctx));
     std::vector<ProbeGrid> grids;
     for (const IrradianceVolumeData& volume : scene.irradiance_volumes) {
       ProbeGrid& grid = grids.emplace_back(volume);
       bake_probes(traced, grid, settings_, 0, grid.probe_count());
     }
+    const size_t probes = upload(ctx, grids);
+    baked_key_ = key;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr,
+                 "gi.irradiance_volume '%s': baked %zu probes in %zu volume(s), %u rays, %u bounces, in %.2f s\n",
+                 ctx.node().id.c_str(), probes, grids.size(), settings_.rays, settings_.bounces, seconds);
+    return grids;
+  }
+
+  // Packs every volume's probes and writes them to the device; returns how many.
+  size_t upload(PassContext& ctx, std::span<const ProbeGrid> grids) {
+    if (!camera_) {
+      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      volumes_.emplace(ctx.gpu(), ctx.node().id + " volumes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      probes_.emplace(ctx.gpu(), ctx.node().id + " probes", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    }
     const ProbeBuffers buffers = pack_probes(grids);
     const uint64_t bytes = buffers.probes.size() * sizeof(GpuProbe);
     const uint64_t limit = ctx.gpu().properties().limits.maxStorageBufferRange;
     if (bytes > limit)
-      throw std::invalid_argument(who + ": the scene's " + std::to_string(buffers.probes.size()) + " probes take " +
+      throw std::invalid_argument("gi.irradiance_volume '" + ctx.node().id + "': the scene's " +
+                                  std::to_string(buffers.probes.size()) + " probes take " +
                                   std::to_string(bytes >> 20) + " MiB, more than the device's storage buffers hold (" +
                                   std::to_string(limit >> 20) + " MiB): use fewer probes");
     volumes_->write(buffers.volumes);
     probes_->write(buffers.probes);
     push_.volume_count = uint32_t(buffers.volumes.size());
-    baked_key_ = key;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "%s: baked %zu probes in %zu volume(s), %u rays, %u bounces, in %.2f s\n", who.c_str(),
-                 buffers.probes.size(), grids.size(), settings_.rays, settings_.bounces, seconds);
+    return buffers.probes.size();
   }
 
   ProbeBakeSettings settings_;
   Push push_{};
-  uint64_t baked_key_ = 0;
+  uint64_t baked_key_ = 0, volume_key_ = 0;
   std::optional<HostBuffer> camera_, volumes_, probes_;
+  std::shared_ptr<const PathEnvironment> environment_;
+  bool environment_has_ = false;
+  std::optional<ProbeUpdater> updater_;  // the dynamic mode's
 };
 
 }  // namespace
