@@ -287,62 +287,67 @@ TEST(IrradianceVolume, TheBakeFollowsTheLights) {
 // The dynamic mode (docs/probes.md): after the Cornell box's lamp moves toward a back corner,
 // the next frame still shows the old probes (finite, and as far from the static mode's bake of
 // the moved lamp as before: no frame waits for a bake), and as batches of updates land from the
-// worker thread the image comes within 8% relative RMS of that bake. Every probe is in every batch
-// here (512 of 512, 64 rays, hysteresis 0.5); measured: 3-4% after a few batches, the rest is the
-// noise of two 64-ray estimates (the bake's and the updates'). Both use 8 bounces' worth of light:
-// the updates' feedback carries any number. Frames sleep 5 ms so the batches get the cores; the
-// loop ends at the first frame within the bound (at most 3,000 frames; no time is asserted).
+// worker thread the image's mean irradiance per channel comes within 4% of that bake's (it starts
+// 13% off). Every probe is in every batch here (512 of 512, 128 rays, hysteresis 0.5); both carry
+// 16 bounces' worth of light (the updates' feedback carries any number). Measured: 2.3% after a
+// few batches (the updates' noise keeps the means moving by about 1%). Means, not pixels: without
+// a sky, two 256-ray bakes of different seeds already differ by 16% RMS per pixel here. Frames
+// sleep 5 ms so the batches get the cores; the loop ends at the first frame within the bound (at
+// most 3,000 frames; no time is asserted).
 TEST(IrradianceVolume, DynamicModeConvergesAfterALightMovesWithoutStallingAFrame) {
   auto move_lamp = [](World& world) {
     world.each<RectLight, Transform>([](Entity, RectLight&, Transform& t) { t.position = {0.65f, 1.99f, -0.6f}; });
   };
-  const std::string bake = R"("rays": 64, "bounces": 8, "seed": 3)";
+  const std::string bake = R"("rays": 256, "bounces": 16, "seed": 3)";
   World moved = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
   move_lamp(moved);
   const std::vector<float> target = render(moved, "{" + bake + "}").irradiance;
-  auto relative_rms = [&](const std::vector<float>& e) {
-    double squared = 0.0, sum = 0.0;
+  // The largest relative difference of a channel's mean from the target's.
+  auto mean_error = [&](const std::vector<float>& e) {
+    glm::dvec3 a(0.0), b(0.0);
     for (size_t p = 0; p < e.size(); p += 4)
       for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(e[p + c])) return std::numeric_limits<double>::infinity();
-        const double d = double(e[p + c]) - target[p + c];
-        squared += d * d, sum += target[p + c];
+        a[c] += e[p + c], b[c] += target[p + c];
       }
-    return std::sqrt(squared / double(e.size())) / (sum / double(e.size()));
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(a[c] / b[c] - 1.0));
+    return worst;
   };
 
   World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
   RendererOptions options;
   options.device.validation = true;
   Renderer renderer(options);
-  renderer.set_graph(volume_graph("{" + bake + R"(, "mode": "dynamic", "probes_per_frame": 512, "update_rays": 64,
+  renderer.set_graph(volume_graph("{" + bake + R"(, "mode": "dynamic", "probes_per_frame": 512, "update_rays": 128,
                                                    "hysteresis": 0.5 })"));
   auto frame = [&] {
     renderer.render(world, kFrame);
     return renderer.executor().read_image("volume.irradiance");
   };
-  const double before = relative_rms(frame());
+  const double before = mean_error(frame());
   move_lamp(world);
   const std::vector<float> first = frame();
-  const double first_error = relative_rms(first);
+  const double first_error = mean_error(first);
   ASSERT_TRUE(std::isfinite(first_error));
   EXPECT_GT(first_error, 0.8 * before);  // not baked again in the frame
+  ASSERT_GT(first_error, 0.08);          // the move must matter for the test to say anything
   double error = first_error;
   int frames = 1;
   bool changed = false;
-  for (; frames < 3000 && error > 0.08; ++frames) {
+  for (; frames < 3000 && error > 0.04; ++frames) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
     const std::vector<float> e = frame();
-    error = relative_rms(e);
+    error = mean_error(e);
     ASSERT_TRUE(std::isfinite(error)) << "frame " << frames;
     changed = changed || e != first;
   }
   std::printf(
-      "dynamic mode against the moved lamp's bake: %.1f%% before the move, %.1f%% in the frame after it, "
-      "%.1f%% after %d frames\n",
+      "dynamic mode against the moved lamp's bake, worst channel mean: %.1f%% before the move, %.1f%% in the "
+      "frame after it, %.1f%% after %d frames\n",
       100.0 * before, 100.0 * first_error, 100.0 * error, frames);
   EXPECT_TRUE(changed);
-  EXPECT_LE(error, 0.08);
+  EXPECT_LE(error, 0.04);
   EXPECT_TRUE(renderer.context().take_validation_messages().empty());
 }
 
