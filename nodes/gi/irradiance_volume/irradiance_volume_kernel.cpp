@@ -1,17 +1,22 @@
-// gi.irradiance_volume's kernel. The "lookup" pass first makes sure the probes are current: when
-// probe_bake_key() of the frame's scene differs from the last bake's, every volume is baked again
-// with bake_probes() (Embree on every core, the path tracer's transport under the plan's own
-// environment, plan_environment()) and uploaded as an atlas (probe_atlas.h); otherwise the probes
-// on the device stay as they are. Then one dispatch looks them up per pixel, at full resolution
-// into the output, or at resolution_scale into a smaller image that the "upsample" pass brings
-// back to full resolution (nodes/common/shaders/joint_upsample.glsl).
+// gi.irradiance_volume's kernel. The "lookup" pass first makes sure the probes are current. In
+// the static mode, when probe_bake_key() of the frame's scene differs from the last bake's, every
+// volume is baked again with bake_probes() (Embree on every core, the path tracer's transport
+// under the plan's own environment, plan_environment()) and uploaded as an atlas
+// (probe_atlas.h); otherwise the probes on the device stay as they are. In the dynamic mode the
+// first frame (and one whose volumes changed) bakes so; later frames upload the probes of a batch
+// of updates that has finished on the worker thread (probe_updater.h) and start the next one,
+// never waiting for it. Then one dispatch looks them up per pixel, at full resolution into the
+// output, or at resolution_scale into a smaller image that the "upsample" pass brings back to
+// full resolution (nodes/common/shaders/joint_upsample.glsl).
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +27,7 @@
 #include "nodes/gi/irradiance_volume/probe_atlas.h"
 #include "nodes/gi/irradiance_volume/probe_atlas_images.h"
 #include "nodes/gi/irradiance_volume/probe_bake_key.h"
+#include "nodes/gi/irradiance_volume/probe_updater.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/probes/probe_bake.h"
 #include "nodes/gi/probes/probe_lookup.h"
@@ -61,6 +67,17 @@ class IrradianceVolumeKernel final : public NodeKernel {
     constants_ = {uint32_t(*r), param_bool(node, "visibility") ? 1u : 0u};
     push_ = {0, float(param_number(node, "normal_bias")), float(param_number(node, "view_bias")),
              resolution_divisor(node)};
+    if (param_string(node, "mode") == "dynamic") {
+      ProbeUpdateSettings update;
+      update.probes_per_update = uint32_t(param_number(node, "probes_per_frame"));
+      update.rays = uint32_t(param_number(node, "update_rays"));
+      update.hysteresis = param_number(node, "hysteresis");
+      update.placement_rays = settings_.rays;
+      update.seed = settings_.seed;
+      // Further bounces read the probes as this node's lookup does.
+      update.lookup = {*r, constants_[1] != 0, push_.normal_bias, push_.view_bias};
+      updater_.emplace(update);
+    }
   }
 
   void record(PassContext& ctx) override {
@@ -76,7 +93,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
   bool full_resolution() const { return push_.k == 1; }
 
   void lookup(PassContext& ctx) {
-    bake(ctx);
+    prepare_probes(ctx);
     const Image& depth = ctx.image("in.gbuffer", 0);
     Image& target = ctx.image(full_resolution() ? "out.irradiance" : "tmp.lowres");
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
@@ -106,42 +123,79 @@ class IrradianceVolumeKernel final : public NodeKernel {
                      low.desc().height, std::as_bytes(std::span(&push_.k, 1)));
   }
 
-  void bake(PassContext& ctx) {
+  void prepare_probes(PassContext& ctx) {
     const SceneView& scene = ctx.scene();
     const uint64_t key = probe_bake_key(scene);
-    if (camera_ && baked_key_ == key) return;
-    if (!camera_) {
-      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-      probes_.emplace(ctx.gpu(), ctx.node().id);
+    if (!updater_) {
+      if (!probes_ || baked_key_ != key) bake(ctx, key);
+      return;
     }
+    const uint64_t volumes = probe_volume_key(scene);
+    if (!camera_ || volume_key_ != volumes) {
+      updater_->reset(bake(ctx, key));
+      volume_key_ = volumes;
+    } else if (const std::vector<ProbeGrid>* updated = updater_->finished()) {
+      upload(ctx, *updated);
+    }
+    if (!updater_->in_flight()) updater_->start(scene, key, environment(ctx));
+  }
+
+  // The plan's environment for the CPU tracers, loaded once (per environment presence).
+  std::shared_ptr<const PathEnvironment> environment(PassContext& ctx) {
+    const bool has = ctx.scene().has_environment;
+    if (!environment_ || environment_has_ != has) {
+      const std::string who = "gi.irradiance_volume '" + ctx.node().id + "'";
+      environment_ = std::make_shared<const PathEnvironment>(plan_environment(ctx.plan(), has, who.c_str()));
+      environment_has_ = has;
+    }
+    return environment_;
+  }
+
+  // Bakes every volume of the frame's scene and uploads the probes.
+  std::vector<ProbeGrid> bake(PassContext& ctx, uint64_t key) {
+    const SceneView& scene = ctx.scene();
     const auto start = std::chrono::steady_clock::now();
-    const std::string who = "gi.irradiance_volume '" + ctx.node().id + "'";
-    const PathScene traced(scene, plan_environment(ctx.plan(), scene.has_environment, who.c_str()));
+    const PathScene traced(scene, *environment(ctx));
     std::vector<ProbeGrid> grids;
     for (const IrradianceVolumeData& volume : scene.irradiance_volumes) {
       ProbeGrid& grid = grids.emplace_back(volume);
       bake_probes(traced, grid, settings_, 0, grid.probe_count());
     }
+    const size_t probes = upload(ctx, grids);
+    baked_key_ = key;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr,
+                 "gi.irradiance_volume '%s': baked %zu probes in %zu volume(s), %u rays, %u bounces, in %.2f s\n",
+                 ctx.node().id.c_str(), probes, grids.size(), settings_.rays, settings_.bounces, seconds);
+    return grids;
+  }
+
+  // Packs every volume's probes into the atlas and puts it on the device; returns how many.
+  size_t upload(PassContext& ctx, std::span<const ProbeGrid> grids) {
+    if (!camera_) {
+      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      probes_.emplace(ctx.gpu(), ctx.node().id);
+    }
     ProbeAtlas atlas;
     try {
       atlas = pack_probe_atlas(grids, ctx.gpu().properties().limits.maxImageDimension2D);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(who + ": " + e.what());
+      throw std::invalid_argument("gi.irradiance_volume '" + ctx.node().id + "': " + e.what());
     }
     probes_->upload(ctx.cmd(), atlas);
     push_.volume_count = uint32_t(atlas.volumes.size());
-    baked_key_ = key;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "%s: baked %zu probes in %zu volume(s), %u rays, %u bounces, in %.2f s\n", who.c_str(),
-                 size_t(atlas.probe_count), grids.size(), settings_.rays, settings_.bounces, seconds);
+    return size_t(atlas.probe_count);
   }
 
   ProbeBakeSettings settings_;
   Push push_{};
   std::array<uint32_t, 2> constants_{};  // shaders/irradiance_volume.comp: representation, visibility
-  uint64_t baked_key_ = 0;
+  uint64_t baked_key_ = 0, volume_key_ = 0;
   std::optional<HostBuffer> camera_;
   std::optional<ProbeAtlasImages> probes_;
+  std::shared_ptr<const PathEnvironment> environment_;
+  bool environment_has_ = false;
+  std::optional<ProbeUpdater> updater_;  // the dynamic mode's
 };
 
 }  // namespace

@@ -30,6 +30,11 @@ struct Hasher {
   }
 };
 
+void add_volumes(Hasher& h, const SceneView& s) {
+  h.add(uint64_t(s.irradiance_volumes.size()));
+  for (const auto& v : s.irradiance_volumes) h.all(v.world, v.size, v.probe_counts);
+}
+
 }  // namespace
 
 uint64_t probe_bake_key(const SceneView& s) {
@@ -48,7 +53,13 @@ uint64_t probe_bake_key(const SceneView& s) {
   h.all(int(s.directional_lights.size()), int(s.point_lights.size()), int(s.spot_lights.size()),
         int(s.sphere_lights.size()), int(s.tube_lights.size()), int(s.rect_lights.size()));
   h.all(s.has_environment, s.environment.path, s.environment.intensity);
-  for (const auto& v : s.irradiance_volumes) h.all(v.world, v.size, v.probe_counts);
+  add_volumes(h, s);
+  return h.h;
+}
+
+uint64_t probe_volume_key(const SceneView& s) {
+  Hasher h;
+  add_volumes(h, s);
   return h.h;
 }
 

@@ -12,4 +12,8 @@ namespace lg {
 
 uint64_t probe_bake_key(const SceneView& scene);
 
+// The volumes alone (their frames, sizes and probe counts): the dynamic mode bakes afresh when
+// they change, and otherwise updates the probes it has.
+uint64_t probe_volume_key(const SceneView& scene);
+
 }  // namespace lg

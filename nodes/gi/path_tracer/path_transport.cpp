@@ -86,53 +86,78 @@ bool PathTransport::visible(glm::dvec3 position, glm::dvec3 geometric, glm::dvec
   return !scene_.rays().occluded(origin, glm::vec3(direction), t_max);
 }
 
-// Next-event estimation at the end, then the BRDF's own sample and the segment it starts.
-bool PathTransport::step(State& s, uint32_t bounce, const PathRandom& random, PathValue& out) const {
-  const Vertex& v = s.vertex;
-  const BrdfSurface& brdf = v.brdf;
-  const double p_specular = specular_lobe_probability(brdf, s.view);
-  auto brdf_pdf = [&](glm::dvec3 l) {
-    return p_specular * specular_pdf(brdf, s.view, l) + (1.0 - p_specular) * diffuse_pdf(brdf, l);
-  };
-  // Light `weight` arriving from direction l, reflected toward the path's start.
-  auto reflect = [&](glm::dvec3 l, glm::dvec3 weight, bool scene_light) {
-    const BrdfCosine f = evaluate_brdf(brdf, s.view, l);
-    if (s.at_first) {
-      if (scene_light)
-        out.direct += f.sum() * weight;
-      else
-        out.indirect_diffuse += f.diffuse * weight, out.specular += f.specular * weight;
-    } else {
-      s.add(out, scene_light, f.sum() * weight);
-    }
-  };
+double PathTransport::brdf_pdf(const State& s, glm::dvec3 l) const {
+  const double p_specular = specular_lobe_probability(s.vertex.brdf, s.view);
+  return p_specular * specular_pdf(s.vertex.brdf, s.view, l) + (1.0 - p_specular) * diffuse_pdf(s.vertex.brdf, l);
+}
 
+// Light `weight` arriving at the end from direction l, reflected toward the path's start.
+void PathTransport::reflect(State& s, glm::dvec3 l, glm::dvec3 weight, bool scene_light, PathValue& out) const {
+  const BrdfCosine f = evaluate_brdf(s.vertex.brdf, s.view, l);
+  if (s.at_first) {
+    if (scene_light)
+      out.direct += f.sum() * weight;
+    else
+      out.indirect_diffuse += f.diffuse * weight, out.specular += f.specular * weight;
+  } else {
+    s.add(out, scene_light, f.sum() * weight);
+  }
+}
+
+// Next-event estimation of every light of PathLights at the end, each weighed against the BRDF's
+// density by MIS when a BRDF sample follows (`with_mis`).
+void PathTransport::sample_lights(State& s, uint32_t bounce, const PathRandom& random, PathValue& out,
+                                  bool with_mis) const {
+  const Vertex& v = s.vertex;
   const PathLights& lights = scene_.lights();
   for (size_t i = 0; i < lights.count(); ++i) {
     const std::optional<LightSample> ls =
         lights.sample(i, v.position, random.pair(bounce, kLightDimensions + 2 * uint32_t(i)));
     if (!ls || !visible(v.position, v.geometric, ls->direction, ls->distance)) continue;
-    const double mis = ls->pdf > 0.0 ? power_heuristic(ls->pdf, brdf_pdf(ls->direction)) : 1.0;
-    reflect(ls->direction, ls->weight * mis, lights.is_scene_light(i));
+    const double mis = with_mis && ls->pdf > 0.0 ? power_heuristic(ls->pdf, brdf_pdf(s, ls->direction)) : 1.0;
+    reflect(s, ls->direction, ls->weight * mis, lights.is_scene_light(i), out);
   }
+}
+
+struct PathTransport::BrdfSample {
+  glm::dvec3 l{0.0};
+  double pdf = 0.0;  // 0: none (below the geometric surface, or the BRDF is 0 there)
+  BrdfCosine f;
+};
+
+// A direction from the end's BRDF (the lobe by specular_lobe_probability()), its mixture density
+// and the BRDF's value there.
+PathTransport::BrdfSample PathTransport::sample_brdf(const State& s, uint32_t bounce, const PathRandom& random) const {
+  const BrdfSurface& brdf = s.vertex.brdf;
+  BrdfSample b;
+  b.l = random.get(bounce, 0) < specular_lobe_probability(brdf, s.view)
+            ? sample_specular(brdf, s.view, random.pair(bounce, 1))
+            : sample_diffuse(brdf, random.pair(bounce, 1));
+  if (!(glm::dot(b.l, s.vertex.geometric) > 0.0)) return b;
+  b.f = evaluate_brdf(brdf, s.view, b.l);
+  if (b.f.sum() != glm::dvec3(0.0)) b.pdf = brdf_pdf(s, b.l);
+  return b;
+}
+
+// Next-event estimation at the end, then the BRDF's own sample and the segment it starts.
+bool PathTransport::step(State& s, uint32_t bounce, const PathRandom& random, PathValue& out) const {
+  const Vertex& v = s.vertex;
+  sample_lights(s, bounce, random, out, true);
   if (const EnvironmentMap* env = scene_.environment()) {
-    const auto es = env->sample(random.pair(bounce, kLightDimensions + 2 * uint32_t(lights.count())));
+    const auto es = env->sample(random.pair(bounce, kLightDimensions + 2 * uint32_t(scene_.lights().count())));
     if (es && visible(v.position, v.geometric, es->direction, kInfinity))
-      reflect(es->direction, es->radiance / es->pdf * power_heuristic(es->pdf, brdf_pdf(es->direction)), false);
+      reflect(s, es->direction, es->radiance / es->pdf * power_heuristic(es->pdf, brdf_pdf(s, es->direction)), false,
+              out);
   }
 
-  const glm::dvec3 l = random.get(bounce, 0) < p_specular ? sample_specular(brdf, s.view, random.pair(bounce, 1))
-                                                          : sample_diffuse(brdf, random.pair(bounce, 1));
-  if (!(glm::dot(l, v.geometric) > 0.0)) return false;  // below the surface: absorbed
-  const double pdf = brdf_pdf(l);
-  const BrdfCosine f = evaluate_brdf(brdf, s.view, l);
-  if (!(pdf > 0.0) || f.sum() == glm::dvec3(0.0)) return false;
+  const BrdfSample b = sample_brdf(s, bounce, random);
+  if (!(b.pdf > 0.0)) return false;  // below the surface, or nothing reflected: absorbed
   if (s.at_first)
-    s.diffuse = f.diffuse / pdf, s.specular = f.specular / pdf;
+    s.diffuse = b.f.diffuse / b.pdf, s.specular = b.f.specular / b.pdf;
   else
-    s.throughput *= f.sum() / pdf;
+    s.throughput *= b.f.sum() / b.pdf;
   const glm::dvec3 origin(offset_ray_origin(glm::vec3(v.position), glm::vec3(v.geometric)));
-  const bool more = segment(s, origin, l, pdf, bounce, random, out, nullptr);
+  const bool more = segment(s, origin, b.l, b.pdf, bounce, random, out, nullptr);
   s.at_first = false;
   return more;
 }
@@ -201,6 +226,22 @@ ProbeRay PathTransport::probe_ray(glm::dvec3 origin, glm::dvec3 direction, const
       if (!step(s, bounce, random, out)) break;
   ray.radiance = out.indirect_diffuse;
   return ray;
+}
+
+ProbeHit PathTransport::probe_hit(glm::dvec3 origin, glm::dvec3 direction, const PathRandom& random) const {
+  PathValue out;
+  ProbeHit h;
+  State s{};
+  s.at_first = false;
+  s.diffuse = glm::dvec3(1.0);  // as probe_ray()
+  if (segment(s, origin, direction, 0.0, 0, random, out, &h.ray)) {
+    sample_lights(s, 0, random, out, false);
+    h.surface = VisibleSurface{s.vertex.position, s.vertex.brdf.normal, s.vertex.brdf.diffuse_color};
+    const BrdfSample b = sample_brdf(s, 0, random);
+    if (b.pdf > 0.0) h.albedo = b.f.sum() / b.pdf;
+  }
+  h.ray.radiance = out.indirect_diffuse;
+  return h;
 }
 
 std::optional<VisibleSurface> PathTransport::visible_surface(glm::dvec3 eye, glm::dvec3 direction,

@@ -52,6 +52,20 @@ struct VisibleSurface {
   glm::dvec3 position, normal, diffuse_color;
 };
 
+// A probe's ray cut after its first surface, for updates that take the light of further bounces
+// from the probes themselves (probe_update.h): `ray` holds what the surface emits plus what it
+// reflects toward the probe of PathLights' lights (the scene's and the sky's sun; light sampling
+// alone, as no BRDF sample follows), or on a miss what probe_ray() gives; `surface` is the
+// surface met (its normal on the probe's side), where the caller adds the rest of its light as
+// albedo / pi x irradiance. `albedo` is one BRDF sample's f cos / pdf toward the probe: its
+// expectation is the surface's directional albedo (the diffuse colour plus what the specular lobe
+// reflects of light arriving evenly), so rough dielectrics keep their few percent of specular.
+struct ProbeHit {
+  ProbeRay ray;
+  std::optional<VisibleSurface> surface;
+  glm::dvec3 albedo{0.0};
+};
+
 class PathTransport {
  public:
   // max_bounces: surface interactions per path (1: direct light only); Russian roulette may end
@@ -62,11 +76,17 @@ class PathTransport {
   uint32_t dimensions_per_bounce() const;
   PathValue camera_path(glm::dvec3 eye, glm::dvec3 direction, bool cull_backfaces, const PathRandom& random) const;
   ProbeRay probe_ray(glm::dvec3 origin, glm::dvec3 direction, const PathRandom& random) const;
+  ProbeHit probe_hit(glm::dvec3 origin, glm::dvec3 direction, const PathRandom& random) const;
   std::optional<VisibleSurface> visible_surface(glm::dvec3 eye, glm::dvec3 direction, bool cull_backfaces) const;
 
  private:
   struct State;
   bool step(State& s, uint32_t bounce, const PathRandom& random, PathValue& out) const;
+  struct BrdfSample;
+  BrdfSample sample_brdf(const State& s, uint32_t bounce, const PathRandom& random) const;
+  void sample_lights(State& s, uint32_t bounce, const PathRandom& random, PathValue& out, bool with_mis) const;
+  double brdf_pdf(const State& s, glm::dvec3 l) const;
+  void reflect(State& s, glm::dvec3 l, glm::dvec3 weight, bool scene_light, PathValue& out) const;
   bool segment(State& s, glm::dvec3 origin, glm::dvec3 l, double pdf, uint32_t bounce, const PathRandom& random,
                PathValue& out, ProbeRay* first_hit) const;
   bool visible(glm::dvec3 position, glm::dvec3 geometric, glm::dvec3 direction, double distance) const;
