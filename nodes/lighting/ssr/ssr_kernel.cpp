@@ -1,6 +1,8 @@
 #include "nodes/lighting/ssr/ssr_kernel.h"
 
+#include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "nodes/common/camera_constants.h"
@@ -19,6 +21,11 @@ struct TracePush {  // nodes/lighting/ssr/shaders/trace.comp
   float max_roughness, thickness, max_distance, edge_fade, near_plane;
 };
 
+struct ResolvePush {  // nodes/lighting/ssr/shaders/resolve.comp
+  uint32_t flags;
+  float temporal_blend;
+};
+
 class SsrKernel final : public NodeKernel {
  public:
   explicit SsrKernel(const PlanNode& node)
@@ -26,7 +33,9 @@ class SsrKernel final : public NodeKernel {
         max_roughness_(float(param_number(node, "max_roughness"))),
         thickness_(float(param_number(node, "thickness"))),
         max_distance_(float(param_number(node, "max_distance"))),
-        edge_fade_(float(param_number(node, "edge_fade"))) {}
+        edge_fade_(float(param_number(node, "edge_fade"))),
+        spatial_reuse_(param_bool(node, "spatial_reuse")),
+        temporal_blend_(float(param_number(node, "temporal_blend"))) {}
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
@@ -34,6 +43,8 @@ class SsrKernel final : public NodeKernel {
       build_pyramid(ctx);
     else if (pass == "trace")
       trace(ctx);
+    else if (pass == "resolve")
+      resolve(ctx);
     else
       throw std::logic_error("lighting.ssr has no pass '" + pass + "'");
   }
@@ -54,7 +65,7 @@ class SsrKernel final : public NodeKernel {
   }
 
   void trace(PassContext& ctx) {
-    Image& out = ctx.image("out.reflections");
+    Image& out = ctx.image("tmp.raw");
     if (!camera_) camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     const CameraView& camera = ctx.scene().camera;
     camera_->write_value(camera_constants(camera, out.desc().width, out.desc().height));
@@ -77,8 +88,28 @@ class SsrKernel final : public NodeKernel {
                      std::as_bytes(std::span(&push, 1)));
   }
 
+  void resolve(PassContext& ctx) {
+    Image& out = ctx.image("out.reflections");
+    Image& raw = ctx.image("tmp.raw");
+    const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history");  // not the cleared one
+    const DescriptorWrite writes[] = {
+        sampled_image(0, raw.view(), ctx.nearest_sampler()),
+        sampled_image(1, ctx.image("tmp.hiz").view({.base_mip = 0, .mip_count = 1}), ctx.nearest_sampler()),
+        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+        sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
+        sampled_image(4, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
+        sampled_image(5, (ctx.has("in.reflection_history") ? ctx.image("in.reflection_history") : raw).view(),
+                      ctx.linear_sampler()),
+        storage_image(6, out.view())};
+    const ResolvePush push{(history ? 1u : 0u) | (spatial_reuse_ ? 2u : 0u), temporal_blend_};
+    dispatch_compute(ctx, "nodes/lighting/ssr/shaders/resolve.comp", writes, out.desc().width, out.desc().height,
+                     std::as_bytes(std::span(&push, 1)));
+  }
+
   uint32_t max_steps_;
   float max_roughness_, thickness_, max_distance_, edge_fade_;
+  bool spatial_reuse_;
+  float temporal_blend_;
   std::optional<HostBuffer> camera_;
 };
 
