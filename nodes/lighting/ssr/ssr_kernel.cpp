@@ -52,7 +52,7 @@ class SsrKernel final : public NodeKernel {
  private:
   // One dispatch a level, each reading the one before it.
   void build_pyramid(PassContext& ctx) {
-    Image& hiz = ctx.image("tmp.hiz");
+    Image& hiz = ctx.image("tmp.pyramid");
     for (uint32_t level = 0; level < hiz.desc().mips; ++level) {
       if (level > 0) compute_to_compute_barrier(ctx.cmd());
       const uint32_t below = level > 0 ? level - 1 : 0;
@@ -74,7 +74,7 @@ class SsrKernel final : public NodeKernel {
     Image& color = ctx.image("in.color");
     const DescriptorWrite writes[] = {
         uniform_buffer(0, camera_->handle()),
-        sampled_image(1, ctx.image("tmp.hiz").view(), ctx.nearest_sampler()),
+        sampled_image(1, ctx.image("tmp.pyramid").view(), ctx.nearest_sampler()),
         sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
         sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
         sampled_image(4, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
@@ -94,7 +94,7 @@ class SsrKernel final : public NodeKernel {
     const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history");  // not the cleared one
     const DescriptorWrite writes[] = {
         sampled_image(0, raw.view(), ctx.nearest_sampler()),
-        sampled_image(1, ctx.image("tmp.hiz").view({.base_mip = 0, .mip_count = 1}), ctx.nearest_sampler()),
+        sampled_image(1, ctx.image("tmp.pyramid").view({.base_mip = 0, .mip_count = 1}), ctx.nearest_sampler()),
         sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
         sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
         sampled_image(4, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
