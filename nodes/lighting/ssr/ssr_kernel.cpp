@@ -54,7 +54,9 @@ class SsrKernel final : public NodeKernel {
   void build_pyramid(PassContext& ctx) {
     Image& hiz = ctx.image("tmp.pyramid");
     for (uint32_t level = 0; level < hiz.desc().mips; ++level) {
-      if (level > 0) compute_to_compute_barrier(ctx.cmd());
+      // Also before level 0: its shader declares a read of `below`, which must follow the
+      // plan's layout transition (made visible to writes only).
+      compute_to_compute_barrier(ctx.cmd());
       const uint32_t below = level > 0 ? level - 1 : 0;
       const DescriptorWrite writes[] = {sampled_image(0, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
                                         storage_image(1, hiz.view({.base_mip = below, .mip_count = 1})),

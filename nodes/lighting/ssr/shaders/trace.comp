@@ -79,35 +79,34 @@ ivec2 march(vec3 s0, vec3 d, float t_end, vec3 l) {
   int top = textureQueryLevels(hiz) - 1;
   int level = 0;
   float t = cell_exit(s0, d, floor(s0.xy), floor(s0.xy) + 1.0) + kNudge;  // out of the ray's own pixel
-  for (uint i = 0u; i < max_steps && t < t_end; ++i) {
+  ivec2 hit = ivec2(-1);
+  for (uint i = 0u; i < max_steps && t < t_end && hit.x < 0; ++i) {
     vec3 q = s0 + d * t;
     if (any(lessThan(q.xy, vec2(0.0))) || any(greaterThanEqual(q.xy, vec2(size)))) break;  // off screen
-    ivec2 last = textureSize(hiz, level) - 1;
+    // Mip sizes by hand: lavapipe's textureSize() with a level that differs between the
+    // invocations of one SIMD batch answers some of them with another invocation's level.
+    ivec2 last = max(size >> level, ivec2(1)) - 1;
     ivec2 cell = min(ivec2(q.xy) >> level, last);
     // A level's last texel also covers what its odd-sized levels below left over: to the edge.
     vec2 hi = mix(vec2((cell + 1) << level), vec2(size), equal(cell, last));
     float t_exit = min(cell_exit(s0, d, vec2(cell << level), hi), t_end);
     float nearest = texelFetch(hiz, cell, level).r;
-    float farthest_on_ray = min(q.z, s0.z + d.z * t_exit);
-    if (farthest_on_ray > nearest) {  // in front of everything in the cell
+    if (min(q.z, s0.z + d.z * t_exit) > nearest) {  // in front of everything in the cell: skip it
       t = t_exit + kNudge;
       level = min(level + 1, top);
-      continue;
-    }
-    if (level > 0) {
+    } else if (level > 0) {  // something in the cell may be in the way: look closer
       --level;
-      continue;
+    } else {
+      // Level 0: the ray reaches or passes behind this pixel's surface. A hit when it crosses the
+      // surface inside the pixel or lies behind it by less than `thickness`, on a front face.
+      bool crossed = q.z >= nearest;
+      bool thin = nearest > 0.0 && q.z > 0.0 && near_plane / q.z - near_plane / nearest <= thickness;
+      bool front = dot(decode_normal(texelFetch(normal_tex, cell, 0).rgb), l) < 0.0;
+      if (nearest > 0.0 && (crossed || thin) && front) hit = cell;
+      t = t_exit + kNudge;  // otherwise: a thickness miss or a surface seen from behind, go on
     }
-    // Level 0: the ray reaches or passes behind this pixel's surface.
-    bool crossed = q.z >= nearest;  // entered in front: it meets the surface inside the pixel
-    bool thin = nearest > 0.0 && q.z > 0.0 && near_plane / q.z - near_plane / nearest <= thickness;
-    if (nearest > 0.0 && (crossed || thin)) {
-      vec3 n = decode_normal(texelFetch(normal_tex, cell, 0).rgb);
-      if (dot(n, l) < 0.0) return cell;  // a front face: the hit
-    }
-    t = t_exit + kNudge;  // a thickness miss or a surface seen from behind: go on
   }
-  return ivec2(-1);
+  return hit;
 }
 
 // 1 inside the image, down to 0 over `edge_fade` of its width and height at the borders.
