@@ -4,6 +4,7 @@
 // near plane, a NaN and Inf lit image) that must leave every output finite.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -74,7 +75,7 @@ TEST(ScreenSpaceReflections, ConfidentPixelsAreCloserToTheReferenceThanTheEnviro
   const Frame without = render(world, false, 1);
   const PathScene scene(make_scene_view(world, float(kFrame.width) / kFrame.height), with.environment);
   PathTracerOptions o;
-  o.width = kFrame.width, o.height = kFrame.height, o.samples_per_pixel = 64;
+  o.width = kFrame.width, o.height = kFrame.height, o.samples_per_pixel = 128;
   const ReferenceImage traced = trace_reference(scene, o);
   const auto& mean = traced.mean_of(ReferenceAov::specular);
   const auto& error = traced.error_of(ReferenceAov::specular);
@@ -95,9 +96,12 @@ TEST(ScreenSpaceReflections, ConfidentPixelsAreCloserToTheReferenceThanTheEnviro
       "%zu confident pixels of %zu: mean |error| / mean reference: ssr %.4f, environment only %.4f "
       "(reference noise %.4f)\n",
       pixels, traced.pixel_count(), ssr / reference, environment / reference, noise / reference);
-  ASSERT_GT(pixels, traced.pixel_count() / 10);  // the floor's reflections of the boxes
-  // Measured: ssr 0.000, environment 0.000 (filled in below from the first run).
-  EXPECT_LT(ssr, 0.5 * environment);
+  ASSERT_GT(pixels, traced.pixel_count() / 20);  // the floor's reflections of the boxes (9.7%)
+  // Measured: ssr 0.47, environment only 1.08 of the reference's mean, with its own noise (the
+  // mean standard error at 128 paths, 0.13) in both. Required: at most 75% of the environment's
+  // error, well clear of that noise; with lighting.ibl ignoring the reflections the two are equal
+  // (1.082 and 1.083: the test fails).
+  EXPECT_LT(ssr, 0.75 * environment);
 }
 
 // Degenerate input: a mirror floor (roughness 0) seen at a grazing angle from 2 cm above it, the
@@ -162,12 +166,17 @@ TEST(ScreenSpaceReflections, DegenerateInputLeavesEveryOutputFinite) {
   EXPECT_EQ(non_finite(reflections), 0u);
   EXPECT_EQ(non_finite(renderer.executor().read_image("ibl.color")), 0u);
   size_t confident = 0;
-  for (size_t i = 3; i < reflections.size(); i += 4) {
-    EXPECT_GE(reflections[i], 0.0f);
-    EXPECT_LE(reflections[i], 1.0f);
-    confident += reflections[i] > 0.0f;
+  float brightest = 0.0f;
+  for (size_t i = 0; i < reflections.size(); i += 4) {
+    EXPECT_GE(reflections[i + 3], 0.0f);
+    EXPECT_LE(reflections[i + 3], 1.0f);
+    confident += reflections[i + 3] > 0.0f;
+    brightest = std::max({brightest, reflections[i], reflections[i + 1], reflections[i + 2]});
   }
   EXPECT_GT(confident, 0u);  // the grazing floor reflects the boxes: rays were traced
+  // A broken texel reflects as 0: the lit scene is below 100 here, while NaN or Inf let through
+  // come out of lavapipe's min() as the half-float maximum (65504).
+  EXPECT_LT(brightest, 100.0f);
 }
 
 }  // namespace
