@@ -9,6 +9,7 @@
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 #include "nodes/lighting/deferred/deferred_kernel.h"
 #include "nodes/lighting/ibl/ibl_kernel.h"
+#include "nodes/lighting/ssr/ssr_kernel.h"
 #include "nodes/occlusion/bake/bake_kernel.h"
 #include "nodes/occlusion/baked/baked_kernel.h"
 #include "nodes/occlusion/gtao/gtao_kernel.h"
@@ -34,6 +35,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("gi.irradiance_volume", make_irradiance_volume_kernel);
     r.add("lighting.deferred", make_deferred_kernel);
     r.add("lighting.ibl", make_ibl_kernel);
+    r.add("lighting.ssr", make_ssr_kernel);
     r.add("occlusion.bake", make_bake_kernel);
     r.add("occlusion.baked", make_baked_kernel);
     r.add("occlusion.gtao", make_gtao_kernel);

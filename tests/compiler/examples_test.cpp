@@ -40,6 +40,10 @@ const std::pair<const char*, const char*> must_precede[] = {
     {"gtao/denoise", "ibl/shade"},
     {"gbuf/raster", "volume/lookup"},
     {"volume/lookup", "ibl/shade"},  // the probe volume's irradiance feeds image-based light
+    {"gbuf/raster", "ssr/hiz"},
+    {"ssr/hiz", "ssr/trace"},
+    {"light/direct", "ssr/trace"},  // the reflections reflect this frame's direct light
+    {"ssr/trace", "ibl/shade"},
     {"ibl/shade", "dof/coc"},
     {"dof/coc", "dof/gather"},
     {"dof/gather", "dof/composite"},
@@ -81,13 +85,14 @@ TEST(CompilerExamples, EveryExampleCompilesWithEveryScene) {
       EXPECT_FALSE(plan.barriers.empty());
 
       // Nothing is culled in the examples; only depth of field may be bypassed, without a lens,
-      // the irradiance volume without volumes, and the transparent surfaces' pass without BLEND
-      // materials.
+      // the irradiance volume without volumes, the transparent surfaces' pass without BLEND
+      // materials, and screen-space reflections without glossy materials.
       for (const auto& n : plan.nodes) {
         EXPECT_NE(n.state, NodeState::Kind::culled) << n.id << ": " << n.reason;
         bool lens = options.scene.aperture > 0, volumes = options.scene.irradiance_volumes > 0;
         bool bypassed = (n.type == "post.dof" && !lens) || (n.type == "gi.irradiance_volume" && !volumes) ||
-                        (n.type == "scene.forward_transparent" && !options.scene.blend_materials);
+                        (n.type == "scene.forward_transparent" && !options.scene.blend_materials) ||
+                        (n.type == "lighting.ssr" && !options.scene.glossy_materials);
         auto expected = bypassed ? NodeState::Kind::bypassed : NodeState::Kind::active;
         EXPECT_EQ(n.state, expected) << n.id << ": " << n.reason;
       }
@@ -183,6 +188,21 @@ TEST(CompilerExamples, ANodeOnlyABypassedNodeUsesIsCulledNamingIt) {
   Plan with_lens = test::compile_ok(g, builtin_registry(), lens);
   EXPECT_EQ(test::plan_node(with_lens, "dof_depth")->state, NodeState::Kind::active);
   expect_before(with_lens, "dof_depth/raster", "dof/coc");
+}
+
+TEST(CompilerExamples, ScreenSpaceReflectionsAreBypassedWithoutGlossyMaterials) {
+  Plan glossy = test::compile_example("examples/ssr.json");
+  EXPECT_EQ(test::plan_node(glossy, "ssr")->state, NodeState::Kind::active);
+  expect_before(glossy, "ssr/trace", "ibl/shade");
+  CompileOptions matte;
+  matte.scene = test::load_scene("examples/scenes/probe-room.json");
+  ASSERT_FALSE(matte.scene.glossy_materials);
+  Plan plan = test::compile_ok(test::load_example("examples/ssr.json"), builtin_registry(), matte);
+  const PlanNode* ssr = test::plan_node(plan, "ssr");
+  ASSERT_NE(ssr, nullptr);
+  EXPECT_EQ(ssr->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(ssr->reason, "the scene has no glossy materials");
+  for (const auto& p : plan.passes) EXPECT_FALSE(p.name.starts_with("ssr/")) << p.name;
 }
 
 TEST(CompilerExamples, TheTextPlanNamesEveryPassInOrder) {

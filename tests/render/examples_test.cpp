@@ -50,7 +50,8 @@ INSTANTIATE_TEST_SUITE_P(Examples, ExampleRender,
                                            Case{"examples/minimal.json", "examples/worlds/gallery.json"},
                                            Case{"examples/default.json", "examples/worlds/gallery.json"},
                                            Case{"examples/post.json", "examples/worlds/gallery.json"},
-                                           Case{"examples/default.json", "examples/worlds/spot-stage.json"}),
+                                           Case{"examples/default.json", "examples/worlds/spot-stage.json"},
+                                           Case{"examples/ssr.json", "examples/worlds/ssr-floor.json"}),
                          [](const auto& info) {
                            std::string graph = std::filesystem::path(info.param.graph).stem().string();
                            std::string world = std::filesystem::path(info.param.world).stem().string();

@@ -31,6 +31,7 @@ struct IblInputs {
   Image *specular = nullptr, *brdf_lut = nullptr;
   Image *ao = nullptr, *bent_normals = nullptr;
   Image* irradiance_volume = nullptr;  // rgb irradiance (W/m^2), a coverage
+  Image* ssr = nullptr;                // rgb reflected radiance before the BRDF, a confidence
   Image* color = nullptr;
 };
 

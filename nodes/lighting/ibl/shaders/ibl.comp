@@ -15,6 +15,9 @@
 // diffuse visibility and, through Lagarde's form, the specular: image-based light only, never
 // direct light. With a probe volume linked (gi.irradiance_volume), the diffuse irradiance is the
 // environment's (times intensity) mixed toward the volume's by its coverage, before occlusion.
+// With screen-space reflections linked (lighting.ssr: rgb reflected radiance before the BRDF, a
+// confidence), the reflected radiance is the prefiltered map's (times intensity) mixed toward
+// theirs by the confidence, before the split sum and specular occlusion.
 // Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
@@ -34,9 +37,10 @@ layout(binding = 10) uniform sampler2D ao_tex;
 layout(binding = 11) uniform sampler2D bent_normal_tex;
 layout(binding = 12, rgba16f) uniform writeonly image2D color;
 layout(binding = 13) uniform sampler2D volume_tex;  // rgb irradiance (W/m^2), a coverage
+layout(binding = 14) uniform sampler2D ssr_tex;     // rgb reflected radiance, a confidence
 layout(push_constant) uniform Push {
   // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion,
-  // 32 multi-bounce occlusion, 64 irradiance volume
+  // 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections
   uint flags;
   float intensity;
 };
@@ -110,12 +114,17 @@ void main() {
   vec3 diffuse = diffuse_color * irradiance_over_pi * occlusion;
 
   vec3 r = reflect(-v, n);
-  vec3 specular = environment_specular(r, n_dot_v, f0, roughness);
+  vec3 reflected = intensity * prefiltered_radiance(r, roughness);
+  if ((flags & 128u) != 0u) {
+    vec4 ssr = texelFetch(ssr_tex, texel, 0);
+    reflected = mix(reflected, ssr.rgb, clamp(ssr.a, 0.0, 1.0));
+  }
+  vec3 specular = split_sum_reflection(reflected, n_dot_v, f0, roughness);
   if ((flags & 16u) != 0u && cones)
     specular *= specular_occlusion_from_cone(n, r, bent, cone_cos, roughness);
   else if ((flags & 16u) != 0u && (flags & 4u) != 0u)
     specular *= specular_occlusion_from_ao(n_dot_v, visibility, roughness);
   if (material_occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, material_occlusion, roughness);
 
-  imageStore(color, texel, vec4(direct + diffuse + intensity * specular, 1.0));
+  imageStore(color, texel, vec4(direct + diffuse + specular, 1.0));
 }

@@ -23,13 +23,22 @@ vec3 sh_irradiance(vec3 n) {
   return max(e, vec3(0.0));  // ringing must not light negatively
 }
 
-// Specular image-based light along the reflection r: the prefiltered map at mip roughness
-// (mips - 1), through the split sum.
-vec3 environment_specular(vec3 r, float n_dot_v, vec3 f0, float roughness) {
+// The prefiltered map along the reflection r at mip roughness (mips - 1).
+vec3 prefiltered_radiance(vec3 r, float roughness) {
   float mips = float(textureQueryLevels(specular_map));
-  vec3 prefiltered = textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
+  return textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
+}
+
+// Reflected radiance before the BRDF (the prefiltered map's, or another source's in its place:
+// lighting.ibl's screen-space reflections) through the split sum.
+vec3 split_sum_reflection(vec3 prefiltered, float n_dot_v, vec3 f0, float roughness) {
   vec2 scale_bias = textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
   return split_sum_specular(prefiltered, f0, scale_bias);
+}
+
+// Specular image-based light along the reflection r: the prefiltered map through the split sum.
+vec3 environment_specular(vec3 r, float n_dot_v, vec3 f0, float roughness) {
+  return split_sum_reflection(prefiltered_radiance(r, roughness), n_dot_v, f0, roughness);
 }
 
 // Image-based light leaving a surface toward v with no occlusion but its material's own

@@ -1,0 +1,69 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// lighting.ssr's resolve: glossy pixels (roughness above kGlossy) reuse their 3x3 neighbours' hits,
+// weighted by confidence and by how alike the neighbour's depth and normal are, so one ray a pixel
+// covers more of the lobe; then last frame's result, fetched where the motion vectors say this
+// surface was and clamped to this frame's neighbourhood (a disoccluded or changed pixel cannot
+// keep stale values), is blended in. Both work on radiance premultiplied by confidence, which is
+// what lighting.ibl's mix adds up: averaging (rgb a, a) and dividing back keeps a hit's weight
+// proportional to its confidence.
+#include "nodes/common/shaders/finite.glsl"
+#include "nodes/common/shaders/gbuffer.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = 0) uniform sampler2D raw;  // the trace's rgb and confidence
+layout(binding = 1) uniform sampler2D hiz;  // level 0: device depth
+layout(binding = 2) uniform sampler2D normal_tex;
+layout(binding = 3) uniform sampler2D material_tex;
+layout(binding = 4) uniform sampler2D motion_tex;
+layout(binding = 5) uniform sampler2D history;  // bilinear; bound to `raw` when absent
+layout(binding = 6, rgba16f) uniform writeonly image2D reflections;
+layout(push_constant) uniform Push {
+  uint flags;  // 1: history usable, 2: spatial reuse
+  float temporal_blend;
+};
+
+const float kGlossy = 0.1;  // perceptual roughness above which neighbours' hits are reused
+
+vec4 premultiplied(vec4 c) {
+  return vec4(c.rgb * c.a, c.a);
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(reflections);
+  if (any(greaterThanEqual(texel, size))) return;
+  vec4 center = premultiplied(texelFetch(raw, texel, 0));
+  float depth = texelFetch(hiz, texel, 0).r;
+  vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
+  bool spatial = (flags & 2u) != 0u && depth > 0.0 && texelFetch(material_tex, texel, 0).r > kGlossy;
+  vec4 sum = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30);
+  float weight = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      ivec2 at = clamp(texel + ivec2(x, y), ivec2(0), size - 1);
+      vec4 c = premultiplied(texelFetch(raw, at, 0));
+      lo = min(lo, c);
+      hi = max(hi, c);
+      // Alike surfaces only: device depth within 5% (relative, as it is near / distance), normals
+      // within about 35 degrees (cosine^8 above 0.03).
+      float d = texelFetch(hiz, at, 0).r;
+      float w = clamp(1.0 - abs(d - depth) / (0.05 * depth), 0.0, 1.0) *
+                pow(max(dot(n, decode_normal(texelFetch(normal_tex, at, 0).rgb)), 0.0), 8.0);
+      sum += w * c;
+      weight += w;
+    }
+  vec4 result = spatial && weight > 0.0 ? sum / weight : center;
+  if ((flags & 1u) != 0u && temporal_blend > 0.0) {
+    vec2 uv = (vec2(texel) + 0.5) / vec2(size);
+    vec2 previous = uv - texelFetch(motion_tex, texel, 0).rg;
+    if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThanEqual(previous, vec2(1.0)))) {
+      vec4 past = clamp(premultiplied(textureLod(history, previous, 0.0)), lo, hi);
+      result = mix(result, past, temporal_blend);
+    }
+  }
+  result = vec4(finite_or_zero(result.rgb), clamp(result.a, 0.0, 1.0));
+  vec3 radiance = result.a > 0.0 ? min(result.rgb / result.a, vec3(65504.0)) : vec3(0.0);  // no Inf in half floats
+  imageStore(reflections, texel, vec4(radiance, result.a));
+}

@@ -1,0 +1,124 @@
+#include "nodes/lighting/ssr/ssr_kernel.h"
+
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <stdexcept>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+struct TracePush {  // nodes/lighting/ssr/shaders/trace.comp
+  uint32_t max_steps, flags, frame;
+  float max_roughness, thickness, max_distance, edge_fade, near_plane;
+};
+
+struct ResolvePush {  // nodes/lighting/ssr/shaders/resolve.comp
+  uint32_t flags;
+  float temporal_blend;
+};
+
+class SsrKernel final : public NodeKernel {
+ public:
+  explicit SsrKernel(const PlanNode& node)
+      : max_steps_(uint32_t(param_number(node, "max_steps"))),
+        max_roughness_(float(param_number(node, "max_roughness"))),
+        thickness_(float(param_number(node, "thickness"))),
+        max_distance_(float(param_number(node, "max_distance"))),
+        edge_fade_(float(param_number(node, "edge_fade"))),
+        spatial_reuse_(param_bool(node, "spatial_reuse")),
+        temporal_blend_(float(param_number(node, "temporal_blend"))) {}
+
+  void record(PassContext& ctx) override {
+    const std::string& pass = ctx.pass().pass;
+    if (pass == "hiz")
+      build_pyramid(ctx);
+    else if (pass == "trace")
+      trace(ctx);
+    else if (pass == "resolve")
+      resolve(ctx);
+    else
+      throw std::logic_error("lighting.ssr has no pass '" + pass + "'");
+  }
+
+ private:
+  // One dispatch a level, each reading the one before it.
+  void build_pyramid(PassContext& ctx) {
+    Image& hiz = ctx.image("tmp.pyramid");
+    for (uint32_t level = 0; level < hiz.desc().mips; ++level) {
+      // Also before level 0: its shader declares a read of `below`, which must follow the
+      // plan's layout transition (made visible to writes only).
+      compute_to_compute_barrier(ctx.cmd());
+      const uint32_t below = level > 0 ? level - 1 : 0;
+      const DescriptorWrite writes[] = {sampled_image(0, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                        storage_image(1, hiz.view({.base_mip = below, .mip_count = 1})),
+                                        storage_image(2, hiz.view({.base_mip = level, .mip_count = 1}))};
+      dispatch_compute(ctx, "nodes/lighting/ssr/shaders/hiz.comp", writes, std::max(1u, hiz.desc().width >> level),
+                       std::max(1u, hiz.desc().height >> level), std::as_bytes(std::span(&level, 1)));
+    }
+  }
+
+  void trace(PassContext& ctx) {
+    Image& out = ctx.image("tmp.raw");
+    if (!camera_) camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    const CameraView& camera = ctx.scene().camera;
+    camera_->write_value(camera_constants(camera, out.desc().width, out.desc().height));
+    // The executor clears history before the first frame: black, not last frame's light.
+    const bool history = ctx.frame_index() > 0 && ctx.has("in.history");
+    Image& color = ctx.image("in.color");
+    const DescriptorWrite writes[] = {
+        uniform_buffer(0, camera_->handle()),
+        sampled_image(1, ctx.image("tmp.pyramid").view(), ctx.nearest_sampler()),
+        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+        sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
+        sampled_image(4, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
+        sampled_image(5, color.view(), ctx.nearest_sampler()),
+        sampled_image(6, (ctx.has("in.history") ? ctx.image("in.history") : color).view(), ctx.linear_sampler()),
+        storage_image(7, out.view())};
+    const TracePush push{max_steps_,     history ? 1u : 0u, uint32_t(ctx.frame_index()),
+                         max_roughness_, thickness_,        max_distance_,
+                         edge_fade_,     camera.near_plane};
+    dispatch_compute(ctx, "nodes/lighting/ssr/shaders/trace.comp", writes, out.desc().width, out.desc().height,
+                     std::as_bytes(std::span(&push, 1)));
+  }
+
+  void resolve(PassContext& ctx) {
+    Image& out = ctx.image("out.reflections");
+    Image& raw = ctx.image("tmp.raw");
+    const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history");  // not the cleared one
+    const DescriptorWrite writes[] = {
+        sampled_image(0, raw.view(), ctx.nearest_sampler()),
+        sampled_image(1, ctx.image("tmp.pyramid").view({.base_mip = 0, .mip_count = 1}), ctx.nearest_sampler()),
+        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+        sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
+        sampled_image(4, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
+        sampled_image(5, (ctx.has("in.reflection_history") ? ctx.image("in.reflection_history") : raw).view(),
+                      ctx.linear_sampler()),
+        storage_image(6, out.view())};
+    const ResolvePush push{(history ? 1u : 0u) | (spatial_reuse_ ? 2u : 0u), temporal_blend_};
+    dispatch_compute(ctx, "nodes/lighting/ssr/shaders/resolve.comp", writes, out.desc().width, out.desc().height,
+                     std::as_bytes(std::span(&push, 1)));
+  }
+
+  uint32_t max_steps_;
+  float max_roughness_, thickness_, max_distance_, edge_fade_;
+  bool spatial_reuse_;
+  float temporal_blend_;
+  std::optional<HostBuffer> camera_;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_ssr_kernel(const PlanNode& node) {
+  return std::make_unique<SsrKernel>(node);
+}
+
+}  // namespace lg
