@@ -14,9 +14,15 @@ vec3 encode_normal(vec3 n) {
   return (n * 511.0 + 511.0) / 1023.0;
 }
 
+// The stored normal before normalization: unit length within the channel's steps (about 0.2%),
+// for comparing normals where that error does not matter; a degenerate normal stays 0.
+vec3 decode_normal_unnormalized(vec3 stored) {
+  return (stored * 1023.0 - 511.0) / 511.0;
+}
+
 // A stored normal of zero length (a degenerate mesh normal) decodes to +z, never NaN.
 vec3 decode_normal(vec3 stored) {
-  vec3 n = (stored * 1023.0 - 511.0) / 511.0;
+  vec3 n = decode_normal_unnormalized(stored);
   float len = length(n);
   return len > 1e-3 ? n / len : vec3(0.0, 0.0, 1.0);
 }

@@ -26,10 +26,18 @@ ivec2 upsample_block_end(ivec2 low, int k, ivec2 low_size, ivec2 full_size) {
   return mix(min((low + 1) * k, full_size), full_size, equal(low, low_size - 1));
 }
 
+// Surfaces count as alike within a few per cent of view distance (reversed-Z depth is
+// proportional to 1 / distance, so |d_tap - d| / d_tap is the relative change in distance; a floor
+// seen at 5 degrees changes by ~2% between texels two pixels apart) and within ~30 degrees of
+// normal (cos^8 of 30 degrees is 0.32). Rational, not Gaussian, in distance: the ranking of taps
+// that are all unlike must not underflow to 0.
+const float LG_UPSAMPLE_DISTANCE_SCALE = 0.05;
+
 struct UpsampleTaps {
   vec4 value[4];  // texels low, low + (1, 0), low + (0, 1), low + (1, 1), clamped to the image
   float depth[4];  // their G-buffer depth (0: sky)
-  vec3 normal[4];
+  float distance_scale[4];  // 1 / (depth LG_UPSAMPLE_DISTANCE_SCALE), 0 for sky
+  vec3 normal[4];  // unnormalized (decode_normal_unnormalized): the dot products need no more
 };
 
 UpsampleTaps upsample_taps(sampler2D low_tex, sampler2D depth_tex, sampler2D normal_tex, ivec2 low, int k) {
@@ -40,26 +48,20 @@ UpsampleTaps upsample_taps(sampler2D low_tex, sampler2D depth_tex, sampler2D nor
     ivec2 source = upsample_source_texel(texel, k, full_size);
     taps.value[t] = texelFetch(low_tex, texel, 0);
     taps.depth[t] = texelFetch(depth_tex, source, 0).r;
-    taps.normal[t] = decode_normal(texelFetch(normal_tex, source, 0).rgb);
+    taps.distance_scale[t] = taps.depth[t] > 0.0 ? 1.0 / (taps.depth[t] * LG_UPSAMPLE_DISTANCE_SCALE) : 0.0;
+    taps.normal[t] = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
   }
   return taps;
 }
 
-// Surfaces count as alike within a few per cent of view distance (reversed-Z depth is
-// proportional to 1 / distance, so |d_tap - d| / d_tap is the relative change in distance; a floor
-// seen at 5 degrees changes by ~2% between texels two pixels apart) and within ~30 degrees of
-// normal (cos^8 of 30 degrees is 0.32). Rational, not Gaussian, in distance: the ranking of taps
-// that are all unlike must not underflow to 0.
-const float LG_UPSAMPLE_DISTANCE_SCALE = 0.05;
-
 // The pixel at fraction `f` (in [0, 1)) of the way from tap 0 toward tap 3, with G-buffer depth
-// `depth` (> 0) and normal n.
+// `depth` (> 0) and normal n (unnormalized, as the taps').
 vec4 upsample_pixel(UpsampleTaps taps, float depth, vec3 n, vec2 f) {
   vec4 sum = vec4(0.0), best = vec4(0.0);
   float total = 0.0, best_rank = 0.0;
   for (int t = 0; t < 4; ++t) {
     if (taps.depth[t] <= 0.0) continue;
-    float q = abs(taps.depth[t] - depth) / (taps.depth[t] * LG_UPSAMPLE_DISTANCE_SCALE);
+    float q = abs(taps.depth[t] - depth) * taps.distance_scale[t];
     float near = 1.0 / (1.0 + q * q);
     float facing = max(dot(n, taps.normal[t]), 0.0);
     facing *= facing;
