@@ -211,6 +211,42 @@ TEST(CompilerSpecialization, NoEnvironmentBypassesImageBasedLighting) {
   expect_nothing_read_before_written(plan);
 }
 
+// examples/gi-volume.json feeds gi.irradiance_volume into lighting.ibl's optional input. A scene
+// without volumes bypasses the volume node forwarding null: ibl then runs with the input unlinked
+// (its shade pass reads no volume image). lighting.ibl's own bypass (no environment light) holds
+// "unless_linked" irradiance_volume: a sealed room lit by lamps and a volume keeps its bounce
+// light, a scene with neither environment nor volumes bypasses ibl. Fails if a null forward still
+// counts as a link, or if unless_linked is ignored.
+TEST(CompilerSpecialization, VolumeBypassForwardsNullAndKeepsIblOnlyWhileLinked) {
+  const auto compile = [](bool environment, int volumes) {
+    CompileOptions o;
+    o.scene = default_scene_summary();
+    o.scene.environment = environment;
+    o.scene.irradiance_volumes = volumes;
+    return test::compile_ok(test::load_example("examples/gi-volume.json"), builtin_registry(), o);
+  };
+  const Plan lit = compile(true, 0);
+  EXPECT_EQ(test::plan_node(lit, "volume")->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(test::plan_node(lit, "volume")->reason, "the scene has no irradiance volumes");
+  EXPECT_EQ(test::plan_node(lit, "ibl")->state, NodeState::Kind::active);
+  EXPECT_EQ(test::resource_in_slot(lit, "ibl/shade", "in.irradiance_volume"), -1);
+  EXPECT_EQ(test::resource_at(lit, "volume.irradiance"), -1);
+  expect_nothing_read_before_written(lit);
+
+  const Plan lamps = compile(false, 1);
+  EXPECT_EQ(test::plan_node(lamps, "volume")->state, NodeState::Kind::active);
+  EXPECT_EQ(test::plan_node(lamps, "ibl")->state, NodeState::Kind::active);
+  EXPECT_EQ(test::resource_name(lamps, test::resource_in_slot(lamps, "ibl/shade", "in.irradiance_volume")),
+            "volume.irradiance");
+  expect_nothing_read_before_written(lamps);
+
+  const Plan dark = compile(false, 0);
+  EXPECT_EQ(test::plan_node(dark, "ibl")->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(test::plan_node(dark, "ibl")->reason, "the scene has no environment light");
+  EXPECT_EQ(test::resource_name(dark, test::resource_in_slot(dark, "tonemap/map", "in.color")), "light.color");
+  expect_nothing_read_before_written(dark);
+}
+
 // The default graph composites transparent surfaces after the image-based light; a scene with no
 // BLEND material bypasses that node (it forwards ibl's colour, and the plan says why), leaving
 // the passes, resources and barriers the graph had before the node was wired in. Fails without
