@@ -2,25 +2,14 @@
 #include "nodes/raytrace/alpha_coverage.h"
 
 #include "nodes/raytrace/surface_material.h"
+#include "runtime/scene/light_alpha.h"
 
 namespace lg {
-
-double alpha_threshold(const PbrMaterial& m) {
-  switch (m.alpha_mode) {
-    case AlphaMode::mask:
-      return m.alpha_cutoff;
-    case AlphaMode::blend:
-      return 0.5;
-    case AlphaMode::opaque:
-      break;
-  }
-  return -1.0;
-}
 
 AlphaCoverage::AlphaCoverage(const WorldMesh& mesh, const SceneView& view) {
   for (size_t d = 0; d < mesh.parts.size() && d < view.draws.size(); ++d) {
     const PbrMaterial& m = view.material_of(view.draws[d]);
-    const double threshold = alpha_threshold(m);
+    const double threshold = light_alpha_cutoff(m);
     if (!(threshold > 0.0)) continue;  // alpha is never below a cutoff of 0
     const int t = m.base_color_texture.texture;
     materials_.push_back(

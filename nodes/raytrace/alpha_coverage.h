@@ -2,7 +2,7 @@
 // (world_mesh.h) whose material is alphaMode MASK, and whether a point on one has alpha below
 // its cutoff, as the G-buffer's alpha test decides (coverage_alpha(): base colour factor x
 // texture x vertex colour alpha, the texture at level 0 through its set and transform). BLEND
-// materials are tested as MASK with cutoff 0.5 (docs/path-tracer.md says why). Holds copies of
+// materials are tested as MASK with cutoff 0.5 (light_alpha_cutoff()). Holds copies of
 // what it reads (corner uvs and alphas, materials, shared textures), so it outlives the view.
 #pragma once
 
@@ -15,9 +15,6 @@
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
-
-// The alpha below which a material lets rays through; negative for opaque materials.
-double alpha_threshold(const PbrMaterial& material);
 
 class AlphaCoverage {
  public:

@@ -1,8 +1,9 @@
 // The glTF metal-rough material through the G-buffer and lighting, on the assets of
 // scripts/make-test-gltf (examples/gltf/) rendered at 96x96 with validation on. Each test fails
 // without the feature it names: the normal map (and generated tangents, and the screen-space
-// frame when a mesh has none), the MASK alpha test, double-sided materials, the
-// metallic-roughness texture through texcoord set 1 and KHR_texture_transform, vertex colours,
+// frame when a mesh has none), the MASK alpha test in the G-buffer and the shadow maps,
+// double-sided materials, the metallic-roughness texture through texcoord set 1 and
+// KHR_texture_transform, vertex colours,
 // the occlusion texture, which must darken image-based light only, and BLEND materials, which
 // the G-buffer skips and scene.forward_transparent composites back to front.
 #include <gtest/gtest.h>
@@ -157,6 +158,48 @@ TEST(MaterialRender, MaskCutsAHoleThroughToWhatIsBehind) {
   expect_near(glm::vec3(f.at("gbuf.gbuffer.albedo", 14, kMiddle)), quad, 0.01f, "the quad's opaque rim");
   // Reversed Z: the wall, farther, has the smaller depth.
   EXPECT_LT(f.at("gbuf.gbuffer.depth", kMiddle, kMiddle).r, f.at("gbuf.gbuffer.depth", 14, kMiddle).r);
+}
+
+// The cut-out quad lit by one light: its sun, or (sun removed) a spot, a point or a sphere
+// light 2.5 m before the quad on the camera's axis, aiming down -Z.
+enum class Light { sun, spot, point, sphere };
+
+World cut_out_lit_by(Light light, bool shadows) {
+  World world = asset("cut-out-quad.gltf");
+  std::vector<Entity> suns;
+  world.each<DirectionalLight>([&](Entity e, DirectionalLight& l) {
+    l.casts_shadows = shadows;
+    suns.push_back(e);
+  });
+  if (light == Light::sun) return world;
+  for (Entity e : suns) world.remove<DirectionalLight>(e);
+  Entity e = world.create("light");
+  world.add(e, Transform{.position = {0.0f, 0.0f, 2.5f}});
+  if (light == Light::spot) world.add(e, SpotLight{.intensity = 10.0f, .casts_shadows = shadows});
+  if (light == Light::point) world.add(e, PointLight{.intensity = 10.0f, .casts_shadows = shadows});
+  if (light == Light::sphere) world.add(e, SphereLight{.intensity = 300.0f, .casts_shadows = shadows});
+  return world;
+}
+
+// Light passes the hole in the shadow maps as it does in the G-buffer: the wall seen through
+// the middle of the hole is lit as brightly as with the light's shadows off (the same shading;
+// half floats, 1e-3 relative), though it lies well inside the quad's shadow (on the wall the
+// light through the hole spans |x| < 0.5 for the sun, < 0.7 for the lights at 2.5 m; the
+// camera sees the wall through the hole out to |x| < 0.667). The sun's shadow of the quad's
+// opaque rim, seen through the hole at pixel 64 (x = 0.58 m on the wall), stays dark.
+TEST(MaterialRender, MaskLetsLightThroughTheShadowMaps) {
+  for (Light light : {Light::sun, Light::spot, Light::point, Light::sphere}) {
+    SCOPED_TRACE("light " + std::to_string(int(light)));
+    Frame shadowed(cut_out_lit_by(light, true)), open(cut_out_lit_by(light, false));
+    const glm::vec3 through(shadowed.at("light.color", kMiddle, kMiddle)),
+        unshadowed(open.at("light.color", kMiddle, kMiddle));
+    ASSERT_GT(unshadowed.r, 0.05f);
+    expect_near(through / unshadowed, glm::vec3(1.0f), 1e-3f, "lit through the hole / unshadowed");
+    if (light == Light::sun) {
+      EXPECT_LT(shadowed.at("light.color", 64, kMiddle).r, 0.01f * open.at("light.color", 64, kMiddle).r)
+          << "the rim's shadow seen through the hole";
+    }
+  }
 }
 
 // Turned to show its back, the double-sided quad still draws with cull_backfaces on (the

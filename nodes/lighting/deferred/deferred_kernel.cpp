@@ -13,11 +13,13 @@
 #include "nodes/lighting/deferred/light_culling.h"
 #include "nodes/lighting/deferred/local_shadows.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
+#include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
+#include "runtime/scene/light_alpha.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -61,7 +63,7 @@ class DeferredKernel final : public NodeKernel {
     prepared_frame_ = ctx.frame_index();
     if (!lights_) {
       lights_.emplace(ctx.gpu(), ctx.node().id);
-      worlds_.emplace(ctx.gpu(), ctx.node().id + " draw transforms", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     }
     const SceneView& scene = ctx.scene();
     if (bounds_version_ != scene.version || !bounds_) {
@@ -77,9 +79,7 @@ class DeferredKernel final : public NodeKernel {
     if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
     lights_->write_lights(lights, caster, local_, c);
     constants_ = c;
-    std::vector<glm::mat4> worlds;
-    for (const DrawItem& d : scene.draws) worlds.push_back(d.world);
-    worlds_->write(worlds);
+    draws_->write(draw_constants(scene));
   }
 
   void record_shadows(PassContext& ctx) {
@@ -107,39 +107,63 @@ class DeferredKernel final : public NodeKernel {
   }
 
   // Clears `map` and draws every draw's depth into each view's square of it (reversed depth:
-  // 0, the clear value, is farthest from the light).
+  // 0, the clear value, is farthest from the light). Draws whose alpha lets light through
+  // (light_alpha_cutoff) go through the alpha-tested pipeline, the others through positions only.
   void draw_depth(PassContext& ctx, Image& map, const std::vector<DepthView>& views) {
     const SceneView& scene = ctx.scene();
+    GpuScene& gpu_scene = ctx.gpu_scene();
     VkRenderingAttachmentInfo depth = cleared_attachment(map.view(), {.depthStencil = {0.0f, 0}});
     const VkRenderingInfo rendering = rendering_info(map.desc().width, map.desc().height, {}, &depth);
-
-    GraphicsPipelineDesc desc;
-    desc.name = ctx.pass().name;
-    desc.vertex_shader = node_shader("nodes/lighting/deferred/shaders/shadow.vert");
-    desc.fragment_shader = node_shader("nodes/lighting/deferred/shaders/shadow.frag");
-    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-    desc.push_constant_bytes = sizeof(ShadowPush);
-    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)}};
-    desc.depth_format = map.desc().format;
-    desc.depth_test = desc.depth_write = true;
-    const Pipeline& pipeline = ctx.pipelines().graphics(desc);
+    const Pipeline& opaque = depth_pipeline(ctx, map, false);
+    const Pipeline& alpha_tested = depth_pipeline(ctx, map, true);
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    const DescriptorWrite writes[] = {storage_buffer(0, worlds_->handle())};
-    bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
     for (const DepthView& view : views) {
       const VkViewport viewport{float(view.origin.x), float(view.origin.y), float(view.size), float(view.size), 0, 1};
       const VkRect2D scissor{{int32_t(view.origin.x), int32_t(view.origin.y)}, {view.size, view.size}};
       vkCmdSetViewport(cmd, 0, 1, &viewport);
       vkCmdSetScissor(cmd, 0, 1, &scissor);
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+        const PbrMaterial& m = scene.material_of(scene.draws[i]);
+        std::vector<DescriptorWrite> writes = {storage_buffer(0, draws_->handle())};
+        const bool tested = light_alpha_cutoff(m) > 0.0f;
+        if (tested)
+          writes.push_back(sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
+                                         gpu_scene.sampler(m.base_color_texture.sampling)));
+        const Pipeline& pipeline = tested ? alpha_tested : opaque;
+        bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
         push_constants(cmd, pipeline, ShadowPush{view.clip_from_world, i, {}});
-        draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
+        draw_mesh(cmd, gpu_scene.mesh(scene.draws[i].mesh));
       }
     }
     vkCmdEndRendering(cmd);
+  }
+
+  // Depth into `map` from positions (shaders/shadow.vert), or alpha-tested against the draw's
+  // base colour (shaders/shadow_masked.*). Both sides of every face: a wall modelled as one
+  // single-sided plane must not let light through from behind.
+  static const Pipeline& depth_pipeline(PassContext& ctx, const Image& map, bool alpha_tested) {
+    GraphicsPipelineDesc desc;
+    desc.name = ctx.pass().name;
+    desc.vertex_shader = node_shader(alpha_tested ? "nodes/lighting/deferred/shaders/shadow_masked.vert"
+                                                  : "nodes/lighting/deferred/shaders/shadow.vert");
+    desc.fragment_shader = node_shader(alpha_tested ? "nodes/lighting/deferred/shaders/shadow_masked.frag"
+                                                    : "nodes/lighting/deferred/shaders/shadow.frag");
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    if (alpha_tested) desc.bindings.push_back({1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    desc.push_constant_bytes = sizeof(ShadowPush);
+    // Exactly the attributes shadow_vertex.glsl reads: validation flags any other.
+    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)}};
+    if (alpha_tested)
+      desc.vertex_attributes.insert(desc.vertex_attributes.end(),
+                                    {{2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)},
+                                     {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv1)},
+                                     {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertex, color)}});
+    desc.depth_format = map.desc().format;
+    desc.depth_test = desc.depth_write = true;
+    return ctx.pipelines().graphics(desc);
   }
 
   // The G-buffer's four surface images at bindings 1 to 4, as surface.glsl declares them.
@@ -208,7 +232,7 @@ class DeferredKernel final : public NodeKernel {
   const uint32_t shadow_budget_, atlas_size_, area_shadow_samples_;
   const bool cull_lights_;
   std::optional<LightBuffers> lights_;
-  std::optional<HostBuffer> worlds_;
+  std::optional<HostBuffer> draws_;
   LightConstants constants_{};
   std::optional<Bounds> bounds_;
   uint64_t bounds_version_ = 0;

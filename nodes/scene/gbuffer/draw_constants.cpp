@@ -1,9 +1,12 @@
-// draw_constants(): the scene's draws as draw.glsl reads them.
+// draw_constants(): the scene's draws as draw_data.glsl reads them.
 #include "nodes/scene/gbuffer/draw_constants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+
+#include "runtime/scene/light_alpha.h"
 
 namespace lg {
 
@@ -31,7 +34,8 @@ std::vector<DrawConstants> draw_constants(const SceneView& scene) {
     c.base_color = m.base_color;
     c.material = {m.roughness, m.metalness, m.normal_texture.texture >= 0 ? m.normal_scale : 0.0f,
                   m.occlusion_strength};
-    c.alpha = {m.alpha_mode == AlphaMode::mask ? m.alpha_cutoff : 0.0f, 0.0f, 0.0f, 0.0f};
+    c.alpha = {m.alpha_mode == AlphaMode::mask ? m.alpha_cutoff : 0.0f, std::max(light_alpha_cutoff(m), 0.0f), 0.0f,
+               0.0f};
     c.emissive = glm::vec4(m.emissive, 0.0f);
     const auto maps = material_maps(m);
     for (int t = 0; t < material_map_count; ++t) uv_transform_rows(*maps[size_t(t)], &c.uv_transforms[2 * t]);

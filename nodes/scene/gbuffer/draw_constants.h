@@ -1,5 +1,5 @@
 // Per-draw constants of passes that rasterize the scene's meshes as the G-buffer pass does
-// (nodes/scene/gbuffer/shaders/draw.glsl, std430): world and last frame's world matrices, the
+// (nodes/scene/gbuffer/shaders/draw_data.glsl, std430): world and last frame's world matrices, the
 // normal matrix, and the draw's material: factors, alpha test, emission, and per texture its uv transform
 // and texcoord set.
 #pragma once
@@ -27,7 +27,7 @@ struct DrawConstants {
   glm::mat4 world, previous_world, normal_matrix;
   glm::vec4 base_color;
   glm::vec4 material;  // perceptual roughness, metalness, normal scale (0: no normal map), occlusion strength
-  glm::vec4 alpha;     // x: alpha cutoff of MASK materials (0 otherwise)
+  glm::vec4 alpha;     // x: alpha cutoff of MASK materials (0 otherwise); y: light_alpha_cutoff (0 for opaque)
   glm::vec4 emissive;  // rgb: emitted radiance, multiplies the emissive texture
   // Per MaterialTexture, the two rows of KHR_texture_transform's 2x3 matrix (uv' = M (u, v, 1)),
   // the texcoord set (0 or 1) in the first row's w, 1 in the second's where the texture exists.

@@ -27,15 +27,13 @@ layout(location = 6) in vec4 vertex_color;
 #ifdef LG_MATERIAL_MAPS
 // The uv that texture `map` of the draw reads: its set, through its transform.
 vec2 map_uv(Draw d, int map) {
-  vec4 row0 = d.uv_transforms[2 * map], row1 = d.uv_transforms[2 * map + 1];
-  vec3 uv = vec3(row0.w > 0.5 ? texcoords.zw : texcoords.xy, 1.0);
-  return vec2(dot(row0.xyz, uv), dot(row1.xyz, uv));
+  return draw_map_uv(d, map, texcoords);
 }
 
 // Texture `map` at its uv, or `absent` where the material has none: the branch is the same for
 // the whole draw, so untextured materials (the default world's) pay no texture fetch.
 vec4 sample_map(Draw d, int map, sampler2D tex, vec4 absent) {
-  return d.uv_transforms[2 * map + 1].w > 0.5 ? texture(tex, map_uv(d, map)) : absent;
+  return draw_has_map(d, map) ? texture(tex, map_uv(d, map)) : absent;
 }
 
 // The normal map applied to the unit geometric normal n (of the front face).
