@@ -37,7 +37,34 @@ TEST(LightCulling, RangeSpheresOutsideTheViewAreCulled) {
   EXPECT_FALSE(reaches(f, PointLightData{.position = {20, 0, -5}, .range = 5.0f}));  // beside
   EXPECT_TRUE(reaches(f, PointLightData{.position = {20, 0, -5}, .range = 12.0f}));  // 10.6 m from the plane
   EXPECT_FALSE(reaches(f, SpotLightData{.position = {0, 0, 5}, .range = 1.0f}));
-  EXPECT_TRUE(reaches(f, SpotLightData{.position = {0, 0, 5}}));
+}
+
+// A spot's cone (cut by its range where it has one) against the same 90-degree view down -Z:
+// behind the camera, one aiming at the view reaches it at any range that gets there, one
+// aiming away never does, even without a range; one aiming across reaches it when its cone is
+// wide enough to tip into the view.
+TEST(LightCulling, SpotConesOutsideTheViewAreCulled) {
+  const Frustum f = view_frustum(camera_at_origin().camera);
+  const glm::vec3 forward(0, 0, -1), back(0, 0, 1), up(0, 1, 0);
+  auto spot = [](glm::vec3 position, glm::vec3 direction, float outer_degrees, float range) {
+    return SpotLightData{
+        .position = position, .direction = direction, .range = range, .outer_cone_angle = glm::radians(outer_degrees)};
+  };
+  EXPECT_TRUE(reaches(f, spot({0, 0, 5}, forward, 30, 0)));
+  EXPECT_TRUE(reaches(f, spot({0, 0, 5}, forward, 30, 6)));
+  EXPECT_FALSE(reaches(f, spot({0, 0, 5}, forward, 30, 4)));  // its range ends behind the camera
+  EXPECT_FALSE(reaches(f, spot({0, 0, 5}, back, 30, 0)));     // aims away: no range needed
+  EXPECT_FALSE(reaches(f, spot({0, 0, 5}, back, 80, 0)));
+  // 10 m above the view's axis, 5 m ahead (above its top plane y = -z), aiming up: the
+  // 30-degree cone never turns down into the view; the 90-degree one, the half space y >= 10,
+  // meets it farther ahead, where the view is more than 10 m tall.
+  EXPECT_FALSE(reaches(f, spot({0, 10, -5}, up, 30, 0)));
+  EXPECT_TRUE(reaches(f, spot({0, 10, -5}, up, 90, 0)));
+  // There aiming forward, level: the cone's lower edge, 30 degrees down, enters the view 3.7 m
+  // out, so a range of 5 m reaches it and one of 3 m does not.
+  EXPECT_TRUE(reaches(f, spot({0, 10, -5}, forward, 30, 0)));
+  EXPECT_TRUE(reaches(f, spot({0, 10, -5}, forward, 30, 5)));
+  EXPECT_FALSE(reaches(f, spot({0, 10, -5}, forward, 30, 3)));
 }
 
 TEST(LightCulling, CulledLightsLeaveTheShadowBudgetToLightsInView) {

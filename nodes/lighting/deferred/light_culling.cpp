@@ -1,6 +1,8 @@
 #include "nodes/lighting/deferred/light_culling.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace lg {
 namespace {
@@ -24,10 +26,25 @@ bool reaches(const Frustum& frustum, const PointLightData& light) {
   return touches(frustum, light.position, influence_radius(light.range));
 }
 
-// The range sphere, not the cone: a cone's bounds would be tighter, but the sphere is enough to
-// drop lights far from the view, which is where most of them are.
+// The cone cut by the range sphere: its points are position + t v for t in [0, range] and unit
+// v within the outer angle of the axis (the falloff is exactly 0 at the outer angle). Along a
+// plane's normal n the cone reaches n.v at most 1 where n lies inside the cone, else
+// cos(angle(n, axis) - outer); so the farthest point is the apex where that is not positive and
+// range times it beyond the apex otherwise (never outside the plane without a range).
 bool reaches(const Frustum& frustum, const SpotLightData& light) {
-  return touches(frustum, light.position, influence_radius(light.range));
+  const float cos_outer = std::cos(light.outer_cone_angle), sin_outer = std::sin(light.outer_cone_angle);
+  for (const glm::vec4& p : frustum.planes) {
+    const glm::vec3 n(p);
+    const float apex = glm::dot(n, light.position) + p.w;
+    const float c = glm::dot(n, light.direction);  // |n| is 1 (0 for a plane that bounds nothing)
+    const float farthest = c >= cos_outer ? 1.0f : c * cos_outer + std::sqrt(std::max(0.0f, 1.0f - c * c)) * sin_outer;
+    if (farthest <= 0.0f) {
+      if (apex < 0.0f) return false;
+    } else if (light.range > 0.0f && apex + light.range * farthest < 0.0f) {
+      return false;
+    }
+  }
+  return true;
 }
 
 SceneView lights_in_view(const SceneView& scene, bool cull) {

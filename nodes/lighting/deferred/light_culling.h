@@ -1,9 +1,10 @@
 // Which lights the deferred node shades in a frame: a point or spot light with a range reaches
-// nothing past it (the range window is exactly 0 there, shaders/direct.comp), so one whose
-// range sphere misses the camera's frustum cannot light a visible surface and is left out of
-// the light lists and of the shadow budget's choice. Lights without a range, directional
-// lights, and sphere, tube and rectangle lights (this node gives them no cut-off distance:
-// their light only falls off) reach everything and are always kept.
+// nothing past it (the range window is exactly 0 there, shaders/direct.comp), and a spot
+// nothing outside its outer cone (the cone's falloff is exactly 0 there), so one whose range
+// sphere, or cone cut by its range, misses the camera's frustum cannot light a visible surface
+// and is left out of the light lists and of the shadow budget's choice. Point lights without a
+// range, directional lights, and sphere, tube and rectangle lights (this node gives them no
+// cut-off distance: their light only falls off) reach everything and are always kept.
 #pragma once
 
 #include "runtime/scene/frustum.h"
