@@ -30,6 +30,14 @@ std::string param_line(const ParamSpec& p) {
     line += " one of";
     for (const auto& v : p.values) line += " " + v;
   }
+  if (!p.choices.empty()) {
+    line += " one of";
+    for (double c : p.choices) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, " %g", c);
+      line += buf;
+    }
+  }
   return line + ": " + p.doc + "\n";
 }
 

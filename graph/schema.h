@@ -25,6 +25,7 @@ struct ParamSpec {
   JsonValue default_value;
   std::optional<double> min, max;       // per component for vectors
   std::vector<std::string> values;      // enum choices
+  std::vector<double> choices;          // float and int params: where given, the only values allowed
   std::vector<std::string> extensions;  // path params: accepted file extensions
   std::string unit, doc;
 };
@@ -111,7 +112,7 @@ struct NodeSchema {
   std::string type;      // "post.bloom"
   std::string category;  // "post"
   std::string doc;
-  std::string file;      // where the schema came from, for messages
+  std::string file;  // where the schema came from, for messages
   std::vector<PortSpec> inputs, outputs, resources;
   std::vector<ParamSpec> params;
   std::vector<PassSpec> passes;

@@ -114,8 +114,16 @@ class SchemaReader {
         else d_.error(b->pos(), json_pointer_append(p, key), "expected a number");
       }
     }
+    // "values": an enum's names, or the numbers a float or int param may take.
+    const bool numeric = spec.type == ParamType::float_ || spec.type == ParamType::int_;
+    if (const JsonValue* b = v.find("values"); b && numeric) {
+      for (const auto& item : b->items()) {
+        if (item.is_number()) spec.choices.push_back(item.as_number());
+        else d_.error(item.pos(), json_pointer_append(p, "values"), "expected numbers");
+      }
+    }
     for (auto [key, list] : {std::pair{"values", &spec.values}, std::pair{"extensions", &spec.extensions}}) {
-      if (const JsonValue* b = v.find(key)) {
+      if (const JsonValue* b = v.find(key); b && !(numeric && list == &spec.values)) {
         for (const auto& item : b->items()) {
           if (item.is_string()) list->push_back(item.as_string());
           else d_.error(item.pos(), json_pointer_append(p, key), "expected strings");

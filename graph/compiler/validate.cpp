@@ -8,9 +8,9 @@ namespace lg {
 namespace {
 
 // Shortest round form: integral limits print whole (1048576, not 1.04858e+06).
-std::string format_number(double v) {
+std::string format_number(double v, int digits = 15) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.15g", v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }
 
@@ -23,6 +23,18 @@ std::string range_text(const ParamSpec& spec) {
 
 bool in_range(const ParamSpec& spec, double v) {
   return (!spec.min || v >= *spec.min) && (!spec.max || v <= *spec.max);
+}
+
+// A value matches a choice to 1e-4 relative, so that 0.33333 is the 1/3 a schema lists.
+bool among_choices(const ParamSpec& spec, double v) {
+  return spec.choices.empty() || std::any_of(spec.choices.begin(), spec.choices.end(),
+                                             [v](double c) { return std::abs(v - c) <= 1e-4 * std::abs(c); });
+}
+
+std::string choices_text(const ParamSpec& spec) {
+  std::string list;
+  for (double c : spec.choices) list += (list.empty() ? "" : ", ") + format_number(c, 6);
+  return " among " + list;
 }
 
 std::string node_pointer(int n) {
@@ -47,6 +59,8 @@ std::string check_param_value(const ParamSpec& spec, const JsonValue& v) {
     case ParamType::int_:
       if (!v.is_number() || (integral && !v.is_integer()) || !in_range(spec, v.as_number()))
         return std::string(integral ? "an integer" : "a number") + range_text(spec);
+      if (!among_choices(spec, v.as_number()))
+        return std::string(integral ? "an integer" : "a number") + choices_text(spec);
       return {};
     case ParamType::bool_:
       return v.is_bool() ? "" : "true or false";
