@@ -21,9 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "nodes/raytrace/world_mesh.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
 #include "nodes/occlusion/reference/scene_reference.h"
+#include "nodes/raytrace/world_mesh.h"
+#include "tests/bench/bench_flags.h"
 #include "tests/occlusion/ao_render.h"
 
 namespace lg::bench {
@@ -215,29 +216,15 @@ const char* const usage =
 
 int run(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (a == "-h" || a == "--help") return std::fputs(usage, stdout), 0;
-    if (a == "--results-dir" && has_value) {
-      o.results_dir = argv[++i];
-    } else if (a == "--cache-dir" && has_value) {
-      o.cache_dir = argv[++i];
-    } else if (a == "--size" && has_value && std::sscanf(argv[i + 1], "%ux%u", &o.width, &o.height) == 2) {
-      ++i;
-    } else if (a == "--frames" && has_value) {
-      o.frames = std::max(2, std::atoi(argv[++i]));
-    } else if (a == "--rays" && has_value) {
-      o.rays = std::max(1, std::atoi(argv[++i]));
-    } else if (a == "--only" && has_value) {
-      o.only = argv[++i];
-    } else if (a == "--hf-stride" && has_value) {
-      o.hf_stride = uint32_t(std::max(1, std::atoi(argv[++i])));
-    } else {
-      std::fprintf(stderr, "lumagraph-bench-ao: unknown or incomplete option '%s'\n%s", a.c_str(), usage);
-      return 2;
-    }
-  }
+  BenchFlags flags(usage);
+  flags.text("--results-dir", o.results_dir);
+  flags.text("--cache-dir", o.cache_dir);
+  flags.size("--size", o.width, o.height);
+  flags.count("--frames", o.frames, 2);
+  flags.count("--rays", o.rays);
+  flags.text("--only", o.only);
+  flags.count("--hf-stride", o.hf_stride);
+  if (const auto status = flags.parse(argc, argv)) return *status;
   std::filesystem::create_directories(o.results_dir);
   const World world = test::load_example_world("stanford-bunny");
 

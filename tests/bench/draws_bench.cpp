@@ -19,6 +19,7 @@
 #include "graph/graph_io.h"
 #include "runtime/scene/default_world.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/bench/bench_flags.h"
 
 namespace lg::bench {
 namespace {
@@ -169,21 +170,12 @@ int run(const Options& o) {
 
 int main(int argc, char** argv) {
   lg::bench::Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
-    if (a == "--results-dir" && value)
-      o.results_dir = argv[++i];
-    else if (a == "--frames" && value)
-      o.frames = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--size" && value && std::sscanf(argv[++i], "%ux%u", &o.frame.width, &o.frame.height) == 2)
-      continue;
-    else {
-      std::fprintf(stderr,
-                   "usage: lumagraph-bench-draws [--results-dir DIR] [--frames N] [--size WxH]\n"
-                   "  defaults: bench-results, 12 timed frames (after 2 untimed), 1280x720\n");
-      return 2;
-    }
-  }
+  lg::bench::BenchFlags flags(
+      "usage: lumagraph-bench-draws [--results-dir DIR] [--frames N] [--size WxH]\n"
+      "  defaults: bench-results, 12 timed frames (after 2 untimed), 1280x720\n");
+  flags.text("--results-dir", o.results_dir);
+  flags.count("--frames", o.frames);
+  flags.size("--size", o.frame.width, o.frame.height);
+  if (const auto status = flags.parse(argc, argv)) return *status;
   return lg::bench::run(o);
 }

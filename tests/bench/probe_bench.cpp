@@ -26,6 +26,7 @@
 #include "nodes/raytrace/camera_pixels.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
+#include "tests/bench/bench_flags.h"
 
 namespace lg::bench {
 namespace {
@@ -150,24 +151,13 @@ int run(const Options& o) {
 
 int main(int argc, char** argv) {
   lg::bench::Options o;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string flag = argv[i], value = argv[i + 1];
-    if (flag == "--results-dir")
-      o.results_dir = value;
-    else if (flag == "--size")
-      std::sscanf(value.c_str(), "%ux%u", &o.width, &o.height);
-    else if (flag == "--spp")
-      o.spp = uint32_t(std::stoul(value));
-    else if (flag == "--rays")
-      o.rays = uint32_t(std::stoul(value));
-    else if (flag == "--bounces")
-      o.bounces = uint32_t(std::stoul(value));
-    else {
-      std::fprintf(
-          stderr,
-          "usage: lumagraph-bench-probes [--results-dir DIR] [--size WxH] [--spp N] [--rays N] [--bounces B]\n");
-      return 1;
-    }
-  }
+  lg::bench::BenchFlags flags(
+      "usage: lumagraph-bench-probes [--results-dir DIR] [--size WxH] [--spp N] [--rays N] [--bounces B]\n");
+  flags.text("--results-dir", o.results_dir);
+  flags.size("--size", o.width, o.height);
+  flags.count("--spp", o.spp);
+  flags.count("--rays", o.rays);
+  flags.count("--bounces", o.bounces);
+  if (const auto status = flags.parse(argc, argv)) return *status;
   return lg::bench::run(o);
 }

@@ -27,6 +27,7 @@
 #include "nodes/gi/probes/probe_update.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
+#include "tests/bench/bench_flags.h"
 
 namespace lg::bench {
 namespace {
@@ -155,22 +156,13 @@ int run(const Options& o) {
 
 int main(int argc, char** argv) {
   lg::bench::Options o;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string flag = argv[i], value = argv[i + 1];
-    if (flag == "--results-dir")
-      o.results_dir = value;
-    else if (flag == "--sweeps")
-      o.sweeps = uint32_t(std::stoul(value));
-    else if (flag == "--reference-rays")
-      o.reference_rays = uint32_t(std::stoul(value));
-    else if (flag == "--reference-bounces")
-      o.reference_bounces = uint32_t(std::stoul(value));
-    else {
-      std::fprintf(stderr,
-                   "usage: lumagraph-bench-probe-update [--results-dir DIR] [--sweeps N] [--reference-rays N] "
-                   "[--reference-bounces B]\n");
-      return 1;
-    }
-  }
+  lg::bench::BenchFlags flags(
+      "usage: lumagraph-bench-probe-update [--results-dir DIR] [--sweeps N] [--reference-rays N] "
+      "[--reference-bounces B]\n");
+  flags.text("--results-dir", o.results_dir);
+  flags.count("--sweeps", o.sweeps);
+  flags.count("--reference-rays", o.reference_rays);
+  flags.count("--reference-bounces", o.reference_bounces);
+  if (const auto status = flags.parse(argc, argv)) return *status;
   return lg::bench::run(o);
 }

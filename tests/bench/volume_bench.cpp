@@ -26,6 +26,7 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "runtime/scene/load_world.h"
+#include "tests/bench/bench_flags.h"
 
 namespace lg::bench {
 namespace {
@@ -171,30 +172,14 @@ int run(const Options& o) {
 
 int main(int argc, char** argv) {
   lg::bench::Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string flag = argv[i];
-    const std::string value = i + 1 < argc ? argv[i + 1] : "";
-    if (flag == "--default-form-only") {
-      o.all_forms = false;
-      continue;
-    }
-    ++i;
-    if (flag == "--results-dir" && !value.empty())
-      o.results_dir = value;
-    else if (flag == "--size" && !value.empty())
-      std::sscanf(value.c_str(), "%ux%u", &o.width, &o.height);
-    else if (flag == "--frames" && !value.empty())
-      o.frames = std::max(1, std::stoi(value));
-    else if (flag == "--scales" && !value.empty()) {
-      o.scales.clear();
-      std::istringstream list(value);
-      for (std::string item; std::getline(list, item, ',');) o.scales.push_back(std::stod(item));
-    } else {
-      std::fprintf(stderr,
-                   "usage: lumagraph-bench-volume [--results-dir DIR] [--size WxH] [--frames N] [--scales A,B,...] "
-                   "[--default-form-only]\n");
-      return 1;
-    }
-  }
+  lg::bench::BenchFlags flags(
+      "usage: lumagraph-bench-volume [--results-dir DIR] [--size WxH] [--frames N] [--scales A,B,...] "
+      "[--default-form-only]\n");
+  flags.text("--results-dir", o.results_dir);
+  flags.size("--size", o.width, o.height);
+  flags.count("--frames", o.frames);
+  flags.numbers("--scales", o.scales);
+  flags.set_switch("--default-form-only", o.all_forms, false);
+  if (const auto status = flags.parse(argc, argv)) return *status;
   return lg::bench::run(o);
 }

@@ -1,0 +1,91 @@
+#include "tests/bench/bench_flags.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace lg::bench {
+namespace {
+
+// The whole of `text` as a whole number of at least `at_least`.
+bool parse_count(const std::string& text, long long at_least, long long& out) {
+  size_t used = 0;
+  try {
+    out = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return used == text.size() && out >= at_least;
+}
+
+}  // namespace
+
+void BenchFlags::text(std::string name, std::string& out) {
+  flags_.push_back({std::move(name), true, [&out](const std::string& v) { return out = v, !v.empty(); }});
+}
+
+void BenchFlags::count(std::string name, uint32_t& out, uint32_t at_least) {
+  flags_.push_back({std::move(name), true, [&out, at_least](const std::string& v) {
+                      long long n = 0;
+                      return parse_count(v, at_least, n) && n <= UINT32_MAX ? (out = uint32_t(n), true) : false;
+                    }});
+}
+
+void BenchFlags::count(std::string name, int& out, int at_least) {
+  flags_.push_back({std::move(name), true, [&out, at_least](const std::string& v) {
+                      long long n = 0;
+                      return parse_count(v, at_least, n) && n <= INT32_MAX ? (out = int(n), true) : false;
+                    }});
+}
+
+void BenchFlags::size(std::string name, uint32_t& width, uint32_t& height) {
+  flags_.push_back({std::move(name), true, [&width, &height](const std::string& v) {
+                      char rest = 0;
+                      return std::sscanf(v.c_str(), "%ux%u%c", &width, &height, &rest) == 2 && width && height;
+                    }});
+}
+
+void BenchFlags::numbers(std::string name, std::vector<double>& out) {
+  flags_.push_back({std::move(name), true, [&out](const std::string& v) {
+                      out.clear();
+                      std::istringstream list(v);
+                      for (std::string item; std::getline(list, item, ',');) {
+                        size_t used = 0;
+                        try {
+                          out.push_back(std::stod(item, &used));
+                        } catch (const std::exception&) {
+                          return false;
+                        }
+                        if (used != item.size()) return false;
+                      }
+                      return !out.empty();
+                    }});
+}
+
+void BenchFlags::set_switch(std::string name, bool& out, bool value) {
+  flags_.push_back({std::move(name), false, [&out, value](const std::string&) { return out = value, true; }});
+}
+
+std::optional<int> BenchFlags::parse(int argc, char** argv) const {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::fputs(usage_.c_str(), stdout);
+      return 0;
+    }
+    const Flag* flag = nullptr;
+    for (const Flag& f : flags_)
+      if (f.name == arg) flag = &f;
+    bool ok = flag != nullptr;
+    if (ok && flag->takes_value)
+      ok = i + 1 < argc && flag->apply(argv[++i]);
+    else if (ok)
+      ok = flag->apply({});
+    if (!ok) {
+      std::fprintf(stderr, "%s: bad or unknown option '%s'\n%s", argv[0], arg.c_str(), usage_.c_str());
+      return 2;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace lg::bench
