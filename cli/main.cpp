@@ -18,7 +18,7 @@ commands:
   bake MESH         bake ambient occlusion and bent normals (vertex, texel, volume)
   reference [SCENE] path-trace the ground truth that global illumination is measured against
 
-`lumagraph COMMAND --help` describes each command. With no GRAPH, render and compile use
+`lumagraph COMMAND --help` describes each command; `lumagraph --version` prints the version. With no GRAPH, render and compile use
 the embedded default graph (examples/default.json) and the embedded default scene.
 )";
 
@@ -44,6 +44,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> rest(argv + 2, argv + argc);
   if (command == "--help" || command == "-h" || command == "help") {
     std::fputs(help, stdout);
+    return exit_ok;
+  }
+  if (command == "--version") {
+    std::puts("lumagraph " LUMAGRAPH_VERSION);
     return exit_ok;
   }
   if (command == "render") return render_command(rest);

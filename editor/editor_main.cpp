@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <iostream>
 
+#include "editor/headless_help.h"
 #include "editor/canvas.h"
 #include "editor/main_window.h"
 #include "editor/runtime_preview.h"
@@ -18,13 +19,16 @@
 int main(int argc, char** argv) {
   // VTK's view in the inspector needs its GL format before the application exists.
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  lg::editor::headless_when_only_text_is_asked(argc, argv);
   QApplication app(argc, argv);
   QApplication::setApplicationName(QStringLiteral("lumagraph-editor"));
+  QApplication::setApplicationVersion(QStringLiteral(LUMAGRAPH_VERSION));
   QApplication::setOrganizationName(QStringLiteral("lumagraph"));
 
   QCommandLineParser args;
   args.setApplicationDescription(QStringLiteral("Edits Lumagraph render graphs."));
   args.addHelpOption();
+  args.addVersionOption();
   args.addPositionalArgument(QStringLiteral("graph"), QStringLiteral("Graph file to open."), QStringLiteral("[GRAPH]"));
   const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                       QStringLiteral("Write the window to a PNG and exit."), QStringLiteral("FILE"));

@@ -13,17 +13,21 @@
 #include <QSurfaceFormat>
 #include <iostream>
 
+#include "editor/headless_help.h"
 #include "editor/inspector_widget.h"
 #include "editor/probe_view.h"
 
 int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  lg::editor::headless_when_only_text_is_asked(argc, argv);
   QApplication app(argc, argv);
   QApplication::setApplicationName(QStringLiteral("lumagraph-inspect"));
+  QApplication::setApplicationVersion(QStringLiteral(LUMAGRAPH_VERSION));
 
   QCommandLineParser args;
   args.setApplicationDescription(QStringLiteral("Inspects environment probes and baked occlusion volumes."));
   args.addHelpOption();
+  args.addVersionOption();
   args.addPositionalArgument(QStringLiteral("file"), QStringLiteral("Environment (.hdr, .exr)."),
                              QStringLiteral("[file]"));
   const QCommandLineOption bake(

@@ -173,5 +173,23 @@ TEST(BakeView, TheCommandExitsNonZeroAndSaysWhichFile) {
   EXPECT_TRUE(QFile::exists(png));  // the window, with the message, is still written
 }
 
+// Help and version need no X server: without DISPLAY (and without a platform chosen) the
+// inspector still prints them and exits 0; Qt's xcb platform would abort for want of a display.
+TEST(BakeView, HelpAndVersionNeedNoDisplay) {
+  for (const char* flag : {"--help", "--version"}) {
+    QProcess inspect;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    inspect.setProcessEnvironment(env);
+    inspect.start(QStringLiteral(LUMAGRAPH_BINARY_DIR "/lumagraph-inspect"), {QString::fromLatin1(flag)});
+    ASSERT_TRUE(inspect.waitForFinished(60'000));
+    const QString out = QString::fromUtf8(inspect.readAllStandardOutput());
+    EXPECT_EQ(inspect.exitCode(), 0) << flag << ": " << inspect.readAllStandardError().toStdString();
+    EXPECT_TRUE(out.contains(QStringLiteral("lumagraph-inspect"))) << flag << ": " << out.toStdString();
+  }
+}
+
 }  // namespace
 }  // namespace lg

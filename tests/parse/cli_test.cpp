@@ -41,6 +41,13 @@ TEST(ParseCli, TheBinaryExists) {
   ASSERT_TRUE(fs::exists("examples/post.json")) << "tests must run from the source root";
 }
 
+// The version is the project's (CMakeLists.txt), so a package's binaries say which they are.
+TEST(ParseCli, VersionPrintsTheProjectVersion) {
+  Outcome r = lumagraph({"--version"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "lumagraph " LUMAGRAPH_VERSION "\n");
+}
+
 TEST(ParseCli, CompileWithNoArgumentsPrintsThePlanOfTheEmbeddedDefault) {
   Outcome r = lumagraph({"compile"});
   EXPECT_EQ(r.status, 0) << r.err;
