@@ -2,6 +2,7 @@
 
 #include <glm/vec4.hpp>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -197,7 +198,7 @@ class DeferredKernel final : public NodeKernel {
     add_local_shadow_atlas(ctx, writes);
     lights_->add_direct_lists(writes);
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/direct.comp", writes, color.desc().width,
-                     color.desc().height);
+                     color.desc().height, {}, kTileSize, local_shadows_drawn());
   }
 
   void record_area(PassContext& ctx) {
@@ -209,7 +210,14 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(5, color.view()));
     add_local_shadow_atlas(ctx, writes);
     lights_->add_area_lists(writes);
-    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height);
+    dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height,
+                     {}, kTileSize, local_shadows_drawn());
+  }
+
+  // Specialization constant 0 of direct.comp and area.comp (shaders/local_shadow_atlas.glsl).
+  std::span<const uint32_t> local_shadows_drawn() const {
+    static constexpr uint32_t yes = 1, no = 0;
+    return {local_drawn_ ? &yes : &no, 1};
   }
 
   void record_emission(PassContext& ctx) {

@@ -89,7 +89,7 @@ int area_shadow_tap(float first, vec3 center, vec3 D, vec3 w, Surface s, float t
 // surface) that the surface sees past the light's map, or 1 when the light has none
 // (`first` < 0) or the atlas was not drawn.
 float area_visibility(Surface s, float first, vec3 center, LightExtent extent) {
-  if (first < 0.0 || local_shadow.x == 0.0) return 1.0;
+  if (!local_shadows_drawn || first < 0.0 || local_shadow.x == 0.0) return 1.0;
   float texel = views[int(first)].tile.w;  // at distance 1; every face of a cube has the same
   vec3 to_surface = s.position - center;
   float d0 = length(to_surface);

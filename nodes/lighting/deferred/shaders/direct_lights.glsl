@@ -39,7 +39,7 @@ float sun_visibility(Surface s) {
 // with distance). `first` is the light's first view, `count` 1 or 6 (cube faces +X, -X, +Y,
 // -Y, +Z, -Z: the one of p's major axis from the light).
 float local_visibility(Surface s, vec3 light_position, float first, float count) {
-  if (first < 0.0 || local_shadow.x == 0.0) return 1.0;
+  if (!local_shadows_drawn || first < 0.0 || local_shadow.x == 0.0) return 1.0;
   ShadowView view = view_toward(first, count, s.position - light_position);
   float distance = (view.clip_from_world * vec4(s.position, 1.0)).w;
   if (distance <= local_shadow.y) return 1.0;  // behind the light or nearer than its map sees

@@ -7,6 +7,11 @@
 
 #include "nodes/lighting/deferred/shaders/lights.glsl"
 
+// Specialized false by lighting.deferred's passes when no view was drawn this frame, so the
+// compiler drops every atlas lookup (lavapipe's code for the filters costs time even where the
+// constants skip them); left true elsewhere, where local_shadow.x says at run time.
+layout(constant_id = 0) const bool local_shadows_drawn = true;
+
 layout(binding = 14) uniform sampler2D local_shadow_atlas;
 layout(std430, binding = 15) readonly buffer ShadowViews { ShadowView views[]; };
 
