@@ -34,6 +34,9 @@
 
 namespace lg::editor {
 
+// The Inspector dock's width for a probe view: a 3D view of about 400 pixels beside the maps.
+constexpr int kProbeDockWidth = 640;
+
 static QString text_of(const std::string& s) {
   return QString::fromStdString(s);
 }
@@ -414,6 +417,9 @@ void MainWindow::show_live_volume(const std::string& node) {
   bake->grids = probe_grids(bake->file);
   const QString note = live.dynamic ? tr("dynamic: %1 batches of updates since the bake").arg(live.batches_landed)
                                     : tr("static: baked again when the scene or the graph changes");
+  // The probe view needs room beside its panel of maps: the dock widens once, when it opens one.
+  if (live_node_.empty() && inspector_->width() < kProbeDockWidth)
+    resizeDocks({qobject_cast<QDockWidget*>(inspector_->parentWidget())}, {kProbeDockWidth}, Qt::Horizontal);
   inspector_->show_probes(std::move(bake), volume, {true, note});
   live_node_ = node;
   live_version_ = live.version;
