@@ -110,6 +110,30 @@ TEST_F(LiveVolumeTest, SelectingTheVolumeShowsTheProbesTheCommandLineBakes) {
   EXPECT_EQ(reopened.file.header.scene, kScene);
   InspectorWidget inspector;
   EXPECT_TRUE(inspector.open_probes(saved)) << inspector.summary().toStdString();
+
+  // Moving a node renders again on the same executor: the probes did not change, so the frame
+  // hands on the same snapshot, not a new copy (and nothing baked again). The first move's frame
+  // may bake again: the dock widened for the probes, and the preview's size changed with it.
+  const auto move_volume = [&](Position to) {
+    const int shown = window->previews_shown();
+    Graph moved = window->document()->graph();
+    set_node_position(moved, "volume", to);
+    window->document()->edit(std::move(moved), QStringLiteral("move"));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() > shown; }, 60'000));
+    return window->live_probes().at("volume");
+  };
+  const std::shared_ptr<const ProbeSnapshot> before = move_volume({300, -300});
+  EXPECT_EQ(move_volume({320, -320}), before);
+}
+
+TEST_F(LiveVolumeTest, OnAWorldWithoutVolumesTheDockSaysTheNodeIsBypassed) {
+  window->canvas()->select_nodes({"volume"});
+  window->set_preview(std::make_unique<RuntimePreview>());  // the built-in world
+  ASSERT_TRUE(QTest::qWaitFor([&] { return window->previews_shown() >= 1; }, 60'000));
+  settle();
+  EXPECT_TRUE(window->live_probes().empty());
+  EXPECT_TRUE(summary().contains("'volume' is bypassed in the preview's plan: the scene has no irradiance volumes"))
+      << summary().toStdString();
 }
 
 TEST_F(LiveVolumeTest, ADynamicVolumeRefreshesAsItsUpdatesLandWithoutEdits) {
