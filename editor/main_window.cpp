@@ -41,6 +41,11 @@ static QString text_of(const std::string& s) {
   return QString::fromStdString(s);
 }
 
+// What the inspector calls a volume node's live probes (ProbeBake::path).
+static std::string live_name(const std::string& node) {
+  return "'" + node + "' live in the preview";
+}
+
 MainWindow::MainWindow(bool interactive, QWidget* parent)
     : QMainWindow(parent),
       interactive_(interactive),
@@ -381,7 +386,7 @@ void MainWindow::show_selection() {
 // Several volumes of the scene are one node's probes: the inspector's chooser picks among them.
 // Several volume nodes each have their own, shown when that node is selected.
 void MainWindow::show_live_volume(const std::string& node) {
-  const std::string name = "'" + node + "' live in the preview";
+  const std::string name = live_name(node);
   const auto found = live_probes_.find(node);
   if (found == live_probes_.end()) {
     live_node_.clear();
@@ -427,7 +432,8 @@ void MainWindow::show_live_volume(const std::string& node) {
 
 bool MainWindow::save_live_probes(const QString& path) {
   const auto found = live_probes_.find(live_node_);
-  if (live_node_.empty() || found == live_probes_.end()) {
+  const ProbeBake* shown = inspector_->probe_bake();
+  if (found == live_probes_.end() || !shown || shown->path != live_name(live_node_)) {
     statusBar()->showMessage(tr("No live probes to save: select a gi.irradiance_volume node while the preview runs"),
                              8000);
     return false;
@@ -529,6 +535,7 @@ void MainWindow::show_menu(Position at, QPoint global) {
 
 void MainWindow::set_preview(std::unique_ptr<PreviewRenderer> renderer) {
   scene_ = renderer->scene_summary();
+  live_probes_.clear();  // the last scene's
   delete preview_runner_;
   preview_runner_ = new AsyncPreview(std::move(renderer), this);
   connect(preview_runner_, &AsyncPreview::finished, this, &MainWindow::show_preview);
