@@ -1,11 +1,13 @@
 // lumagraph-editor [GRAPH] [--screenshot FILE]: edits graph files, with a live preview rendered
 // by the runtime off the UI thread (--no-preview leaves it out). With --screenshot it opens the
 // graph, lays it out, waits for the first preview, writes the window to a PNG and exits (for
-// docs and GUI tests); --select ID shows that node's parameters in it.
+// docs and GUI tests); --select ID shows that node's parameters in it, or with --inspector the
+// Inspector dock instead (an env.load node's file, a gi.irradiance_volume node's live probes).
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QEventLoop>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -13,6 +15,7 @@
 
 #include "editor/headless_help.h"
 #include "editor/canvas.h"
+#include "editor/inspector_widget.h"
 #include "editor/main_window.h"
 #include "editor/runtime_preview.h"
 
@@ -36,6 +39,9 @@ int main(int argc, char** argv) {
   const QCommandLineOption select(QStringLiteral("select"), QStringLiteral("Select a node (for screenshots)."),
                                   QStringLiteral("ID"));
   args.addOption(select);
+  const QCommandLineOption inspector(QStringLiteral("inspector"),
+                                     QStringLiteral("Show the Inspector dock rather than the parameters."));
+  args.addOption(inspector);
   const QCommandLineOption no_preview(QStringLiteral("no-preview"), QStringLiteral("Do not render a live preview."));
   args.addOption(no_preview);
   const QCommandLineOption scene(
@@ -67,6 +73,7 @@ int main(int argc, char** argv) {
     return app.exec();
   }
 
+  if (args.isSet(inspector)) qobject_cast<QDockWidget*>(window.inspector()->parentWidget())->raise();
   if (args.isSet(select)) window.canvas()->select_nodes({args.value(select).toStdString()});
   // Let the docks and the canvas take their sizes, and the preview arrive, before grabbing.
   QEventLoop settle;

@@ -20,10 +20,12 @@
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QImage>
 #include <QLabel>
 #include <QPixmap>
+#include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
@@ -377,6 +379,14 @@ std::optional<std::array<double, 2>> InspectorWidget::vertex_bake_range() const 
 
 void InspectorWidget::build_probe_panel(QVBoxLayout* panel) {
   panel->setContentsMargins(8, 8, 8, 8);
+  // The bake's volumes, when it has more than one; a live one can be saved as a bake file.
+  probe_volume_ = new QComboBox(probe_panel_);
+  panel->addWidget(probe_volume_);
+  save_probes_ = new QPushButton(tr("Save probes…"), probe_panel_);
+  save_probes_->setToolTip(tr("Write these probes as a .lgprobes bake, for lumagraph-inspect --bake"));
+  panel->addWidget(save_probes_);
+  connect(save_probes_, &QPushButton::clicked, this, &InspectorWidget::save_probes_requested);
+  connect(probe_volume_, QOverload<int>::of(&QComboBox::activated), this, [this](int v) { set_probe_volume(v); });
   panel->addWidget(new QLabel(tr("Slice of the lookup, height:"), probe_panel_));
   probe_slice_ = new QSlider(Qt::Horizontal, probe_panel_);
   panel->addWidget(probe_slice_);
@@ -401,34 +411,70 @@ void InspectorWidget::build_probe_panel(QVBoxLayout* panel) {
 
 bool InspectorWidget::open_probes(const QString& path, int volume) {
   try {
-    auto bake = std::make_unique<ProbeBake>(load_probe_bake(path.toStdString()));
-    if (volume < 0 || size_t(volume) >= bake->grids.size()) {
-      show_error(tr("%1: no volume %2; the bake holds %3").arg(path).arg(volume + 1).arg(bake->grids.size()));
-      return false;
-    }
-    clear_view();
-    probe_bake_ = std::move(bake);
-    probes_ = std::make_unique<ProbeView>(vtk_->renderer, *probe_bake_, size_t(volume));
+    return show_probes(std::make_unique<ProbeBake>(load_probe_bake(path.toStdString())), volume);
   } catch (const BakeFileError& e) {
     show_error(QString::fromStdString(e.what()));
     return false;
+  }
+}
+
+bool InspectorWidget::show_probes(std::unique_ptr<ProbeBake> bake, int volume, const ProbeSource& source) {
+  const QString name = QString::fromStdString(bake->path);
+  if (volume < 0 || size_t(volume) >= bake->grids.size()) {
+    show_error(tr("%1: no volume %2; the bake holds %3").arg(name).arg(volume + 1).arg(bake->grids.size()));
+    return false;
+  }
+  // A refresh of what is shown keeps how it is looked at.
+  struct Kept {
+    vtkNew<vtkCamera> camera;
+    ProbeViewState state;
+  };
+  std::optional<Kept> kept;
+  if (probes_ && probe_bake_ && probe_bake_->path == bake->path) {
+    const ProbeViewState shown = probes_->state();
+    if (shown.volume == size_t(volume) && shown.counts == bake->grids[size_t(volume)].counts()) {
+      kept.emplace();
+      kept->camera->DeepCopy(vtk_->renderer->GetActiveCamera());
+      kept->state = shown;
+    }
+  }
+  clear_view();
+  probe_bake_ = std::move(bake);
+  probe_source_ = source;
+  probes_ = std::make_unique<ProbeView>(vtk_->renderer, *probe_bake_, size_t(volume),
+                                        kept ? std::optional(kept->state.exposure) : std::nullopt);
+  if (kept) {
+    vtk_->renderer->GetActiveCamera()->DeepCopy(kept->camera);
+    vtk_->renderer->ResetCameraClippingRange();
   }
   const ProbeViewState state = probes_->state();
   {
     const QSignalBlocker quiet(probe_slice_);
     probe_slice_->setRange(0, state.slices - 1);
-    probe_slice_->setValue(state.slice);
   }
-  set_probe_slice(state.slice);
+  {
+    const QSignalBlocker quiet(probe_volume_);
+    probe_volume_->clear();
+    for (size_t v = 0; v < state.volumes; ++v) {
+      const glm::ivec3 c = probe_bake_->grids[v].counts();
+      probe_volume_->addItem(
+          tr("Volume %1 of %2: %3 x %4 x %5").arg(v + 1).arg(state.volumes).arg(c.x).arg(c.y).arg(c.z));
+    }
+    probe_volume_->setCurrentIndex(volume);
+  }
+  probe_volume_->setVisible(state.volumes > 1);
+  save_probes_->setVisible(source.live);
+  set_probe_slice(kept ? kept->state.slice : state.slice);
   irradiance_map_->clear();
   distance_caption_->clear();
   distance_map_->clear();
   probe_caption_->setText(tr("Click a probe to see its maps."));
   probe_panel_->show();
+  if (kept && kept->state.selected) select_probe(*kept->state.selected);
   const ProbeFileHeader& h = probe_bake_->file.header;
   summary_->setText(tr("%1 — volume %2 of %3, %4 x %5 x %6 probes · %7 on, %8 off · %9 moved · baked from %10 with "
                        "%11 rays, %12 bounces")
-                        .arg(path)
+                        .arg(name)
                         .arg(volume + 1)
                         .arg(state.volumes)
                         .arg(state.counts.x)
@@ -439,8 +485,14 @@ bool InspectorWidget::open_probes(const QString& path, int volume) {
                         .arg(state.relocated)
                         .arg(QString::fromStdString(h.scene))
                         .arg(h.settings.rays)
-                        .arg(h.settings.bounces));
+                        .arg(h.settings.bounces) +
+                    (source.note.isEmpty() ? QString() : QStringLiteral(" · ") + source.note));
   return true;
+}
+
+void InspectorWidget::set_probe_volume(int volume) {
+  if (!probes_ || volume < 0 || size_t(volume) >= probe_bake_->grids.size()) return;
+  show_probes(std::move(probe_bake_), volume, probe_source_);
 }
 
 std::optional<ProbeViewState> InspectorWidget::probe_state() const {

@@ -1,16 +1,20 @@
 // The inspector's 3D view (VTK): an environment on a sphere beside its L2 SH reconstruction and
 // the error between them, with the numbers; a baked occlusion volume as three slices with
-// sliders that move them; or a probe bake's volume (probe_view.h) with a slider for its slice and,
-// beside the view, the octahedral maps of the probe last clicked. VTK stays behind this header,
-// out of the editor's files.
+// sliders that move them; or a probe bake's volume (probe_view.h), read from a file or live from
+// the editor's preview, with a chooser of the bake's volumes, a slider for its slice and, beside
+// the view, the octahedral maps of the probe last clicked. VTK stays behind this header, out of
+// the editor's files.
 #pragma once
 
+#include <QString>
 #include <QWidget>
 #include <array>
 #include <memory>
 #include <optional>
 
+class QComboBox;
 class QLabel;
+class QPushButton;
 class QSlider;
 class QVBoxLayout;
 
@@ -24,6 +28,13 @@ struct ProbeBake;
 struct ProbeViewState;
 class VolumeSlices;
 class ProbeView;
+
+// Where shown probes come from: a bake file, or the editor's preview (live: the view offers to
+// save them, save_probes_requested()).
+struct ProbeSource {
+  bool live = false;
+  QString note;  // added to the summary (a live volume's mode and updates)
+};
 
 class InspectorWidget : public QWidget {
   Q_OBJECT
@@ -50,6 +61,15 @@ class InspectorWidget : public QWidget {
   // Volume `volume` (from 0) of a probe bake (NAME.lgprobes); on failure the view says why and
   // returns false.
   bool open_probes(const QString& path, int volume = 0);
+  // Probes in memory: volume `volume` (from 0) of `bake`, named by its path. Showing again what is
+  // shown (the same path, volume and probe counts: a live volume's refresh) keeps the camera, the
+  // slice, the selected probe and the exposure. For a volume the bake lacks the view says why
+  // and returns false.
+  bool show_probes(std::unique_ptr<ProbeBake> bake, int volume, const ProbeSource& source = {});
+  // The bake whose probes are shown, or null.
+  const ProbeBake* probe_bake() const { return probe_bake_.get(); }
+  // Shows another volume of the shown bake (the chooser above the slice does it).
+  void set_probe_volume(int volume);
   // The shown probes; nullopt when none are shown.
   std::optional<ProbeViewState> probe_state() const;
   void set_probe_slice(int step);
@@ -66,6 +86,10 @@ class InspectorWidget : public QWidget {
   void show_error(const QString& text);
   QString summary() const;
 
+ signals:
+  // The Save probes button of a live view was pressed.
+  void save_probes_requested();
+
  protected:
   void resizeEvent(QResizeEvent* event) override;
 
@@ -79,11 +103,14 @@ class InspectorWidget : public QWidget {
   std::unique_ptr<VolumeSlices> volume_;
   std::unique_ptr<ProbeBake> probe_bake_;
   std::unique_ptr<ProbeView> probes_;
+  ProbeSource probe_source_;
   std::optional<std::array<double, 2>> vertex_bake_range_;
   QWidget* slice_bar_;
   std::array<QSlider*, 3> slice_sliders_{};
   QLabel* slice_caption_;
   QWidget* probe_panel_;
+  QComboBox* probe_volume_;
+  QPushButton* save_probes_;
   QSlider* probe_slice_;
   QLabel *probe_slice_caption_, *probe_caption_, *irradiance_map_, *distance_caption_, *distance_map_;
   QLabel* summary_;

@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -12,7 +13,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
+#include <algorithm>
 
 #include "editor/compile_view.h"
 #include "editor/disk_sync.h"
@@ -20,17 +23,27 @@
 #include "editor/inspector_widget.h"
 #include "editor/palette.h"
 #include "editor/param_panel.h"
-#include "editor/runtime_preview.h"
 #include "editor/preview_panel.h"
 #include "editor/preview_ports.h"
+#include "editor/probe_view.h"
+#include "editor/runtime_preview.h"
 #include "graph/asset_paths.h"
+#include "graph/compiler/node_states.h"
 #include "graph/graph_io.h"
 #include "nodes/builtin_schemas.h"
 
 namespace lg::editor {
 
+// The Inspector dock's width for a probe view: a 3D view of about 400 pixels beside the maps.
+constexpr int kProbeDockWidth = 640;
+
 static QString text_of(const std::string& s) {
   return QString::fromStdString(s);
+}
+
+// What the inspector calls a volume node's live probes (ProbeBake::path).
+static std::string live_name(const std::string& node) {
+  return "'" + node + "' live in the preview";
 }
 
 MainWindow::MainWindow(bool interactive, QWidget* parent)
@@ -43,7 +56,8 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
       params_(new ParamPanel(builtin_registry(), this)),
       compile_(new CompileView(this)),
       problems_(new QListWidget(this)),
-      inspector_(new InspectorWidget(this)) {
+      inspector_(new InspectorWidget(this)),
+      live_timer_(new QTimer(this)) {
   setCentralWidget(canvas_);
   setDockNestingEnabled(true);
   auto dock = [this](QWidget* widget, const QString& title, Qt::DockWidgetArea area) {
@@ -80,6 +94,11 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   connect(canvas_, &Canvas::menu_requested, this, &MainWindow::show_menu);
   connect(canvas_, &Canvas::selection_changed, this, &MainWindow::show_selection);
   connect(params_, &ParamPanel::param_edited, this, &MainWindow::set_param);
+  connect(inspector_, &InspectorWidget::save_probes_requested, this, &MainWindow::save_live_probes_dialog);
+  // A dynamic volume changes without edits: the preview renders again, at most twice a second.
+  live_timer_->setSingleShot(true);
+  live_timer_->setInterval(500);
+  connect(live_timer_, &QTimer::timeout, this, &MainWindow::request_preview);
   connect(problems_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
     const std::string id = item->data(Qt::UserRole).toString().toStdString();
     if (id.empty()) return;
@@ -165,12 +184,13 @@ void MainWindow::build_menus() {
   });
   // A new renderer for another world: its device starts afresh, which a scene change can afford.
   inspect->addAction(tr("Preview &Scene…"), this, [this] {
-    const QString file = QFileDialog::getOpenFileName(this, tr("Preview scene"), {},
-                                                      tr("Scenes (*.json *.gltf *.glb *.obj)"));
+    const QString file =
+        QFileDialog::getOpenFileName(this, tr("Preview scene"), {}, tr("Scenes (*.json *.gltf *.glb *.obj)"));
     if (!file.isEmpty()) set_preview(std::make_unique<RuntimePreview>(file.toStdString()));
   });
   inspect->addAction(tr("Preview the &Default World"), this,
                      [this] { set_preview(std::make_unique<RuntimePreview>()); });
+  inspect->addAction(tr("Save Live &Probes…"), this, [this] { save_live_probes_dialog(); });
 }
 
 void MainWindow::new_graph() {
@@ -301,6 +321,14 @@ void MainWindow::show_preview(const PreviewImage& image, const QString& error, d
   if (!image.empty()) statusBar()->showMessage(tr("Preview rendered in %1 ms").arg(milliseconds, 0, 'f', 0), 4000);
   preview_->show_image(image, error);
   if (!image.empty()) compile_->show_gpu_times(image.pass_ms);
+  live_probes_ = image.probes;
+  preview_error_ = error;
+  // The selected volume's probes as this frame left them (redrawn only when they changed).
+  const std::set<std::string> selected = canvas_->selected_nodes();
+  const GraphNode* node = selected.size() == 1 ? find_node(doc_->graph(), *selected.begin()) : nullptr;
+  if (node && node->type == "gi.irradiance_volume" && inspector_->isVisible()) show_live_volume(node->id);
+  if (std::any_of(live_probes_.begin(), live_probes_.end(), [](const auto& p) { return p.second->dynamic; }))
+    live_timer_->start();
   ++previews_shown_;
   emit preview_shown();
 }
@@ -341,9 +369,11 @@ void MainWindow::show_selection() {
   const std::set<std::string> selected = canvas_->selected_nodes();
   const std::string id = selected.size() == 1 ? *selected.begin() : std::string();
   params_->show_node(doc_->graph(), id, validation_.problems);
-  // An env.load node's environment goes to the inspector when the inspector is in view.
+  // An env.load node's environment or a volume's probes go to the inspector when it is in view.
   const GraphNode* node = id.empty() ? nullptr : find_node(doc_->graph(), id);
-  if (!node || node->type != "env.load" || !inspector_->isVisible()) return;
+  if (!node || !inspector_->isVisible()) return;
+  if (node->type == "gi.irradiance_volume") return show_live_volume(id);
+  if (node->type != "env.load") return;
   const JsonValue* path = node->params.find("path");
   std::string error;
   if (auto file = resolve_asset_path(doc_->graph().file, path && path->is_string() ? path->as_string() : "sky.hdr",
@@ -351,6 +381,83 @@ void MainWindow::show_selection() {
     inspector_->open_environment(text_of(*file));
   else
     inspector_->show_message(text_of(error));
+}
+
+// Several volumes of the scene are one node's probes: the inspector's chooser picks among them.
+// Several volume nodes each have their own, shown when that node is selected.
+void MainWindow::show_live_volume(const std::string& node) {
+  const std::string name = live_name(node);
+  const auto found = live_probes_.find(node);
+  if (found == live_probes_.end()) {
+    live_node_.clear();
+    const PlanNode* planned = nullptr;
+    if (validation_.plan)
+      for (const PlanNode& n : validation_.plan->nodes)
+        if (n.id == node) planned = &n;
+    QString why;
+    if (!preview_runner_)
+      why = tr("No preview is running, so '%1' has no probes to show. Inspect › Preview Scene… renders the graph on "
+               "a scene with irradiance volumes (e.g. examples/worlds/cornell-box.json); its probes then show here.")
+                .arg(text_of(node));
+    else if (!validation_.plan)
+      why = tr("The graph has errors, so the preview does not run '%1' (see Problems).").arg(text_of(node));
+    else if (planned && planned->state != NodeState::Kind::active)
+      why = tr("'%1' is %2 in the preview's plan: %3")
+                .arg(text_of(node), text_of(std::string(node_state_name(planned->state))), text_of(planned->reason));
+    else if (!preview_error_.isEmpty())
+      why = tr("The preview failed, so '%1' has no probes: %2").arg(text_of(node), preview_error_);
+    else
+      why = tr("Waiting for the preview to bake the probes of '%1'…").arg(text_of(node));
+    inspector_->show_message(why);
+    return;
+  }
+  const ProbeSnapshot& live = *found->second;
+  const ProbeBake* shown = inspector_->probe_bake();
+  if (live_node_ == node && live_version_ == live.version && shown && shown->path == name) return;
+  const std::optional<ProbeViewState> state = inspector_->probe_state();
+  const int volume = shown && shown->path == name && state ? int(state->volume) : 0;
+  auto bake = std::make_unique<ProbeBake>();
+  bake->path = name;
+  bake->file = live.file;
+  bake->grids = probe_grids(bake->file);
+  const QString note = live.dynamic ? tr("dynamic: %1 batches of updates since the bake").arg(live.batches_landed)
+                                    : tr("static: baked again when the scene or the graph changes");
+  // The probe view needs room beside its panel of maps: the dock widens once, when it opens one.
+  if (live_node_.empty() && inspector_->width() < kProbeDockWidth)
+    resizeDocks({qobject_cast<QDockWidget*>(inspector_->parentWidget())}, {kProbeDockWidth}, Qt::Horizontal);
+  inspector_->show_probes(std::move(bake), volume, {true, note});
+  live_node_ = node;
+  live_version_ = live.version;
+}
+
+bool MainWindow::save_live_probes(const QString& path) {
+  const auto found = live_probes_.find(live_node_);
+  const ProbeBake* shown = inspector_->probe_bake();
+  if (found == live_probes_.end() || !shown || shown->path != live_name(live_node_)) {
+    statusBar()->showMessage(tr("No live probes to save: select a gi.irradiance_volume node while the preview runs"),
+                             8000);
+    return false;
+  }
+  try {
+    write_probe_file(path.toStdString(), found->second->file);
+  } catch (const BakeFileError& e) {
+    statusBar()->showMessage(tr("Could not save the probes: %1").arg(text_of(e.what())));
+    if (interactive_) QMessageBox::warning(this, tr("Could not save the probes"), text_of(e.what()));
+    return false;
+  }
+  statusBar()->showMessage(
+      tr("Saved the probes of '%1' to %2 (lumagraph-inspect --bake opens it)").arg(text_of(live_node_), path), 8000);
+  return true;
+}
+
+void MainWindow::save_live_probes_dialog() {
+  const QString folder = doc_->path().isEmpty() ? QString() : QFileInfo(doc_->path()).absolutePath();
+  QString path =
+      QFileDialog::getSaveFileName(this, tr("Save probes"), QDir(folder).filePath(text_of(live_node_) + ".lgprobes"),
+                                   tr("Probe bakes (*.lgprobes)"));
+  if (path.isEmpty()) return;
+  if (!path.endsWith(QStringLiteral(".lgprobes"))) path += QStringLiteral(".lgprobes");
+  save_live_probes(path);
 }
 
 void MainWindow::add_node(const QString& type, std::optional<Position> at) {
@@ -428,6 +535,7 @@ void MainWindow::show_menu(Position at, QPoint global) {
 
 void MainWindow::set_preview(std::unique_ptr<PreviewRenderer> renderer) {
   scene_ = renderer->scene_summary();
+  live_probes_.clear();  // the last scene's
   delete preview_runner_;
   preview_runner_ = new AsyncPreview(std::move(renderer), this);
   connect(preview_runner_, &AsyncPreview::finished, this, &MainWindow::show_preview);

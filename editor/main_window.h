@@ -1,18 +1,21 @@
 // The editor's main window: the canvas in the middle, the palette on the left, parameters and
 // the inspector on the right, problems and the compile view below; menus for files, editing and
 // views. It turns requests from the views into document edits and, after every change, brings
-// every view up to date (canvas, live validation, parameters, compile view, preview).
+// every view up to date (canvas, live validation, parameters, compile view, preview). The
+// inspector shows the selected env.load node's file, or the selected gi.irradiance_volume node's
+// probes as the preview's runtime holds them (live_probes.h), refreshed when they change.
 #pragma once
 
 #include <QMainWindow>
 #include <memory>
 
-#include "editor/canvas.h"
 #include "editor/async_preview.h"
+#include "editor/canvas.h"
 #include "editor/preview.h"
 #include "editor/validation.h"
 
 class QLabel;
+class QTimer;
 class QListWidget;
 
 namespace lg {
@@ -61,6 +64,11 @@ class MainWindow : public QMainWindow {
   PreviewPanel* preview() const { return preview_; }
   QLabel* preview_image() const;
   int previews_shown() const { return previews_shown_; }
+  // The probes of the last preview frame's volume nodes.
+  const LiveProbes& live_probes() const { return live_probes_; }
+  // Writes the probes of the live volume the inspector shows as a .lgprobes bake (atomically);
+  // false, saying why in the status bar, when none is shown or the file cannot be written.
+  bool save_live_probes(const QString& path);
   const Validation& validation() const { return validation_; }
 
  signals:
@@ -80,6 +88,8 @@ class MainWindow : public QMainWindow {
   void show_menu(Position at, QPoint global);
   void request_preview();
   void show_preview(const PreviewImage& image, const QString& error, double milliseconds);
+  void show_live_volume(const std::string& node);
+  void save_live_probes_dialog();
   void update_title();
   bool maybe_save();
   bool save();
@@ -99,6 +109,11 @@ class MainWindow : public QMainWindow {
   PreviewPanel* preview_ = nullptr;
   AsyncPreview* preview_runner_ = nullptr;
   int previews_shown_ = 0;
+  LiveProbes live_probes_;
+  QString preview_error_;                         // of the last preview frame, or empty
+  std::string live_node_;                         // the volume node whose probes the inspector shows, or empty
+  uint64_t live_version_ = 0;                     // and the version it shows
+  QTimer* live_timer_;                            // paces the preview's frames while a dynamic volume updates
   SceneSummary scene_ = default_scene_summary();  // the preview's, which validation compiles for
   Validation validation_;
   std::vector<Diagnostic> disk_problems_;  // the file on disk is broken: why

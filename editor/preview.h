@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "editor/live_probes.h"
 #include "graph/graph.h"
 #include "graph/scene_summary.h"
 
@@ -40,6 +41,9 @@ struct PreviewImage {
   // GPU time of each pass of the frame it came from (pass name, ms; negative when skipped as
   // cached), for the compile view.
   std::vector<std::pair<std::string, double>> pass_ms;
+  // The frame's gi.irradiance_volume probes, for the inspector (live_probes.h); empty for a
+  // renderer without them.
+  LiveProbes probes;
 
   bool empty() const { return rgba.empty(); }
 };

@@ -229,7 +229,7 @@ struct ProbeView::Pipeline {
   }
 };
 
-ProbeView::ProbeView(vtkRenderer* renderer, const ProbeBake& bake, size_t volume)
+ProbeView::ProbeView(vtkRenderer* renderer, const ProbeBake& bake, size_t volume, std::optional<double> exposure)
     : pipeline_(std::make_unique<Pipeline>()) {
   if (volume >= bake.grids.size())
     throw std::out_of_range(bake.path + ": no volume " + std::to_string(volume + 1) + "; the bake holds " +
@@ -243,7 +243,10 @@ ProbeView::ProbeView(vtkRenderer* renderer, const ProbeBake& bake, size_t volume
   for (const ProbeData& probe : p.grid->probes) p.active += probe.active;
   p.slices = kSliceStepsPerCell * (p.grid->counts().y - 1) + 1;
   p.slice = p.slices / 2;
-  p.choose_exposure();
+  if (exposure)
+    p.exposure = *exposure;
+  else
+    p.choose_exposure();
   p.build_spheres();
   p.build_lines();
   p.build_slice();

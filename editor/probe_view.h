@@ -59,7 +59,9 @@ class ProbeView {
  public:
   // Adds the probes of volume `volume` of `bake` (which must outlive the view), the box, the slice,
   // the title and the camera to `renderer`. Throws std::out_of_range for a volume the bake lacks.
-  ProbeView(vtkRenderer* renderer, const ProbeBake& bake, size_t volume);
+  // `exposure`: the display's scale, by default chosen from the probes (ProbeViewState::exposure);
+  // a live view that refreshes keeps the first one, so that light converging shows as change.
+  ProbeView(vtkRenderer* renderer, const ProbeBake& bake, size_t volume, std::optional<double> exposure = {});
   ~ProbeView();
 
   void set_slice(int step);  // clamped to [0, slices - 1]

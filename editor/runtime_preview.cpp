@@ -5,6 +5,8 @@
 
 #include "api/renderer.h"
 #include "api/world_loading.h"
+#include "graph/graph_io.h"
+#include "nodes/raytrace/world_mesh.h"
 #include "runtime/gpu/format.h"
 #include "runtime/scene/default_world.h"
 #include "runtime/scene/make_scene_view.h"
@@ -40,7 +42,8 @@ Graph graph_showing(Graph graph, const PreviewPort& port) {
   return graph;
 }
 
-RuntimePreview::RuntimePreview(const std::string& scene, const std::vector<std::string>& asset_roots) {
+RuntimePreview::RuntimePreview(const std::string& scene, const std::vector<std::string>& asset_roots)
+    : scene_name_(scene.empty() ? "<default world>" : scene) {
   try {
     world_ = std::make_unique<World>(scene.empty() ? default_world()
                                                    : load_world(scene, renderer_world_options(scene, asset_roots)));
@@ -61,7 +64,15 @@ PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const Previe
   }
   try {
     if (!renderer_) renderer_ = std::make_unique<Renderer>();
-    renderer_->set_graph(graph_showing(graph, port));
+    // An unchanged graph keeps its executor: its kernels (a dynamic volume's probes) go on.
+    Graph shown = graph_showing(graph, port);
+    Graph unplaced = shown;
+    unplaced.editor = JsonValue::object();
+    std::string text = unplaced.file + '\n' + graph_to_text(unplaced);
+    if (text != graph_text_) {
+      renderer_->set_graph(std::move(shown));
+      graph_text_ = std::move(text);
+    }
     const FrameSize frame{uint32_t(std::max(size.width(), 16)), uint32_t(std::max(size.height(), 16))};
     const FrameStats& stats = renderer_->render(*world_, frame);
     Executor& executor = renderer_->executor();
@@ -78,14 +89,25 @@ PreviewImage RuntimePreview::render(const Graph& graph, QSize size, const Previe
     const FormatInfo& format = format_info(desc.format);
     image.channels = int(format.channels);
     image.encoding = preview_encoding(format);
+    image.probes = live_probes(graph);
     if (desc.kind == ResourceKind::cube) image.note = QStringLiteral("face +X of %1").arg(QString::fromStdString(name));
     if (desc.kind == ResourceKind::texture3d)
       image.note = QStringLiteral("slice 0 of %1 of %2").arg(desc.layers).arg(QString::fromStdString(name));
     return image;
   } catch (const std::exception& e) {
+    graph_text_.clear();  // the next request sets the graph again
     *error = QString::fromStdString(e.what());
     return {};
   }
+}
+
+LiveProbes RuntimePreview::live_probes(const Graph& graph) {
+  if (!geometry_hash_) geometry_hash_ = world_mesh_hash(make_world_mesh(renderer_->scene_view()));
+  ProbeFileHeader identity;
+  identity.scene = scene_name_;
+  identity.graph = graph.file.empty() ? "<unsaved graph>" : graph.file;
+  identity.geometry_hash = *geometry_hash_;
+  return probes_.collect(renderer_->executor(), identity);
 }
 
 }  // namespace lg::editor

@@ -53,6 +53,9 @@ class Executor {
   // the pass, and the frame does not count (history and caches stay as they were).
   FrameStats run_frame(const SceneView& scene, GpuScene& gpu_scene);
   uint64_t frames_run() const { return frames_; }
+  // The kernel of plan node `node` (an index into plan().nodes), for tools that ask a kernel
+  // about its state between frames; null for a node without passes.
+  NodeKernel* kernel(size_t node) const { return node < kernels_.size() ? kernels_[node].get() : nullptr; }
   // The next frame runs every static pass again.
   void invalidate_cache();
   // Takes the results of static passes from `previous`, an executor of an earlier plan (the same

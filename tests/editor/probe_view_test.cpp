@@ -6,10 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
 #include <QProcess>
+#include <QPushButton>
 #include <QTemporaryDir>
 #include <set>
 
@@ -124,6 +126,65 @@ TEST(ProbeView, ShowsTheFilesProbesAndPicksOneByClick) {
   for (int y = 0; y < image.height(); y += 4)
     for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
   EXPECT_GT(colours.size(), 100u) << "the view looks blank";
+}
+
+// Probes in memory, as the editor's live view hands them over: a bake of two volumes (the boxes'
+// grid and a 2 x 2 x 2 one) shows the chooser, which switches volumes; showing the same source
+// again (a live refresh) keeps the slice, the selected probe and the exposure, and the Save
+// button is there only for live probes.
+TEST(ProbeView, ChoosesAVolumeAndARefreshKeepsTheView) {
+  test::qt_app();
+  const BakedProbes bake;
+  std::vector<ProbeGrid> grids = probe_grids(bake.file);
+  IrradianceVolumeData small = bake.file.header.volumes[0];
+  small.probe_counts = {2, 2, 2};
+  ProbeGrid& second = grids.emplace_back(small);
+  for (size_t p = 0; p < second.probe_count(); ++p) second.probes[p] = grids[0].probes[p];
+  const ProbeFile two = whole_probe_file(grids, bake.file.header.settings);
+  ASSERT_EQ(two.header.probes, 56u);
+  EXPECT_EQ(probe_grids(two)[1].probes, second.probes);  // whole_probe_file undoes probe_grids
+
+  auto in_memory = [&] {
+    auto b = std::make_unique<ProbeBake>();
+    b->path = "'volume' live in the preview";
+    b->file = two;
+    b->grids = probe_grids(two);
+    return b;
+  };
+  InspectorWidget inspector;
+  inspector.resize(1100, 820);
+  inspector.show();
+  ASSERT_TRUE(inspector.show_probes(in_memory(), 0, {true, "dynamic"}));
+  test::settle();
+  auto* chooser = inspector.findChild<QComboBox*>();
+  ASSERT_TRUE(chooser);
+  EXPECT_TRUE(chooser->isVisible());
+  EXPECT_EQ(chooser->count(), 2);
+  EXPECT_TRUE(inspector.summary().endsWith(" · dynamic")) << inspector.summary().toStdString();
+  QPushButton* save = nullptr;
+  for (QPushButton* b : inspector.findChildren<QPushButton*>())
+    if (b->text().startsWith("Save probes")) save = b;
+  ASSERT_TRUE(save);
+  EXPECT_TRUE(save->isVisible());
+
+  inspector.set_probe_slice(3);
+  inspector.select_probe(5);
+  const ProbeViewState before = *inspector.probe_state();
+  ASSERT_TRUE(inspector.show_probes(in_memory(), 0, {true, "dynamic"}));
+  const ProbeViewState after = *inspector.probe_state();
+  EXPECT_EQ(after.slice, 3);
+  EXPECT_EQ(after.selected, std::optional<size_t>(5));
+  EXPECT_EQ(after.exposure, before.exposure);
+
+  inspector.set_probe_volume(1);
+  EXPECT_EQ(inspector.probe_state()->volume, 1u);
+  EXPECT_EQ(inspector.probe_state()->counts, glm::ivec3(2));
+  EXPECT_FALSE(inspector.probe_state()->selected) << "another volume starts afresh";
+
+  ASSERT_TRUE(inspector.open_probes(QString::fromStdString(bake.path)));
+  test::settle();
+  EXPECT_FALSE(chooser->isVisible()) << "one volume needs no chooser";
+  EXPECT_FALSE(save->isVisible()) << "a file is on disk already";
 }
 
 TEST(ProbeView, BrokenOrPartialBakesSayWhichFileAndWhy) {

@@ -7,10 +7,12 @@
 // of updates that has finished on the worker thread (probe_updater.h) and start the next one,
 // never waiting for it. Then one dispatch looks them up per pixel, at full resolution into the
 // output, or at resolution_scale into a smaller image that the "upsample" pass brings back to
-// full resolution (nodes/common/shaders/joint_upsample.glsl).
+// full resolution (nodes/common/shaders/joint_upsample.glsl). Between frames it hands a copy of
+// the probes it uploaded last to whoever asks (probe_snapshot.h).
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +29,7 @@
 #include "nodes/gi/irradiance_volume/probe_atlas.h"
 #include "nodes/gi/irradiance_volume/probe_atlas_images.h"
 #include "nodes/gi/irradiance_volume/probe_bake_key.h"
+#include "nodes/gi/irradiance_volume/probe_snapshot.h"
 #include "nodes/gi/irradiance_volume/probe_updater.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/probes/probe_bake.h"
@@ -52,7 +55,10 @@ int32_t resolution_divisor(const PlanNode& node) {
   return int32_t(std::round(1.0 / param_number(node, "resolution_scale")));
 }
 
-class IrradianceVolumeKernel final : public NodeKernel {
+// Counts uploads across every kernel, so a snapshot's version never repeats (probe_snapshot.h).
+std::atomic<uint64_t> uploads{0};
+
+class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSource {
  public:
   explicit IrradianceVolumeKernel(const PlanNode& node) {
     settings_.rays = uint32_t(param_number(node, "rays"));
@@ -83,6 +89,13 @@ class IrradianceVolumeKernel final : public NodeKernel {
       upsample(ctx);
     else
       throw std::logic_error("gi.irradiance_volume has no pass '" + ctx.pass().pass + "'");
+  }
+
+  uint64_t probe_version() const override { return version_; }
+
+  ProbeSnapshot probe_snapshot() const override {
+    const std::vector<ProbeGrid>& grids = updater_ ? updater_->probes() : grids_;
+    return {version_, updater_.has_value(), updater_ ? updater_->landed() : 0, whole_probe_file(grids, settings_)};
   }
 
  private:
@@ -123,7 +136,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
     const SceneView& scene = ctx.scene();
     const uint64_t key = probe_bake_key(scene);
     if (!updater_) {
-      if (!probes_ || baked_key_ != key) bake(ctx, key);
+      if (!probes_ || baked_key_ != key) grids_ = bake(ctx, key);
       return;
     }
     const uint64_t volumes = probe_volume_key(scene);
@@ -179,6 +192,7 @@ class IrradianceVolumeKernel final : public NodeKernel {
       throw std::invalid_argument("gi.irradiance_volume '" + ctx.node().id + "': " + e.what());
     }
     probes_->upload(ctx.cmd(), atlas);
+    version_ = ++uploads;
     push_.volume_count = uint32_t(atlas.volumes.size());
     return size_t(atlas.probe_count);
   }
@@ -191,7 +205,9 @@ class IrradianceVolumeKernel final : public NodeKernel {
   std::optional<ProbeAtlasImages> probes_;
   std::shared_ptr<const PathEnvironment> environment_;
   bool environment_has_ = false;
-  std::optional<ProbeUpdater> updater_;  // the dynamic mode's
+  std::optional<ProbeUpdater> updater_;  // the dynamic mode's, which holds its probes
+  std::vector<ProbeGrid> grids_;         // the static mode's probes, as uploaded
+  uint64_t version_ = 0;                 // of the last upload
 };
 
 }  // namespace

@@ -27,6 +27,8 @@ class ProbeUpdater {
   // Starts over from `grids` (a full bake), dropping the batch in flight.
   void reset(std::vector<ProbeGrid> grids);
   bool has_probes() const { return !grids_.empty(); }
+  // The current probes: the last reset()'s or the last finished() batch's.
+  const std::vector<ProbeGrid>& probes() const { return grids_; }
   bool in_flight() const { return batch_.valid(); }
   // The probes after the batch that has just finished, or null while one is in flight or when
   // none ran since the last call. Rethrows what the batch threw.

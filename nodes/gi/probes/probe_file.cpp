@@ -249,4 +249,15 @@ std::vector<ProbeGrid> probe_grids(const ProbeFile& whole) {
   return grids;
 }
 
+ProbeFile whole_probe_file(std::span<const ProbeGrid> grids, const ProbeBakeSettings& settings) {
+  std::vector<IrradianceVolumeData> volumes;
+  for (const ProbeGrid& grid : grids) volumes.push_back(grid.volume());
+  ProbeFile file;
+  file.header = make_probe_header(std::move(volumes), 0, 1);
+  file.header.settings = settings;
+  file.probes.reserve(file.header.probes);
+  for (const ProbeGrid& grid : grids) file.probes.insert(file.probes.end(), grid.probes.begin(), grid.probes.end());
+  return file;
+}
+
 }  // namespace lg

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -61,5 +62,8 @@ ProbeFile merge_probe_parts(const std::vector<ProbeFile>& parts, const std::vect
 
 // The grids of a whole bake, each with its probes.
 std::vector<ProbeGrid> probe_grids(const ProbeFile& whole);
+// The other way: a whole bake (chunk 1 of 1) holding `grids`' volumes and probes, baked with
+// `settings`; scene, graph, environment and geometry hash are left for the caller to name.
+ProbeFile whole_probe_file(std::span<const ProbeGrid> grids, const ProbeBakeSettings& settings);
 
 }  // namespace lg
