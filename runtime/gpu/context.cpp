@@ -155,6 +155,9 @@ void Context::create_device() {
   vkGetPhysicalDeviceFeatures(physical_device_, &supported);
   features.features.samplerAnisotropy = supported.samplerAnisotropy;
   if (supported.samplerAnisotropy) max_sampler_anisotropy_ = properties_.limits.maxSamplerAnisotropy;
+  // Cube arrays for gi.reflection_capture's probes, where the device has them (lavapipe does).
+  features.features.imageCubeArray = supported.imageCubeArray;
+  image_cube_array_ = supported.imageCubeArray == VK_TRUE;
 
   auto info = vk_struct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features);
   info.queueCreateInfoCount = 1;

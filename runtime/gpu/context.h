@@ -59,6 +59,9 @@ class Context {
   // The device's anisotropic filtering limit where this context enabled samplerAnisotropy (on
   // its own device, when the device has it); 1 otherwise, a host's device included.
   float max_sampler_anisotropy() const { return max_sampler_anisotropy_; }
+  // Whether this context enabled imageCubeArray (its own device, when the device has it; a
+  // host's device is not asked).
+  bool image_cube_array() const { return image_cube_array_; }
 
   // Bytes of device memory allocated through Lumagraph and not yet freed.
   uint64_t device_memory_used() const { return memory_used_; }
@@ -93,6 +96,7 @@ class Context {
   uint32_t queue_family_ = 0;
   uint32_t timestamp_valid_bits_ = 64;
   float max_sampler_anisotropy_ = 1.0f;
+  bool image_cube_array_ = false;
   bool owned_ = true;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_properties_{};

@@ -4,6 +4,7 @@
 // `intensity` multiplies `color` and has the unit of the matching field of scene_view.h.
 #pragma once
 
+#include <cstdint>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -99,8 +100,22 @@ struct IrradianceVolume {
   glm::ivec3 probe_counts{4};
 };
 
-struct ReflectionProbe {  // centred on the entity
-  float radius = 1.0f;
+// A captured reflection probe (gi.reflection_capture, docs/reflection-probes.md), its cube taken
+// at the entity's origin. The influence volume (box or sphere, centred on the entity) says
+// where surfaces use it, fading out over `blend` metres inside its boundary; the parallax
+// proxy (box or sphere, in the entity's frame, `proxy_offset` from its origin) is the shape the
+// reflection ray is intersected with to find what the cube saw in that direction.
+enum class ProbeShape : uint8_t { box, sphere };
+
+struct ReflectionProbe {
+  ProbeShape influence = ProbeShape::sphere;
+  glm::vec3 extent{1.0f};  // box: half its size along each local axis
+  float radius = 1.0f;     // sphere
+  float blend = 0.0f;      // metres inside the influence boundary over which the weight falls to 0
+  ProbeShape proxy = ProbeShape::sphere;
+  glm::vec3 proxy_extent{1.0f};
+  float proxy_radius = 1.0f;
+  glm::vec3 proxy_offset{0.0f};
 };
 
 struct PostProcessSettings {

@@ -139,7 +139,9 @@ SceneView make_scene_view(const World& world, float aspect_ratio, const SceneVie
   world.each<IrradianceVolume>([&](Entity e, const IrradianceVolume& v) {
     view.irradiance_volumes.push_back({world.world_matrix(e), v.size, v.probe_counts, e.id()});
   });
-  view.reflection_probes = static_cast<int>(world.count<ReflectionProbe>());
+  world.each<ReflectionProbe>([&](Entity e, const ReflectionProbe& p) {
+    view.reflection_probes.push_back({world.world_matrix(e), p, e.id()});
+  });
   if (Entity post = first_with<PostProcessSettings>(world); !post.is_null())
     view.exposure = world.get<PostProcessSettings>(post).exposure;
   return view;

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/vector_relational.hpp>
 #include <map>
 #include <optional>
 #include <set>
@@ -104,6 +107,18 @@ class SceneFileReader {
     auto resolved = resolve_asset_path(path_, v.as_string(), roots_, extensions, &error);
     if (!resolved) f.error_at(key, error);
     return resolved.value_or("");
+  }
+
+  // A probe's shape: a box of half sizes `extent` or a sphere of `radius` (one of them; neither
+  // keeps the sphere of the default radius).
+  ProbeShape probe_shape(const JsonFields& f, glm::vec3& extent, float& radius) {
+    if (f.get("extent") && f.get("radius")) f.error_at("radius", "give either 'extent' (a box) or 'radius' (a sphere)");
+    if (f.get("extent")) {
+      f.vec3("extent", extent, 1e-3, max_length);
+      return ProbeShape::box;
+    }
+    f.number("radius", radius, 1e-3, max_length, "metres");
+    return ProbeShape::sphere;
   }
 
   void entity(const JsonValue& v, const std::string& p) {
@@ -462,9 +477,33 @@ class SceneFileReader {
       }
       world_.add<IrradianceVolume>(e, vol);
     });
-    with("reflection_probe", {"radius"}, [&](const JsonFields& f) {
+    with("reflection_probe", {"extent", "radius", "blend", "proxy"}, [&](const JsonFields& f) {
       ReflectionProbe probe;
-      f.number("radius", probe.radius, 1e-3, max_length, "metres");
+      const size_t errors_before = d_.error_count();
+      probe.influence = probe_shape(f, probe.extent, probe.radius);
+      f.number("blend", probe.blend, 0, max_length, "metres");
+      // The weight must reach 1 somewhere: a blend deeper than the volume's half size never does.
+      const float half = probe.influence == ProbeShape::box ? std::min({probe.extent.x, probe.extent.y, probe.extent.z})
+                                                            : probe.radius;
+      if (d_.error_count() == errors_before && probe.blend > half)
+        f.error_at("blend", "'blend' (" + format_number(probe.blend) + " m) must not exceed the influence volume's " +
+                                (probe.influence == ProbeShape::box ? "smallest extent (" : "radius (") +
+                                format_number(half) + " m)");
+      probe.proxy = probe.influence, probe.proxy_extent = probe.extent, probe.proxy_radius = probe.radius;
+      if (const JsonValue* proxy = f.get("proxy")) {
+        JsonFields p(*proxy, f.pointer("proxy"), "the reflection probe's proxy", {"extent", "radius", "offset"}, d_);
+        if (p.is_object()) {
+          const size_t proxy_errors = d_.error_count();
+          probe.proxy = probe_shape(p, probe.proxy_extent, probe.proxy_radius);
+          p.vec3("offset", probe.proxy_offset, -max_length, max_length);
+          const glm::vec3 o = glm::abs(probe.proxy_offset);
+          const bool inside = probe.proxy == ProbeShape::box ? glm::all(glm::lessThan(o, probe.proxy_extent))
+                                                             : glm::length(probe.proxy_offset) < probe.proxy_radius;
+          // The cube is taken at the entity's origin: a proxy around somewhere else is not what it saw.
+          if (d_.error_count() == proxy_errors && !inside)
+            f.error_at("proxy", "the proxy must contain the probe (the entity's origin)");
+        }
+      }
       world_.add<ReflectionProbe>(e, probe);
     });
   }

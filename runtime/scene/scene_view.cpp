@@ -38,7 +38,7 @@ SceneSummary SceneView::summary() const {
   for (const auto& l : rect_lights) s.local_shadows |= l.casts_shadows;
   s.environment = has_environment;
   s.irradiance_volumes = int(irradiance_volumes.size());
-  s.reflection_probes = reflection_probes;
+  s.reflection_probes = int(reflection_probes.size());
   // Only the materials something is drawn with.
   s.glossy_materials = false;
   for (const auto& d : draws) {

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "graph/scene_summary.h"
+#include "runtime/scene/components.h"
 #include "runtime/scene/mesh_occlusion.h"
 
 namespace lg {
@@ -174,6 +175,13 @@ struct IrradianceVolumeData {
   uint64_t entity = 0;  // Entity::id()
 };
 
+// A reflection probe (the ReflectionProbe component) in its entity's frame.
+struct ReflectionProbeData {
+  glm::mat4 world{1.0f};  // the entity's frame: the cube is taken at its origin
+  ReflectionProbe probe;
+  uint64_t entity = 0;  // Entity::id()
+};
+
 struct EnvironmentData {
   std::string path;        // an HDR/EXR file; empty: the procedural sky of the graph
   float intensity = 1.0f;  // multiplies the environment's radiance
@@ -196,7 +204,7 @@ struct SceneView {
   bool has_environment = false;
   EnvironmentData environment;
   std::vector<IrradianceVolumeData> irradiance_volumes;
-  int reflection_probes = 0;
+  std::vector<ReflectionProbeData> reflection_probes;
   float exposure = 0.0f;  // EV from the world's PostProcessSettings
 
   // The draw's material, or the default PbrMaterial when it has none (material -1, which the ECS

@@ -86,13 +86,15 @@ TEST(CompilerExamples, EveryExampleCompilesWithEveryScene) {
 
       // Nothing is culled in the examples; only depth of field may be bypassed, without a lens,
       // the irradiance volume without volumes, the transparent surfaces' pass without BLEND
-      // materials, and screen-space reflections without glossy materials.
+      // materials, screen-space reflections without glossy materials and the reflection probes'
+      // capture without probes.
       for (const auto& n : plan.nodes) {
         EXPECT_NE(n.state, NodeState::Kind::culled) << n.id << ": " << n.reason;
         bool lens = options.scene.aperture > 0, volumes = options.scene.irradiance_volumes > 0;
         bool bypassed = (n.type == "post.dof" && !lens) || (n.type == "gi.irradiance_volume" && !volumes) ||
                         (n.type == "scene.forward_transparent" && !options.scene.blend_materials) ||
-                        (n.type == "lighting.ssr" && !options.scene.glossy_materials);
+                        (n.type == "lighting.ssr" && !options.scene.glossy_materials) ||
+                        (n.type == "gi.reflection_capture" && options.scene.reflection_probes == 0);
         auto expected = bypassed ? NodeState::Kind::bypassed : NodeState::Kind::active;
         EXPECT_EQ(n.state, expected) << n.id << ": " << n.reason;
       }

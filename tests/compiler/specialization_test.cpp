@@ -247,6 +247,33 @@ TEST(CompilerSpecialization, VolumeBypassForwardsNullAndKeepsIblOnlyWhileLinked)
   expect_nothing_read_before_written(dark);
 }
 
+// A scene without reflection probes bypasses gi.reflection_capture with the reason in the plan,
+// and lighting.ibl then runs with its reflection_probes input unlinked; with a probe the capture
+// runs and feeds it. Fails without the node's bypass (it would run, and fail, with no probes).
+TEST(CompilerSpecialization, ReflectionCaptureBypassForwardsNullWithoutProbes) {
+  const auto compile = [](int probes) {
+    CompileOptions o;
+    o.scene = default_scene_summary();
+    o.scene.environment = true;
+    o.scene.reflection_probes = probes;
+    return test::compile_ok(test::load_example("examples/reflection-probes.json"), builtin_registry(), o);
+  };
+  const Plan none = compile(0);
+  EXPECT_EQ(test::plan_node(none, "probes")->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(test::plan_node(none, "probes")->reason, "the scene has no reflection probes");
+  EXPECT_EQ(test::plan_node(none, "ibl")->state, NodeState::Kind::active);
+  EXPECT_EQ(test::resource_in_slot(none, "ibl/shade", "in.reflection_probes"), -1);
+  EXPECT_EQ(pass_at(none, "probes/lookup"), -1);
+  expect_nothing_read_before_written(none);
+
+  const Plan one = compile(1);
+  EXPECT_EQ(test::plan_node(one, "probes")->state, NodeState::Kind::active);
+  EXPECT_EQ(test::resource_name(one, test::resource_in_slot(one, "ibl/shade", "in.reflection_probes")),
+            "probes.reflections");
+  EXPECT_LT(pass_at(one, "probes/lookup"), pass_at(one, "ibl/shade"));
+  expect_nothing_read_before_written(one);
+}
+
 // The default graph composites transparent surfaces after the image-based light; a scene with no
 // BLEND material bypasses that node (it forwards ibl's colour, and the plan says why), leaving
 // the passes, resources and barriers the graph had before the node was wired in. Fails without

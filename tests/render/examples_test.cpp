@@ -44,22 +44,24 @@ TEST_P(ExampleRender, RendersWithoutValidationMessages) {
   EXPECT_GT(sum / double(pixels.size()), 0.05) << "the frame is lit";
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, ExampleRender,
-                         ::testing::Values(Case{"examples/minimal.json", ""}, Case{"examples/default.json", ""},
-                                           Case{"examples/post.json", ""},
-                                           Case{"examples/minimal.json", "examples/worlds/gallery.json"},
-                                           Case{"examples/default.json", "examples/worlds/gallery.json"},
-                                           Case{"examples/post.json", "examples/worlds/gallery.json"},
-                                           Case{"examples/default.json", "examples/worlds/spot-stage.json"},
-                                           Case{"examples/ssr.json", "examples/worlds/ssr-floor.json"}),
-                         [](const auto& info) {
-                           std::string graph = std::filesystem::path(info.param.graph).stem().string();
-                           std::string world = std::filesystem::path(info.param.world).stem().string();
-                           std::erase(world, '-');  // test names are alphanumeric
-                           if (world.empty()) return graph + "OnDefaultWorld";
-                           world[0] = char(std::toupper(static_cast<unsigned char>(world[0])));
-                           return graph + "On" + world;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Examples, ExampleRender,
+    ::testing::Values(Case{"examples/minimal.json", ""}, Case{"examples/default.json", ""},
+                      Case{"examples/post.json", ""}, Case{"examples/minimal.json", "examples/worlds/gallery.json"},
+                      Case{"examples/default.json", "examples/worlds/gallery.json"},
+                      Case{"examples/post.json", "examples/worlds/gallery.json"},
+                      Case{"examples/default.json", "examples/worlds/spot-stage.json"},
+                      Case{"examples/ssr.json", "examples/worlds/ssr-floor.json"},
+                      Case{"examples/reflection-probes.json", "examples/worlds/reflection-room.json"}),
+    [](const auto& info) {
+      std::string graph = std::filesystem::path(info.param.graph).stem().string();
+      std::string world = std::filesystem::path(info.param.world).stem().string();
+      std::erase(graph, '-');  // test names are alphanumeric
+      std::erase(world, '-');
+      if (world.empty()) return graph + "OnDefaultWorld";
+      world[0] = char(std::toupper(static_cast<unsigned char>(world[0])));
+      return graph + "On" + world;
+    });
 
 double total(const std::vector<float>& rgba) {
   double sum = 0;

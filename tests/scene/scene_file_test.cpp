@@ -203,6 +203,63 @@ TEST(SceneFile, SpotLightAnglesAreChecked) {
       << testing::PrintToString(errors);
 }
 
+// A probe's influence and proxy reach SceneView as written; the proxy defaults to the influence.
+TEST(SceneFile, ReflectionProbesLoad) {
+  World w = parse_scene_file(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "room", "transform": {"position": [1, 2, 3]},
+     "reflection_probe": {"extent": [4, 1.5, 3], "blend": 0.5, "proxy": {"extent": [5, 2, 3.5], "offset": [0, 0.5, 0]}}},
+    {"name": "ball", "reflection_probe": {"radius": 2, "blend": 0.25}}
+  ]})",
+                             fake_path());
+  SceneView v = make_scene_view(w, 1.0f);
+  ASSERT_EQ(v.reflection_probes.size(), 2u);
+  const ReflectionProbe& room = v.reflection_probes[0].probe;
+  EXPECT_EQ(room.influence, ProbeShape::box);
+  EXPECT_EQ(room.extent, glm::vec3(4.0f, 1.5f, 3.0f));
+  EXPECT_FLOAT_EQ(room.blend, 0.5f);
+  EXPECT_EQ(room.proxy, ProbeShape::box);
+  EXPECT_EQ(room.proxy_extent, glm::vec3(5.0f, 2.0f, 3.5f));
+  EXPECT_EQ(room.proxy_offset, glm::vec3(0.0f, 0.5f, 0.0f));
+  EXPECT_EQ(v.reflection_probes[0].world[3], glm::vec4(1, 2, 3, 1));
+  const ReflectionProbe& ball = v.reflection_probes[1].probe;
+  EXPECT_EQ(ball.influence, ProbeShape::sphere);
+  EXPECT_EQ(ball.proxy, ProbeShape::sphere);
+  EXPECT_FLOAT_EQ(ball.proxy_radius, 2.0f);
+  EXPECT_EQ(v.summary().reflection_probes, 2);
+}
+
+// Zero and out-of-range sizes (a non-finite number cannot pass the JSON reader, which refuses
+// 1e999 itself), both shapes at once, a blend deeper than the volume, and proxies that do not
+// contain the probe, each at its value's line and column.
+TEST(SceneFile, ReflectionProbesAreChecked) {
+  std::vector<std::string> errors = errors_of(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "a", "reflection_probe": {"extent": [1, 0, 1]}},
+    {"name": "b", "reflection_probe": {"radius": 2e6, "blend": -1}},
+    {"name": "c", "reflection_probe": {"extent": [2, 1, 2], "radius": 1}},
+    {"name": "d", "reflection_probe": {"extent": [2, 1, 2], "blend": 1.5}},
+    {"name": "e", "reflection_probe": {"radius": 1, "proxy": {"extent": [1, 1, 1], "offset": [0, 2, 0]}}},
+    {"name": "f", "reflection_probe": {"radius": 1, "proxy": {"radius": 0.5, "offset": [0.3, 0.4, 0]}}},
+    {"name": "g", "reflection_probe": {"radius": 1, "proxy": {"radius": 2, "shape": "box"}}}
+  ]})");
+  EXPECT_EQ(
+      errors,
+      (std::vector<std::string>{
+          "2:54: error: 'extent' must be an array of 3 numbers from 0.001 to 1e+06, found 0 "
+          "(/entities/0/reflection_probe/extent/1)",
+          "3:50: error: 'radius' must be a number from 0.001 to 1e+06 (metres), found 2e+06 "
+          "(/entities/1/reflection_probe/radius)",
+          "3:64: error: 'blend' must be a number from 0 to 1e+06 (metres), found -1 "
+          "(/entities/1/reflection_probe/blend)",
+          "4:71: error: give either 'extent' (a box) or 'radius' (a sphere) (/entities/2/reflection_probe/radius)",
+          "5:70: error: 'blend' (1.5 m) must not exceed the influence volume's smallest extent (1 m) "
+          "(/entities/3/reflection_probe/blend)",
+          "6:62: error: the proxy must contain the probe (the entity's origin) (/entities/4/reflection_probe/proxy)",
+          "7:62: error: the proxy must contain the probe (the entity's origin) (/entities/5/reflection_probe/proxy)",
+          "8:85: error: unknown key 'shape' in the reflection probe's proxy; expected extent, radius, offset "
+          "(/entities/6/reflection_probe/proxy/shape)"}))
+      << testing::PrintToString(errors);
+}
+
 // Euler angles are yaw (Y), pitch (X), roll (Z) applied as R = Ry Rx Rz; quaternions are
 // normalised. Tolerance 1e-5.
 TEST(SceneFile, RotationConventions) {

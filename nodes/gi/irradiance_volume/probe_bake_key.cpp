@@ -35,10 +35,8 @@ void add_volumes(Hasher& h, const SceneView& s) {
   for (const auto& v : s.irradiance_volumes) h.all(v.world, v.size, v.probe_counts);
 }
 
-}  // namespace
-
-uint64_t probe_bake_key(const SceneView& s) {
-  Hasher h;
+// Everything light transport in the scene depends on: assets, draws, lights, environment.
+void add_transport(Hasher& h, const SceneView& s) {
   h.add(s.version);
   h.add(uint64_t(s.draws.size()));
   for (const DrawItem& d : s.draws) h.all(d.mesh, d.material, d.world);
@@ -53,7 +51,26 @@ uint64_t probe_bake_key(const SceneView& s) {
   h.all(int(s.directional_lights.size()), int(s.point_lights.size()), int(s.spot_lights.size()),
         int(s.sphere_lights.size()), int(s.tube_lights.size()), int(s.rect_lights.size()));
   h.all(s.has_environment, s.environment.path, s.environment.intensity);
+}
+
+}  // namespace
+
+uint64_t probe_bake_key(const SceneView& s) {
+  Hasher h;
+  add_transport(h, s);
   add_volumes(h, s);
+  return h.h;
+}
+
+uint64_t reflection_capture_key(const SceneView& s) {
+  Hasher h;
+  add_transport(h, s);
+  h.add(uint64_t(s.reflection_probes.size()));
+  for (const auto& r : s.reflection_probes) {
+    const ReflectionProbe& p = r.probe;
+    h.all(r.world, int(p.influence), p.extent, p.radius, p.blend, int(p.proxy), p.proxy_extent, p.proxy_radius,
+          p.proxy_offset);
+  }
   return h.h;
 }
 

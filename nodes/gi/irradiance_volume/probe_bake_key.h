@@ -16,4 +16,8 @@ uint64_t probe_bake_key(const SceneView& scene);
 // they change, and otherwise updates the probes it has.
 uint64_t probe_volume_key(const SceneView& scene);
 
+// What gi.reflection_capture's cubes depend on: the same assets, lights and environment as
+// probe_bake_key(), and the reflection probes instead of the volumes.
+uint64_t reflection_capture_key(const SceneView& scene);
+
 }  // namespace lg

@@ -56,6 +56,7 @@ class IblKernel final : public NodeKernel {
     in.bent_normals = ctx.has("in.bent_normals") ? &ctx.image("in.bent_normals") : nullptr;
     in.irradiance_volume = ctx.has("in.irradiance_volume") ? &ctx.image("in.irradiance_volume") : nullptr;
     in.ssr = ctx.has("in.ssr") ? &ctx.image("in.ssr") : nullptr;
+    in.reflection_probes = ctx.has("in.reflection_probes") ? &ctx.image("in.reflection_probes") : nullptr;
     in.color = &color;
     // Without an environment the node runs only for a linked volume (its bypass): the graph's
     // environment nodes stand in for a sky the scene does not have, so their light counts nothing.
@@ -121,6 +122,7 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
   if (settings.multi_bounce) flags |= 32u;
   if (in.irradiance_volume) flags |= 64u;
   if (in.ssr) flags |= 128u;
+  if (in.reflection_probes) flags |= 256u;
   const Buffer& sh = in.sh ? *in.sh : fallbacks.sh;
   const DescriptorWrite writes[] = {
       uniform_buffer(0, in.camera),
@@ -138,12 +140,13 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
       storage_image(12, in.color->view()),
       sampled_image(13, (in.irradiance_volume ? in.irradiance_volume : &fallbacks.direct)->view(), nearest),
       sampled_image(14, (in.ssr ? in.ssr : &fallbacks.direct)->view(), nearest),
+      sampled_image(15, (in.reflection_probes ? in.reflection_probes : &fallbacks.direct)->view(), nearest),
   };
   std::vector<DescriptorBinding> bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
   for (uint32_t b = 1; b <= 11; ++b)
     bindings.push_back({b, b == 6 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   bindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
-  for (uint32_t b = 13; b <= 14; ++b) bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+  for (uint32_t b = 13; b <= 15; ++b) bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   const Pipeline& pipeline =
       pipelines.compute({name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"), std::move(bindings), sizeof(Push)});
   bind_pipeline(gpu, cmd, pipeline, writes);

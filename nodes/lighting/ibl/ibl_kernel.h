@@ -32,6 +32,7 @@ struct IblInputs {
   Image *ao = nullptr, *bent_normals = nullptr;
   Image* irradiance_volume = nullptr;  // rgb irradiance (W/m^2), a coverage
   Image* ssr = nullptr;                // rgb reflected radiance before the BRDF, a confidence
+  Image* reflection_probes = nullptr;  // the same from gi.reflection_capture, a its coverage
   Image* color = nullptr;
 };
 

@@ -15,9 +15,11 @@
 // diffuse visibility and, through Lagarde's form, the specular: image-based light only, never
 // direct light. With a probe volume linked (gi.irradiance_volume), the diffuse irradiance is the
 // environment's (times intensity) mixed toward the volume's by its coverage, before occlusion.
-// With screen-space reflections linked (lighting.ssr: rgb reflected radiance before the BRDF, a
-// confidence), the reflected radiance is the prefiltered map's (times intensity) mixed toward
-// theirs by the confidence, before the split sum and specular occlusion.
+// With reflection probes linked (gi.reflection_capture: rgb reflected radiance before the BRDF, a
+// coverage), the reflected radiance is the prefiltered map's (times intensity) mixed toward
+// theirs by the coverage; with screen-space reflections linked (lighting.ssr: the same, a
+// confidence), that is mixed toward theirs by the confidence (SSR wins where it is sure), before
+// the split sum and specular occlusion.
 // Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
@@ -38,9 +40,11 @@ layout(binding = 11) uniform sampler2D bent_normal_tex;
 layout(binding = 12, rgba16f) uniform writeonly image2D color;
 layout(binding = 13) uniform sampler2D volume_tex;  // rgb irradiance (W/m^2), a coverage
 layout(binding = 14) uniform sampler2D ssr_tex;     // rgb reflected radiance, a confidence
+layout(binding = 15) uniform sampler2D probes_tex;  // rgb reflected radiance, a coverage
 layout(push_constant) uniform Push {
   // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion,
-  // 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections
+  // 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections, 256 reflection
+  // probes
   uint flags;
   float intensity;
 };
@@ -115,6 +119,10 @@ void main() {
 
   vec3 r = reflect(-v, n);
   vec3 reflected = intensity * prefiltered_radiance(r, roughness);
+  if ((flags & 256u) != 0u) {
+    vec4 probes = texelFetch(probes_tex, texel, 0);
+    reflected = mix(reflected, probes.rgb, clamp(probes.a, 0.0, 1.0));
+  }
   if ((flags & 128u) != 0u) {
     vec4 ssr = texelFetch(ssr_tex, texel, 0);
     reflected = mix(reflected, ssr.rgb, clamp(ssr.a, 0.0, 1.0));
