@@ -97,7 +97,7 @@ struct Condition {
   SceneFeature feature = SceneFeature::count;
   int param = -1;
   JsonValue value;
-  int unless_linked = -1;  // an input: the rule does not hold while it is linked
+  std::vector<int> unless_linked;  // inputs: the rule does not hold while any of them is linked
 };
 
 struct BypassRule {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <span>
 
 #include "graph/json_reader.h"
 
@@ -272,9 +273,15 @@ class SchemaReader {
     } else {
       d_.error(when->pos(), wp, "expected {\"scene_lacks\": FEATURE} or {\"param\": NAME, \"equals\"|\"at_most\": VALUE}");
     }
+    // "unless_linked": an input's name, or a list of them.
     if (const JsonValue* unless = when ? when->find("unless_linked") : nullptr) {
-      rule.when.unless_linked = unless->is_string() ? s_.find_input(unless->as_string()) : -1;
-      if (rule.when.unless_linked < 0) d_.error(unless->pos(), wp, "\"unless_linked\" names no input");
+      const std::span<const JsonValue> names =
+          unless->is_array() ? std::span<const JsonValue>(unless->items()) : std::span<const JsonValue>(unless, 1);
+      for (const JsonValue& name : names) {
+        const int input = name.is_string() ? s_.find_input(name.as_string()) : -1;
+        if (input < 0) d_.error(name.pos(), wp, "\"unless_linked\" names no input");
+        else rule.when.unless_linked.push_back(input);
+      }
     }
     const JsonValue* forward = v.find("forward");
     if (forward && forward->is_object()) {

@@ -19,7 +19,8 @@ bool fed(const ResolvedGraph& resolved, const NodeStates& states, int n, int inp
 bool holds(const Condition& c, const ResolvedGraph& resolved, const NodeStates& states, int n,
            const SceneSummary& scene) {
   const ResolvedNode& node = resolved.nodes[n];
-  if (c.unless_linked >= 0 && fed(resolved, states, n, c.unless_linked)) return false;
+  for (int input : c.unless_linked)
+    if (fed(resolved, states, n, input)) return false;
   switch (c.kind) {
     case Condition::Kind::scene_lacks: return !scene.has(c.feature);
     case Condition::Kind::param_equals: return node.param(c.param) == c.value;
@@ -47,7 +48,7 @@ NodeStates specialize(const ResolvedGraph& resolved, const SceneSummary& scene) 
     const ResolvedNode& node = resolved.nodes[n];
     NodeState& state = states[n];
     const NodeSchema& s = *node.schema;
-    for (const BypassRule& rule : s.bypass) depends_on_links |= rule.when.unless_linked >= 0;
+    for (const BypassRule& rule : s.bypass) depends_on_links |= !rule.when.unless_linked.empty();
     if (int r = bypass_rule(resolved, states, static_cast<int>(n), scene); r >= 0) {
       state.kind = NodeState::Kind::bypassed;
       state.bypass_rule = r;

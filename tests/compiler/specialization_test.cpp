@@ -249,12 +249,14 @@ TEST(CompilerSpecialization, VolumeBypassForwardsNullAndKeepsIblOnlyWhileLinked)
 
 // A scene without reflection probes bypasses gi.reflection_capture with the reason in the plan,
 // and lighting.ibl then runs with its reflection_probes input unlinked; with a probe the capture
-// runs and feeds it. Fails without the node's bypass (it would run, and fail, with no probes).
+// runs and feeds it, with or without an environment light (a room lit by lamps keeps its
+// reflections: lighting.ibl's bypass holds unless the volume or the probes are linked). Fails
+// without the node's bypass (it would run, and fail, with no probes).
 TEST(CompilerSpecialization, ReflectionCaptureBypassForwardsNullWithoutProbes) {
-  const auto compile = [](int probes) {
+  const auto compile = [](int probes, bool environment = true) {
     CompileOptions o;
     o.scene = default_scene_summary();
-    o.scene.environment = true;
+    o.scene.environment = environment;
     o.scene.reflection_probes = probes;
     return test::compile_ok(test::load_example("examples/reflection-probes.json"), builtin_registry(), o);
   };
@@ -272,6 +274,14 @@ TEST(CompilerSpecialization, ReflectionCaptureBypassForwardsNullWithoutProbes) {
             "probes.reflections");
   EXPECT_LT(pass_at(one, "probes/lookup"), pass_at(one, "ibl/shade"));
   expect_nothing_read_before_written(one);
+
+  const Plan lamps = compile(1, false);
+  EXPECT_EQ(test::plan_node(lamps, "ibl")->state, NodeState::Kind::active);
+  EXPECT_EQ(test::resource_name(lamps, test::resource_in_slot(lamps, "ibl/shade", "in.reflection_probes")),
+            "probes.reflections");
+  const Plan dark = compile(0, false);
+  EXPECT_EQ(test::plan_node(dark, "ibl")->state, NodeState::Kind::bypassed);
+  expect_nothing_read_before_written(dark);
 }
 
 // The default graph composites transparent surfaces after the image-based light; a scene with no
