@@ -395,6 +395,42 @@ TEST(IrradianceVolume, DynamicModeConvergesAfterALightMovesWithoutStallingAFrame
   EXPECT_TRUE(renderer.context().take_validation_messages().empty());
 }
 
+// settle_sweeps (docs/probes.md): once the probes have had that many sweeps of updates on an
+// unchanged scene, no batch starts, so the frames show the same irradiance bit for bit however
+// long the worker is given (3 s of frames here, many batches' time at 32 rays a probe); moving
+// the lamp starts the updates again. Every probe is in every batch (512 of 512), so 2 sweeps
+// are 2 batches, each an upload that changes the image. Without the pause each further batch
+// lands new noise and the frames keep changing.
+TEST(IrradianceVolume, DynamicModePausesOnceSettledAndResumesWhenTheSceneChanges) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  RendererOptions options;
+  options.device.validation = true;
+  Renderer renderer(options);
+  renderer.set_graph(volume_graph(R"({ "rays": 64, "bounces": 2, "seed": 3, "mode": "dynamic",
+                                       "probes_per_frame": 512, "update_rays": 32, "settle_sweeps": 2 })"));
+  auto frame = [&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));  // the batches get the cores
+    renderer.render(world, kFrame);
+    return renderer.executor().read_image("volume.irradiance");
+  };
+  std::vector<float> last = frame();  // the bake
+  int uploads = 0;
+  for (int f = 0; f < 3000 && uploads < 2; ++f)
+    if (std::vector<float> e = frame(); e != last) ++uploads, last = std::move(e);
+  ASSERT_EQ(uploads, 2);
+  int frames = 0;
+  for (const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+       std::chrono::steady_clock::now() < until; ++frames)
+    ASSERT_EQ(frame(), last) << "a batch landed after the probes settled, frame " << frames;
+  world.each<RectLight, Transform>([](Entity, RectLight&, Transform& t) { t.position = {0.65f, 1.99f, -0.6f}; });
+  bool resumed = false;
+  for (int f = 0; f < 3000 && !resumed; ++f) resumed = frame() != last;
+  std::printf("settled after 2 uploads, unchanged over %d frames, resumed after the lamp moved: %s\n", frames,
+              resumed ? "yes" : "no");
+  EXPECT_TRUE(resumed);
+  EXPECT_TRUE(renderer.context().take_validation_messages().empty());
+}
+
 // lighting.ibl with a volume linked, in the Cornell box without its environment (a room lit by
 // its lamp and the sun alone): the node is not bypassed; where the volume covers a surface the
 // image-based light is the volume's bounce light (ibl.color above the direct light on at least

@@ -78,7 +78,7 @@ class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSour
       update.seed = settings_.seed;
       // Further bounces read the probes as this node's lookup does.
       update.lookup = {*r, constants_[1] != 0, push_.normal_bias, push_.view_bias};
-      updater_.emplace(update);
+      updater_.emplace(update, uint32_t(param_number(node, "settle_sweeps")));
     }
   }
 

@@ -4,7 +4,8 @@
 // current ones (the kernel uploads them all), and the next batch starts from them with the scene
 // as it is then. The worker rebuilds its PathScene only when the scene's probe_bake_key() differs
 // from the one it traced last, so a light that moves is picked up by the next batch and the
-// probes converge from what they held, over the following batches.
+// probes converge from what they held, over the following batches. After `settle_sweeps` sweeps
+// over every probe of an unchanged scene no batch starts until the key changes (0: never pause).
 #pragma once
 
 #include <cstdint>
@@ -19,7 +20,8 @@ namespace lg {
 
 class ProbeUpdater {
  public:
-  explicit ProbeUpdater(const ProbeUpdateSettings& settings) : settings_(settings) {}
+  ProbeUpdater(const ProbeUpdateSettings& settings, uint32_t settle_sweeps)
+      : settings_(settings), settle_sweeps_(settle_sweeps) {}
   ProbeUpdater(const ProbeUpdater&) = delete;
   ProbeUpdater& operator=(const ProbeUpdater&) = delete;
   ~ProbeUpdater();  // waits for the batch in flight
@@ -33,8 +35,10 @@ class ProbeUpdater {
   // The probes after the batch that has just finished, or null while one is in flight or when
   // none ran since the last call. Rethrows what the batch threw.
   const std::vector<ProbeGrid>* finished();
-  // Starts the next batch from the current probes; `key` is probe_bake_key(scene).
+  // Starts the next batch from the current probes; `key` is probe_bake_key(scene). Does nothing
+  // while the probes have settled on this key.
   void start(const SceneView& scene, uint64_t key, std::shared_ptr<const PathEnvironment> environment);
+  bool settled(uint64_t key) const;
   // Batches that have landed since the last reset().
   uint64_t landed() const { return landed_; }
 
@@ -46,10 +50,12 @@ class ProbeUpdater {
   };
 
   ProbeUpdateSettings settings_;
+  uint32_t settle_sweeps_;
   std::vector<ProbeGrid> grids_;
   std::shared_ptr<const PathScene> scene_;  // what the last batch traced, and its key
   uint64_t scene_key_ = 0;
   uint64_t next_update_ = 0, landed_ = 0;
+  uint64_t steady_batches_ = 0;  // landed in a row on scene_key_
   std::future<Batch> batch_;
 };
 
