@@ -73,10 +73,7 @@ class ReflectionCaptureKernel final : public NodeKernel {
     settings_.samples = uint32_t(param_number(node, "samples"));
     settings_.bounces = uint32_t(param_number(node, "bounces"));
     settings_.seed = uint64_t(param_number(node, "seed"));
-    if (!std::has_single_bit(settings_.face_size))
-      throw std::invalid_argument("gi.reflection_capture '" + node.id + "': face_size " +
-                                  std::to_string(settings_.face_size) + " is not a power of two");
-    // No mip smaller than one texel.
+    // face_size is a power of two (the schema's values); no mip smaller than one texel.
     mips_ = std::min(uint32_t(param_number(node, "mips")), uint32_t(std::bit_width(settings_.face_size)));
     constants_ = {param_bool(node, "parallax") ? 1u : 0u};
   }
