@@ -72,10 +72,13 @@ void expect_bent_normals_finite(const std::vector<float>& rgba, const std::strin
 }
 
 constexpr const char* kGtao = R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high" } })";
-// At half resolution the upsample decides every silhouette pixel, and a pixel whose taps are all
-// sky (the pole, thinner than two pixels) must still come out finite.
+// Below full resolution the upsample decides every silhouette pixel, and a pixel whose taps are
+// all sky (the pole, thinner than a texel) must still come out finite. At 0.25 the 54 rows do
+// not divide by 4: the last row of texels covers the remainder.
 constexpr const char* kGtaoHalf =
     R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "resolution_scale": 0.5 } })";
+constexpr const char* kGtaoQuarter =
+    R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "resolution_scale": 0.25 } })";
 constexpr const char* kSsao = R"({ "id": "ao", "type": "occlusion.ssao", "params": { "samples": 16 } })";
 
 void expect_gtao_finite_and_in_range(const char* node) {
@@ -94,6 +97,10 @@ TEST(OcclusionStress, GtaoStaysFiniteAndInRange) {
 
 TEST(OcclusionStress, GtaoAtHalfResolutionStaysFiniteAndInRange) {
   expect_gtao_finite_and_in_range(kGtaoHalf);
+}
+
+TEST(OcclusionStress, GtaoAtQuarterResolutionStaysFiniteAndInRange) {
+  expect_gtao_finite_and_in_range(kGtaoQuarter);
 }
 
 TEST(OcclusionStress, SsaoStaysFiniteAndInRange) {
