@@ -1,8 +1,8 @@
 // GTAO and SSAO on what real content throws at screen-space occlusion: thin geometry, depth
 // discontinuities, pixels at the far plane, grazing views and a camera inside geometry. The
-// occlusion (first frame and after GTAO's temporal accumulation, GTAO at full and half resolution) and GTAO's bent
-// normals must stay finite and in range, with no validation message. 96x54 frames: the cases are about geometry, not
-// resolution.
+// occlusion (first frame and after GTAO's temporal accumulation; GTAO at full, half and quarter
+// resolution) and GTAO's bent normals must stay finite and in range, with no validation message.
+// 96x54 frames: the cases are about geometry, not resolution.
 #include <gtest/gtest.h>
 
 #include <cmath>
