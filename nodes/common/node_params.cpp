@@ -1,5 +1,6 @@
 #include "nodes/common/node_params.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace lg {
@@ -32,6 +33,10 @@ glm::vec3 param_float3(const PlanNode& node, std::string_view name) {
   if (v.items().size() != 3)
     throw std::logic_error("param '" + std::string(name) + "' of node '" + node.id + "' is not a float3");
   return glm::vec3(v.items()[0].as_number(), v.items()[1].as_number(), v.items()[2].as_number());
+}
+
+int resolution_divisor(const PlanNode& node) {
+  return int(std::lround(1.0 / param_number(node, "resolution_scale")));
 }
 
 }  // namespace lg

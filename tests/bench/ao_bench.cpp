@@ -4,7 +4,8 @@
 // reference (512 stratified cosine rays per pixel on the full scene, GTAO's radius as the
 // maximum distance with its falloff): mean absolute error and 95th percentile, on the first
 // frame and after temporal accumulation over --frames frames. Points: the four GTAO presets,
-// a slices x steps sweep, and SSAO's sample count. The G-buffer's depth traced as a height
+// a slices x steps sweep, GTAO high and 2x6 at resolution_scale 0.5 and 0.25 (named "@0.5"),
+// and SSAO's sample count. The G-buffer's depth traced as a height
 // field (every --hf-stride-th pixel each way) splits the error into the method's (GTAO against
 // the height field) and screen space's (the height field against the scene).
 // The references are cached under the build folder, keyed by scene, camera, size and settings.
@@ -45,15 +46,17 @@ struct Options {
 struct Point {
   std::string method, config;
   int slices = 0, steps = 0, samples = 0;
+  double scale = 1;  // GTAO's resolution_scale
   double median_ms = 0, min_ms = 0, frame_ms = 0;
   AoError first, accumulated, vs_height_field;
 };
 
-Point point_of(std::string method, std::string config, int slices = 0, int steps = 0, int samples = 0) {
+Point point_of(std::string method, std::string config, int slices = 0, int steps = 0, int samples = 0,
+               double scale = 1) {
   Point p;
   p.method = std::move(method);
   p.config = std::move(config);
-  p.slices = slices, p.steps = steps, p.samples = samples;
+  p.slices = slices, p.steps = steps, p.samples = samples, p.scale = scale;
   return p;
 }
 
@@ -128,9 +131,10 @@ void measure(std::vector<Point>& points, const World& world, const Options& o, c
   points.push_back(std::move(point));
 }
 
-std::string gtao_node(const std::string& quality, int slices, int steps) {
+std::string gtao_node(const std::string& quality, int slices, int steps, double scale = 1) {
   return R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": ")" + quality + R"(", "slices": )" +
-         std::to_string(slices) + R"(, "steps": )" + std::to_string(steps) + R"(, "radius": 0.5 } })";
+         std::to_string(slices) + R"(, "steps": )" + std::to_string(steps) +
+         R"(, "radius": 0.5, "resolution_scale": )" + std::to_string(scale) + " } }";
 }
 
 std::string ssao_node(int samples) {
@@ -186,12 +190,12 @@ void write_csv(const Options& o, const std::vector<Point>& points, const AoError
                const AoImage& reference, const AoImage& height_field) {
   std::ofstream csv(o.results_dir + "/ao_points.csv");
   csv << "method,config,slices,steps,samples,median_ms,min_ms,frame_ms,frames,mae_first,p95_first,mae_accumulated,"
-         "p95_accumulated,mae_vs_height_field,p95_vs_height_field\n";
+         "p95_accumulated,mae_vs_height_field,p95_vs_height_field,resolution_scale\n";
   for (const Point& p : points)
     csv << p.method << ',' << p.config << ',' << p.slices << ',' << p.steps << ',' << p.samples << ',' << p.median_ms
         << ',' << p.min_ms << ',' << p.frame_ms << ',' << o.frames << ',' << p.first.mean_absolute << ',' << p.first.p95
         << ',' << p.accumulated.mean_absolute << ',' << p.accumulated.p95 << ',' << p.vs_height_field.mean_absolute
-        << ',' << p.vs_height_field.p95 << '\n';
+        << ',' << p.vs_height_field.p95 << ',' << p.scale << '\n';
   std::ofstream refs(o.results_dir + "/ao_references.csv");
   refs << "width,height,rays,max_distance,reference_pixels,height_field_stride,height_field_pixels,"
           "height_field_vs_scene_mae,height_field_vs_scene_p95,height_field_vs_scene_bias\n";
@@ -260,6 +264,14 @@ int run(int argc, char** argv) {
       measure(points, world, o, reference, height_field, point_of("gtao", config, slices, steps),
               gtao_node("high", slices, steps));
     }
+  for (const double scale : {0.5, 0.25}) {
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, " @%g", scale);
+    measure(points, world, o, reference, height_field, point_of("gtao", std::string("high") + suffix, 0, 0, 0, scale),
+            gtao_node("high", 0, 0, scale));
+    measure(points, world, o, reference, height_field, point_of("gtao", std::string("2x6") + suffix, 2, 6, 0, scale),
+            gtao_node("high", 2, 6, scale));
+  }
   for (int samples : {4, 8, 16, 32, 64, 128}) {
     measure(points, world, o, reference, height_field,
             point_of("ssao", std::to_string(samples) + " samples", 0, 0, samples), ssao_node(samples));

@@ -60,4 +60,9 @@ World load_example_world(const std::string& name) {
   return load_world((source / "examples" / "worlds" / (name + ".json")).string(), options);
 }
 
+bool have_bunny() {
+  return std::filesystem::exists(std::filesystem::path(LUMAGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "mesh" /
+                                 "bunny.obj");
+}
+
 }  // namespace lg::test

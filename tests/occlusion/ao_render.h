@@ -42,4 +42,7 @@ AoRender render_occlusion(const World& world, uint32_t width, uint32_t height, c
 // ../shared/data as an extra asset root for the Stanford bunny.
 World load_example_world(const std::string& name);
 
+// Whether ../shared/data holds the Stanford bunny that the stanford-bunny world needs.
+bool have_bunny();
+
 }  // namespace lg::test

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -68,13 +67,10 @@ Measured measure(const World& world, const std::string& node, double radius) {
   return m;
 }
 
-bool have_bunny() {
-  return std::filesystem::exists(std::filesystem::path(LUMAGRAPH_SOURCE_DIR) / ".." / "shared" / "data" / "mesh" /
-                                 "bunny.obj");
-}
-
 constexpr const char* kGtaoHigh =
     R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "radius": 0.5 } })";
+constexpr const char* kGtaoHighHalf =
+    R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "radius": 0.5, "resolution_scale": 0.5 } })";
 constexpr const char* kSsao = R"({ "id": "ao", "type": "occlusion.ssao", "params": { "samples": 16, "radius": 0.5 } })";
 
 // Measured on lavapipe: GTAO high 0.035 after 8 frames and on the first, the height field 0.034
@@ -90,6 +86,19 @@ TEST(GtaoAccuracy, BunnyAgainstRayTracing) {
   EXPECT_LE(m.screen_space.mean_absolute, 0.045);
   // Bent normals where k_A < 0.9: measured 7.7 degrees from the reference's on average.
   EXPECT_LE(m.bent_degrees, 10.0);
+}
+
+// Half resolution (horizons and denoiser on 80x45, then the joint bilateral upsample) against
+// full: issue 19 asks for at most 1.2x the full-resolution error at 1280x720. Measured here, at
+// 160x90 where a half-resolution texel covers four times as much of the bunny: 0.0350 after 8
+// frames against 0.0348 at full resolution (bent normals 7.9 degrees against 7.7).
+TEST(GtaoAccuracy, BunnyAtHalfResolutionAgainstRayTracing) {
+  if (!have_bunny()) GTEST_SKIP() << "../shared/data/mesh/bunny.obj is missing";
+  const World world = load_example_world("stanford-bunny");
+  const Measured full = measure(world, kGtaoHigh, 0.5);
+  const Measured half = measure(world, kGtaoHighHalf, 0.5);
+  EXPECT_LE(half.accumulated.mean_absolute, 1.2 * full.accumulated.mean_absolute);
+  EXPECT_LE(half.bent_degrees, 10.0);
 }
 
 // The box's corners are where GTAO errs most: measured 0.080 (GTAO) and 0.048 (height field

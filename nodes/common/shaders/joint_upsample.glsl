@@ -9,7 +9,7 @@
 // the same four texels, so a caller reads them once (upsample_taps) and then each pixel of the
 // block (upsample_pixel, upsample_block_end): on lavapipe the texel fetches are the cost, and
 // this reads 2 + 12 / k^2 a pixel (5 at k = 2) instead of 14. For any pass that computes smooth light at a
-// fraction of the resolution (the irradiance volume lookup; post.upsample).
+// fraction of the resolution (the irradiance volume lookup, GTAO; post.upsample).
 #ifndef LG_JOINT_UPSAMPLE_GLSL
 #define LG_JOINT_UPSAMPLE_GLSL
 
@@ -26,6 +26,12 @@ ivec2 upsample_block_end(ivec2 low, int k, ivec2 low_size, ivec2 full_size) {
   return mix(min((low + 1) * k, full_size), full_size, equal(low, low_size - 1));
 }
 
+// Where G-buffer pixel `texel` of texel `low`'s block lies between tap 0 and tap 3 (the `f` of
+// upsample_weights); pixels past the last texel take the edge's.
+vec2 upsample_fraction(ivec2 texel, ivec2 low, int k) {
+  return min(vec2(texel - low * k) / float(k), vec2(1.0));
+}
+
 // Surfaces count as alike within a few per cent of view distance (reversed-Z depth is
 // proportional to 1 / distance, so |d_tap - d| / d_tap is the relative change in distance; a floor
 // seen at 5 degrees changes by ~2% between texels two pixels apart) and within ~30 degrees of
@@ -33,52 +39,75 @@ ivec2 upsample_block_end(ivec2 low, int k, ivec2 low_size, ivec2 full_size) {
 // that are all unlike must not underflow to 0.
 const float LG_UPSAMPLE_DISTANCE_SCALE = 0.05;
 
-struct UpsampleTaps {
-  vec4 value[4];  // texels low, low + (1, 0), low + (0, 1), low + (1, 1), clamped to the image
-  float depth[4];  // their G-buffer depth (0: sky)
+// Where the 2 x 2 low-resolution texels around a block stand: their surfaces (G-buffer depth
+// and normal at their source texels), which decide every pixel's weights.
+struct UpsampleGuide {
+  float depth[4];  // texels low, low + (1, 0), low + (0, 1), low + (1, 1), clamped; 0: sky
   float distance_scale[4];  // 1 / (depth LG_UPSAMPLE_DISTANCE_SCALE), 0 for sky
   vec3 normal[4];  // unnormalized (decode_normal_unnormalized): the dot products need no more
 };
 
-UpsampleTaps upsample_taps(sampler2D low_tex, sampler2D depth_tex, sampler2D normal_tex, ivec2 low, int k) {
-  ivec2 low_size = textureSize(low_tex, 0), full_size = textureSize(depth_tex, 0);
-  UpsampleTaps taps;
+UpsampleGuide upsample_guide(sampler2D depth_tex, sampler2D normal_tex, ivec2 low, int k, ivec2 low_size) {
+  ivec2 full_size = textureSize(depth_tex, 0);
+  UpsampleGuide guide;
   for (int t = 0; t < 4; ++t) {
-    ivec2 texel = min(low + ivec2(t & 1, t >> 1), low_size - 1);
-    ivec2 source = upsample_source_texel(texel, k, full_size);
-    taps.value[t] = texelFetch(low_tex, texel, 0);
-    taps.depth[t] = texelFetch(depth_tex, source, 0).r;
-    taps.distance_scale[t] = taps.depth[t] > 0.0 ? 1.0 / (taps.depth[t] * LG_UPSAMPLE_DISTANCE_SCALE) : 0.0;
-    taps.normal[t] = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
+    ivec2 source = upsample_source_texel(min(low + ivec2(t & 1, t >> 1), low_size - 1), k, full_size);
+    guide.depth[t] = texelFetch(depth_tex, source, 0).r;
+    guide.distance_scale[t] = guide.depth[t] > 0.0 ? 1.0 / (guide.depth[t] * LG_UPSAMPLE_DISTANCE_SCALE) : 0.0;
+    guide.normal[t] = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
   }
-  return taps;
+  return guide;
 }
 
-// The pixel at fraction `f` (in [0, 1)) of the way from tap 0 toward tap 3, with G-buffer depth
-// `depth` (> 0) and normal n (unnormalized, as the taps').
-vec4 upsample_pixel(UpsampleTaps taps, float depth, vec3 n, vec2 f) {
-  vec4 sum = vec4(0.0), best = vec4(0.0);
+// The weights of the four taps (summing to 1) for the pixel at fraction `f` (in [0, 1)) of the
+// way from tap 0 toward tap 3, with G-buffer depth `depth` (> 0) and normal n (unnormalized, as
+// the guide's); all 0 where every tap is sky. Callers that upsample several images at once
+// apply one set of weights to each.
+vec4 upsample_weights(UpsampleGuide guide, float depth, vec3 n, vec2 f) {
+  vec4 weights = vec4(0.0);
   float total = 0.0, best_rank = 0.0;
+  int best = -1;
   for (int t = 0; t < 4; ++t) {
-    if (taps.depth[t] <= 0.0) continue;
-    float q = abs(taps.depth[t] - depth) * taps.distance_scale[t];
+    if (guide.depth[t] <= 0.0) continue;
+    float q = abs(guide.depth[t] - depth) * guide.distance_scale[t];
     float near = 1.0 / (1.0 + q * q);
-    float facing = max(dot(n, taps.normal[t]), 0.0);
+    float facing = max(dot(n, guide.normal[t]), 0.0);
     facing *= facing;
     facing *= facing;
     float alike = near * near * facing * facing;
     float rank = alike + 1e-6 * near;  // faces turned away still rank by distance
     if (rank > best_rank) {
       best_rank = rank;
-      best = taps.value[t];
+      best = t;
     }
     vec2 b = mix(1.0 - f, f, vec2(t & 1, t >> 1));
-    float weight = b.x * b.y * alike;
-    sum += weight * taps.value[t];
-    total += weight;
+    weights[t] = b.x * b.y * alike;
+    total += weights[t];
   }
   // Below 1e-3 the bilinear neighbours are all unlike the pixel and their blend is noise.
-  return total > 1e-3 ? sum / total : best;
+  if (total > 1e-3) return weights / total;
+  vec4 one_hot = vec4(0.0);
+  if (best >= 0) one_hot[best] = 1.0;
+  return one_hot;
+}
+
+struct UpsampleTaps {
+  vec4 value[4];  // the low-resolution texels the guide stands for
+  UpsampleGuide guide;
+};
+
+UpsampleTaps upsample_taps(sampler2D low_tex, sampler2D depth_tex, sampler2D normal_tex, ivec2 low, int k) {
+  ivec2 low_size = textureSize(low_tex, 0);
+  UpsampleTaps taps;
+  taps.guide = upsample_guide(depth_tex, normal_tex, low, k, low_size);
+  for (int t = 0; t < 4; ++t) taps.value[t] = texelFetch(low_tex, min(low + ivec2(t & 1, t >> 1), low_size - 1), 0);
+  return taps;
+}
+
+// One image's pixel (upsample_weights says which); 0 where every tap is sky.
+vec4 upsample_pixel(UpsampleTaps taps, float depth, vec3 n, vec2 f) {
+  vec4 w = upsample_weights(taps.guide, depth, n, f);
+  return w.x * taps.value[0] + w.y * taps.value[1] + w.z * taps.value[2] + w.w * taps.value[3];
 }
 
 #endif

@@ -14,7 +14,6 @@
 #include <array>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -48,12 +47,6 @@ struct Push {  // shaders/irradiance_volume.comp
   float view_bias;
   int32_t k;  // the G-buffer's resolution over the lookup target's: 1 / resolution_scale
 };
-
-// resolution_scale as 1 / k: the upsample works in blocks of k x k pixels. The schema's values
-// are 1 over whole numbers, which validation holds every graph to.
-int32_t resolution_divisor(const PlanNode& node) {
-  return int32_t(std::round(1.0 / param_number(node, "resolution_scale")));
-}
 
 // Counts uploads across every kernel, so a snapshot's version never repeats (probe_snapshot.h).
 std::atomic<uint64_t> uploads{0};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/matrix.hpp>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -50,7 +51,8 @@ class GtaoKernel final : public NodeKernel {
       : quality_(quality_of(node)),
         radius_(float(param_number(node, "radius"))),
         thickness_(float(param_number(node, "thickness"))),
-        temporal_blend_(float(param_number(node, "temporal_blend"))) {}
+        temporal_blend_(float(param_number(node, "temporal_blend"))),
+        k_(resolution_divisor(node)) {}
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
@@ -60,11 +62,15 @@ class GtaoKernel final : public NodeKernel {
       horizons(ctx);
     else if (pass == "denoise")
       denoise(ctx);
+    else if (pass == "upsample")
+      upsample(ctx);
     else
       throw std::logic_error("occlusion.gtao has no pass '" + pass + "'");
   }
 
  private:
+  bool full_resolution() const { return k_ == 1; }
+
   // Once a frame, by its first pass; `target` has the G-buffer's extent.
   void write_constants(PassContext& ctx, const Image& target) {
     if (written_frame_ == ctx.frame_index() && constants_) return;
@@ -87,7 +93,7 @@ class GtaoKernel final : public NodeKernel {
     c.counts[2] = uint32_t(ctx.frame_index());
     // The executor clears history before the first frame: that would read as full occlusion.
     c.counts[3] = ctx.frame_index() > 0 && ctx.has("in.history") ? 1u : 0u;
-    c.blend = glm::vec4(temporal_blend_, camera.near_plane, 0.0f, 0.0f);
+    c.blend = glm::vec4(temporal_blend_, camera.near_plane, float(k_), 0.0f);
     constants_->write_value(c);
   }
 
@@ -106,22 +112,27 @@ class GtaoKernel final : public NodeKernel {
                      (mips.desc().height + 1) / 2, {}, 8);
   }
 
+  // On the grid of resolution_scale (noisy's extent), reading the full-resolution depth mips
+  // and normals at each texel's G-buffer pixel.
   void horizons(PassContext& ctx) {
     Image& noisy = ctx.image("tmp.noisy");
-    write_constants(ctx, noisy);
+    Image& depth_mips = ctx.image("tmp.depth_mips");
+    write_constants(ctx, depth_mips);
+    Image& bent = ctx.image(full_resolution() ? "out.bent_normals" : "tmp.bent_low");
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
-                                      sampled_image(1, ctx.image("tmp.depth_mips").view(), ctx.nearest_sampler()),
+                                      sampled_image(1, depth_mips.view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
                                       storage_image(3, noisy.view()),
                                       storage_image(4, ctx.image("tmp.edges").view()),
-                                      storage_image(5, ctx.image("out.bent_normals").view())};
+                                      storage_image(5, bent.view())};
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width,
                      noisy.desc().height);
   }
 
+  // On the same grid; the history it blends is the full-resolution output of the last frame.
   void denoise(PassContext& ctx) {
-    Image& ao = ctx.image("out.ao");
-    write_constants(ctx, ao);
+    write_constants(ctx, ctx.image("in.gbuffer", 4));
+    Image& ao = ctx.image(full_resolution() ? "out.ao" : "tmp.ao_low");
     Image& noisy = ctx.image("tmp.noisy");
     Image& history = ctx.has("in.history") ? ctx.image("in.history") : noisy;
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
@@ -134,8 +145,24 @@ class GtaoKernel final : public NodeKernel {
                      (ao.desc().height + 1) / 2, {}, 8);  // 2x2 pixels an invocation
   }
 
+  // One invocation per grid texel, each writing its block of k x k pixels. At full resolution
+  // the horizons and the denoiser wrote the outputs themselves, and there is nothing to do.
+  void upsample(PassContext& ctx) {
+    if (full_resolution()) return;
+    Image& low = ctx.image("tmp.ao_low");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("tmp.bent_low").view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(4, ctx.image("out.ao").view()),
+                                      storage_image(5, ctx.image("out.bent_normals").view())};
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/upsample.comp", writes, low.desc().width, low.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
+  }
+
   Quality quality_;
   float radius_, thickness_, temporal_blend_;
+  int32_t k_;  // 1 / resolution_scale: the G-buffer's resolution over the horizon grid's
   std::optional<HostBuffer> constants_;
   uint64_t written_frame_ = ~uint64_t{0};
 };

@@ -1,5 +1,6 @@
-// The kernel of occlusion.gtao: linear depth with min mips, horizon search with bent normals,
-// then the depth-aware denoiser with temporal accumulation (shaders/*.comp say how).
+// The kernel of occlusion.gtao: device depth with averaged mips, horizon search with bent normals,
+// then the depth-aware denoiser with temporal accumulation, both on the grid of resolution_scale,
+// and below 1 a joint bilateral upsample to full resolution (shaders/*.comp say how).
 #pragma once
 
 #include <memory>

@@ -26,7 +26,7 @@ void main() {
       ivec2 texel = ivec2(x, y);
       float depth = texelFetch(depth_tex, texel, 0).r;
       vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, texel, 0).rgb);
-      vec2 f = min(vec2(texel - low * k) / float(k), vec2(1.0));  // past the last texel: the edge's
+      vec2 f = upsample_fraction(texel, low, k);
       imageStore(result, texel, depth > 0.0 ? upsample_pixel(taps, depth, n, f) : vec4(0.0));
     }
 }

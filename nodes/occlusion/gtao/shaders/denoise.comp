@@ -15,7 +15,7 @@ layout(binding = 1) uniform sampler2D noisy;
 layout(binding = 2) uniform sampler2D edges;
 layout(binding = 3) uniform sampler2D motion;
 layout(binding = 4) uniform sampler2D history;  // bilinear; bound to `noisy` when absent
-layout(binding = 5, r8) uniform writeonly image2D ao;
+layout(binding = 5, r8) uniform writeonly image2D ao;  // on the horizon grid, as noisy and edges
 
 vec4 unpack_edges(float packed) {
   uint bits = uint(round(packed * 255.0));
@@ -43,8 +43,10 @@ void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4]) {
   float current = sum / weight;
   float result = current;
   if (counts.w != 0u && blend.x > 0.0) {
-    vec2 uv = (vec2(texel) + 0.5) * viewport.zw;
-    vec2 previous_uv = uv - texelFetch(motion, texel, 0).rg;
+    // The history is at full resolution: read where this texel's G-buffer pixel was.
+    ivec2 pixel = grid_pixel(texel);
+    vec2 uv = (vec2(pixel) + 0.5) * viewport.zw;
+    vec2 previous_uv = uv - texelFetch(motion, pixel, 0).rg;
     if (all(greaterThanEqual(previous_uv, vec2(0.0))) && all(lessThanEqual(previous_uv, vec2(1.0)))) {
       float past = clamp(textureLod(history, previous_uv, 0.0).r, lo, hi);
       result = mix(current, past, blend.x);
@@ -54,7 +56,7 @@ void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4]) {
 }
 
 void main() {
-  ivec2 size = ivec2(viewport.xy);  // the G-buffer's extent, which `ao` has
+  ivec2 size = imageSize(ao);
   ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * 2;
   if (any(greaterThanEqual(origin, size))) return;
   float block[4][4];

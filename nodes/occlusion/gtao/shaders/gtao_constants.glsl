@@ -4,15 +4,24 @@
 #ifndef LG_GTAO_CONSTANTS_GLSL
 #define LG_GTAO_CONSTANTS_GLSL
 
+#include "nodes/common/shaders/joint_upsample.glsl"
+
 layout(std140, binding = 0) uniform Constants {
   mat4 view_from_world;  // rotates world normals into view space (no translation used)
   mat4 world_from_view;
   vec4 unproject;        // 1 / P[0][0], 1 / P[1][1], P[2][0], P[2][1]: ndc -> view x, y per unit depth
-  vec4 viewport;         // width, height, 1 / width, 1 / height
+  vec4 viewport;         // the G-buffer's width, height, 1 / width, 1 / height
   vec4 search;           // radius (m), pixels per metre at unit depth, z stretch of the falloff, max radius (px)
   uvec4 counts;          // slices, steps per side, frame index, history usable (0 or 1)
-  vec4 blend;            // temporal weight of the history, near plane, unused, unused
+  vec4 blend;            // temporal weight of the history, near plane, k = 1 / resolution_scale, unused
 };
+
+// The G-buffer pixel that texel `texel` of the horizon grid stands for: the grid is the
+// G-buffer's own at resolution_scale 1 and 1/k of it below, where the horizons and the denoiser
+// run before upsample.comp brings them back (joint_upsample.glsl's rule).
+ivec2 grid_pixel(ivec2 texel) {
+  return upsample_source_texel(texel, int(blend.z), ivec2(viewport.xy));
+}
 
 // Reversed-Z infinite projection: device depth = near / linear depth.
 float linear_depth(float device_depth) {

@@ -12,6 +12,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
 layout(binding = 2) uniform sampler2D gbuffer_normal;
+// On the horizon grid (grid_pixel): the G-buffer's extent at resolution_scale 1, else 1/k of it.
 layout(binding = 3, r8) uniform writeonly image2D noisy;
 layout(binding = 4, r8) uniform writeonly image2D edges;
 layout(binding = 5, rgba8_snorm) uniform writeonly image2D bent_normals;
@@ -71,13 +72,17 @@ vec3 sample_position(vec2 uv, int mip) {
 }
 
 // Four depth-edge weights (left, right, top, bottom) in 2 bits each: 1 where the neighbour's
-// depth continues this pixel's plane, 0 across a discontinuity (for the denoiser).
-float pack_edges(ivec2 texel, float z) {
-  ivec2 size = ivec2(viewport.xy);
-  float l = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(-1, 0), ivec2(0), size - 1), 0).r);
-  float r = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(1, 0), ivec2(0), size - 1), 0).r);
-  float t = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(0, -1), ivec2(0), size - 1), 0).r);
-  float b = linear_depth(texelFetch(depth_mips, clamp(texel + ivec2(0, 1), ivec2(0), size - 1), 0).r);
+// depth continues this texel's plane, 0 across a discontinuity (for the denoiser, which runs on
+// the same grid).
+float neighbour_depth(ivec2 texel, ivec2 grid) {
+  return linear_depth(texelFetch(depth_mips, grid_pixel(clamp(texel, ivec2(0), grid - 1)), 0).r);
+}
+
+float pack_edges(ivec2 texel, ivec2 grid, float z) {
+  float l = neighbour_depth(texel + ivec2(-1, 0), grid);
+  float r = neighbour_depth(texel + ivec2(1, 0), grid);
+  float t = neighbour_depth(texel + ivec2(0, -1), grid);
+  float b = neighbour_depth(texel + ivec2(0, 1), grid);
   vec4 delta = vec4(l, r, t, b) - z;
   // Compare against the mirrored neighbour so slopes are not edges.
   vec4 slope = delta + delta.yxwz;
@@ -88,10 +93,11 @@ float pack_edges(ivec2 texel, float z) {
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = ivec2(viewport.xy);
-  if (any(greaterThanEqual(texel, size))) return;
-  vec2 uv = (vec2(texel) + 0.5) * viewport.zw;
-  float z = linear_depth(texelFetch(depth_mips, texel, 0).r);
+  ivec2 grid = imageSize(noisy);
+  if (any(greaterThanEqual(texel, grid))) return;
+  ivec2 pixel = grid_pixel(texel);
+  vec2 uv = (vec2(pixel) + 0.5) * viewport.zw;
+  float z = linear_depth(texelFetch(depth_mips, pixel, 0).r);
   if (!(z < 1e7)) {  // no surface: nothing occludes the sky
     imageStore(noisy, texel, vec4(1.0));
     imageStore(edges, texel, vec4(1.0));
@@ -100,7 +106,7 @@ void main() {
   }
   vec3 p = view_position(uv, z);
   vec3 view_vec = normalize(-p);
-  vec3 world_n = decode_normal(texelFetch(gbuffer_normal, texel, 0).rgb);
+  vec3 world_n = decode_normal(texelFetch(gbuffer_normal, pixel, 0).rgb);
   vec3 normal = normalize(mat3(view_from_world) * world_n);
 
   uint slices = counts.x, steps = counts.y;
@@ -187,6 +193,6 @@ void main() {
   // A cosine-weighted visible cone of half-angle a has visibility sin^2 a: its cosine is
   // sqrt(1 - visibility).
   imageStore(noisy, texel, vec4(visibility));
-  imageStore(edges, texel, vec4(pack_edges(texel, z)));
+  imageStore(edges, texel, vec4(pack_edges(texel, grid, z)));
   imageStore(bent_normals, texel, vec4(world_bent, sqrt(max(1.0 - visibility, 0.0))));
 }
