@@ -120,6 +120,8 @@ class DeferredKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
+    // Opaque draws share one binding; each alpha-tested draw binds its own texture.
+    const Pipeline* bound = nullptr;
     for (const DepthView& view : views) {
       const VkViewport viewport{float(view.origin.x), float(view.origin.y), float(view.size), float(view.size), 0, 1};
       const VkRect2D scissor{{int32_t(view.origin.x), int32_t(view.origin.y)}, {view.size, view.size}};
@@ -127,13 +129,18 @@ class DeferredKernel final : public NodeKernel {
       vkCmdSetScissor(cmd, 0, 1, &scissor);
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
         const PbrMaterial& m = scene.material_of(scene.draws[i]);
-        std::vector<DescriptorWrite> writes = {storage_buffer(0, draws_->handle())};
         const bool tested = light_alpha_cutoff(m) > 0.0f;
-        if (tested)
-          writes.push_back(sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
-                                         gpu_scene.sampler(m.base_color_texture.sampling)));
         const Pipeline& pipeline = tested ? alpha_tested : opaque;
-        bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+        if (tested) {
+          const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle()),
+                                            sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
+                                                          gpu_scene.sampler(m.base_color_texture.sampling))};
+          bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+        } else if (bound != &opaque) {
+          const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle())};
+          bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+        }
+        bound = &pipeline;
         push_constants(cmd, pipeline, ShadowPush{view.clip_from_world, i, {}});
         draw_mesh(cmd, gpu_scene.mesh(scene.draws[i].mesh));
       }
