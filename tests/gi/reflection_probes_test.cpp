@@ -24,7 +24,7 @@ namespace {
 constexpr FrameSize kFrame{160, 96};
 constexpr const char* kExample = "examples/reflection-probes.json";
 constexpr const char* kProbeLink = R"({ "from": "probes.reflections", "to": "ibl.reflection_probes" },)";
-constexpr const char* kProbeParams = R"("params": { "capture": "raster", "face_size": 128 })";
+constexpr const char* kProbeParams = R"("params": { "capture": "raster", "face_size": 128, "second_bounce": true })";
 
 enum class Specular { environment, probes_without_parallax, probes };
 enum class Capture { path_traced, raster, raster_two_bounces };
@@ -42,8 +42,8 @@ Graph probe_graph(Specular mode, Capture capture = Capture::path_traced) {
   // The link comes after the params: erased first, it leaves their offset as it is.
   if (mode == Specular::environment) graph.erase(link, std::string(kProbeLink).size());
   const char* capture_params[] = {R"("capture": "path_traced", "face_size": 32, "samples": 8, "bounces": 3)",
-                                   R"("capture": "raster", "face_size": 32)",
-                                   R"("capture": "raster", "face_size": 32, "second_bounce": true)"};
+                                  R"("capture": "raster", "face_size": 32)",
+                                  R"("capture": "raster", "face_size": 32, "second_bounce": true)"};
   graph.replace(params, std::string(kProbeParams).size(),
                 std::string(R"("params": { )") + capture_params[int(capture)] + R"(, "parallax": )" +
                     (mode == Specular::probes ? "true" : "false") + " }");

@@ -61,10 +61,10 @@ void RasterCubeCapture::record(PassContext& ctx, std::span<const CubeFace> faces
   VkCommandBuffer cmd = ctx.cmd();
   // The node's pass is a compute pass: the plan made its inputs visible to compute shaders,
   // this makes them visible to the vertex and fragment stages too (a chained dependency).
-  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE},
-                 {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                      VK_ACCESS_2_UNIFORM_READ_BIT});
+  memory_barrier(
+      cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE},
+      {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
   std::vector<bool> touched(cubes.size(), false);
   for (const CubeFace& f : faces) touched.at(f.probe) = true;
   for (size_t p = 0; p < cubes.size(); ++p)
@@ -114,8 +114,8 @@ void RasterCubeCapture::record(PassContext& ctx, std::span<const CubeFace> faces
 
 void RasterCubeCapture::prepare_depth(PassContext& ctx, uint32_t size) {
   if (depth_ && depth_->desc().width == size) return;
-  depth_.emplace(Image::dedicated(
-      ctx.gpu(), {.name = name_ + " depth", .format = kDepthFormat, .width = size, .height = size}));
+  depth_.emplace(
+      Image::dedicated(ctx.gpu(), {.name = name_ + " depth", .format = kDepthFormat, .width = size, .height = size}));
   image_barrier(ctx.cmd(), *depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
                 {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE}, kDepthAccess);
 }
@@ -123,9 +123,9 @@ void RasterCubeCapture::prepare_depth(PassContext& ctx, uint32_t size) {
 // The full-screen triangle of scene.forward_transparent's copy with capture_sky.frag, bound with
 // the meshes' bindings; no depth test (it is drawn first, at no depth).
 const Pipeline& RasterCubeCapture::sky_pipeline(PassContext& ctx, VkFormat color) {
-  GraphicsPipelineDesc desc = forward_pipeline_desc(
-      ctx.pass().name + " capture sky", node_shader("nodes/gi/reflection_capture/shaders/capture_sky.frag"), color,
-      true);
+  GraphicsPipelineDesc desc =
+      forward_pipeline_desc(ctx.pass().name + " capture sky",
+                            node_shader("nodes/gi/reflection_capture/shaders/capture_sky.frag"), color, true);
   desc.vertex_shader = node_shader("nodes/scene/forward_transparent/shaders/copy.vert");
   desc.vertex_bindings.clear();
   desc.vertex_attributes.clear();
@@ -136,11 +136,11 @@ const Pipeline& RasterCubeCapture::sky_pipeline(PassContext& ctx, VkFormat color
 // The faces are mirror images of a right-handed view (cube_face_camera.h): front faces wind
 // clockwise. Depth tested and written, reversed Z.
 const Pipeline& RasterCubeCapture::mesh_pipeline(PassContext& ctx, VkFormat color, bool masked, bool double_sided) {
-  GraphicsPipelineDesc desc = forward_pipeline_desc(
-      ctx.pass().name + " capture",
-      node_shader(masked ? "nodes/gi/reflection_capture/shaders/capture_masked.frag"
-                         : "nodes/gi/reflection_capture/shaders/capture.frag"),
-      color, double_sided);
+  GraphicsPipelineDesc desc =
+      forward_pipeline_desc(ctx.pass().name + " capture",
+                            node_shader(masked ? "nodes/gi/reflection_capture/shaders/capture_masked.frag"
+                                               : "nodes/gi/reflection_capture/shaders/capture.frag"),
+                            color, double_sided);
   desc.front_face = VK_FRONT_FACE_CLOCKWISE;
   desc.depth_format = kDepthFormat;
   desc.depth_test = desc.depth_write = true;

@@ -176,7 +176,8 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
     }
     next_face_ = 0;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "gi.reflection_capture '%s': captured %u probe(s), %ux%u faces, raster%s (recorded in %.1f ms)\n",
+    std::fprintf(stderr,
+                 "gi.reflection_capture '%s': captured %u probe(s), %ux%u faces, raster%s (recorded in %.1f ms)\n",
                  ctx.node().id.c_str(), count, settings_.face_size, settings_.face_size,
                  second_bounce_ ? ", two bounces" : "", ms);
   }
@@ -246,8 +247,10 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
       probes.push_back(i);
     }
     cubes_.prefilter(ctx, probes, prefilter_samples_);
-    std::fprintf(stderr, "gi.reflection_capture '%s': captured %zu probe(s), %ux%u faces, %u paths a texel, %u bounces, in %.2f s\n",
-                 ctx.node().id.c_str(), count, size, size, settings_.samples, settings_.bounces, seconds);
+    std::fprintf(
+        stderr,
+        "gi.reflection_capture '%s': captured %zu probe(s), %ux%u faces, %u paths a texel, %u bounces, in %.2f s\n",
+        ctx.node().id.c_str(), count, size, size, settings_.samples, settings_.bounces, seconds);
   }
 
   const bool raster_, second_bounce_;

@@ -95,8 +95,7 @@ class ForwardTransparentKernel final : public NodeKernel {
         .placeholder_2d = ctx.image("in.gbuffer", 0).view(),  // also forward.frag's scene depth at 19
         .linear = ctx.linear_sampler(),
         .nearest = ctx.nearest_sampler()};
-    std::vector<DescriptorWrite> writes =
-        forward_writes(*lights_, draws_->handle(), settings_->handle(), resources);
+    std::vector<DescriptorWrite> writes = forward_writes(*lights_, draws_->handle(), settings_->handle(), resources);
     shared_write_count_ = writes.size();
     return writes;
   }
