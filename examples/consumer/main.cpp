@@ -92,13 +92,15 @@ int run(const Options& options) {
   size_t non_finite = 0;
   for (size_t i = 0; i < rgba.size(); i += 4) {
     for (int c = 0; c < 3; ++c) {
-      if (!std::isfinite(rgba[i + c])) ++non_finite;
-      else sum[c] += rgba[i + c];
+      if (!std::isfinite(rgba[i + c]))
+        ++non_finite;
+      else
+        sum[c] += rgba[i + c];
     }
   }
   const double pixels = double(rgba.size() / 4);
-  std::printf("output %ux%u: mean rgb %.4f %.4f %.4f, %zu non-finite values\n", options.size.width,
-              options.size.height, sum[0] / pixels, sum[1] / pixels, sum[2] / pixels, non_finite);
+  std::printf("output %ux%u: mean rgb %.4f %.4f %.4f, %zu non-finite values\n", options.size.width, options.size.height,
+              sum[0] / pixels, sum[1] / pixels, sum[2] / pixels, non_finite);
   if (!options.out.empty()) lg::save_image(options.out, options.size.width, options.size.height, rgba);
   if (validation_messages > 0) std::fprintf(stderr, "%zu validation messages\n", validation_messages);
   return non_finite == 0 && validation_messages == 0 ? 0 : 1;
