@@ -28,6 +28,16 @@ std::optional<Graph> load_graph_argument(const Args& args, Diagnostics& diagnost
   return std::nullopt;
 }
 
+std::optional<Graph> load_graph_argument_or_print(const Args& args) {
+  Diagnostics diagnostics;
+  std::optional<Graph> graph = load_graph_argument(args, diagnostics);
+  if (!graph) {
+    diagnostics.sort_by_position();
+    std::fputs(diagnostics.to_string().c_str(), stderr);
+  }
+  return graph;
+}
+
 std::optional<std::string> read_frame_size(const Args& args, FrameSize& frame) {
   if (auto size = args.value("--size")) {
     unsigned w = 0, h = 0;

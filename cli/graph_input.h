@@ -18,6 +18,8 @@ ArgSpec graph_arg_spec();
 // Loads the graph (positional argument, or the embedded default). nullopt: errors are in
 // `diagnostics`.
 std::optional<Graph> load_graph_argument(const Args& args, Diagnostics& diagnostics);
+// The same, printing the errors (sorted by position) to stderr when there is no graph.
+std::optional<Graph> load_graph_argument_or_print(const Args& args);
 
 // Reads --size WxH into `frame` (unchanged without it); returns an error message for bad values.
 std::optional<std::string> read_frame_size(const Args& args, FrameSize& frame);

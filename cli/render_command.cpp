@@ -81,13 +81,8 @@ int render_command(const std::vector<std::string>& argv) {
   }
   const std::string out = args->value("--out").value_or("out.png");
 
-  Diagnostics diagnostics;
-  std::optional<Graph> graph = load_graph_argument(*args, diagnostics);
-  if (!graph) {
-    diagnostics.sort_by_position();
-    std::fputs(diagnostics.to_string().c_str(), stderr);
-    return exit_invalid;
-  }
+  std::optional<Graph> graph = load_graph_argument_or_print(*args);
+  if (!graph) return exit_invalid;
   RendererOptions options;
   options.device.validation = args->has("--validate");
   options.device.device_name = args->value("--device").value_or("");

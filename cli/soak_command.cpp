@@ -103,13 +103,8 @@ int soak_command(const std::vector<std::string>& argv) {
     return usage_error("soak", "--warmup expects a count below --frames; got '" + *text + "'");
   const std::string csv_path = args->value("--csv").value_or("soak.csv");
 
-  Diagnostics diagnostics;
-  std::optional<Graph> graph = load_graph_argument(*args, diagnostics);
-  if (!graph) {
-    diagnostics.sort_by_position();
-    std::fputs(diagnostics.to_string().c_str(), stderr);
-    return exit_invalid;
-  }
+  std::optional<Graph> graph = load_graph_argument_or_print(*args);
+  if (!graph) return exit_invalid;
   World worlds[2];
   try {
     worlds[0] = default_world();
