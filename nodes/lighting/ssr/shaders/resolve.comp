@@ -46,27 +46,35 @@ void main() {
     imageStore(reflections, low, vec4(0.0));
     return;
   }
-  vec4 center = premultiplied(texelFetch(raw, low, 0));
-  vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
-  bool spatial = (flags & 2u) != 0u && roughness > kGlossy;
-  vec4 sum = vec4(0.0), lo = vec4(1e30), hi = vec4(-1e30);
-  float weight = 0.0;
-  for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) {
-      ivec2 at = clamp(low + ivec2(x, y), ivec2(0), size - 1);
-      ivec2 source = upsample_source_texel(at, k, full_size);
-      vec4 c = premultiplied(texelFetch(raw, at, 0));
-      lo = min(lo, c);
-      hi = max(hi, c);
+  // The neighbourhood's range, which also bounds last frame's result: where no neighbour has a
+  // hit, the output is 0 whatever the history held, and nothing more needs reading.
+  vec4 taps[9], lo = vec4(1e30), hi = vec4(-1e30);
+  for (int i = 0; i < 9; ++i) {
+    taps[i] = premultiplied(texelFetch(raw, clamp(low + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1), 0));
+    lo = min(lo, taps[i]);
+    hi = max(hi, taps[i]);
+  }
+  if (!(hi.a > 0.0)) {
+    imageStore(reflections, low, vec4(0.0));
+    return;
+  }
+  vec4 result = taps[4];
+  if ((flags & 2u) != 0u && roughness > kGlossy) {
+    vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
+    vec4 sum = vec4(0.0);
+    float weight = 0.0;
+    for (int i = 0; i < 9; ++i) {
+      ivec2 source = upsample_source_texel(clamp(low + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1), k, full_size);
       // Alike surfaces only: device depth within 5% (relative, as it is near / distance), normals
       // within about 35 degrees (cosine^8 above 0.03).
       float d = texelFetch(hiz, source, 0).r;
       float w = clamp(1.0 - abs(d - depth) / (0.05 * depth), 0.0, 1.0) *
                 pow(max(dot(n, decode_normal(texelFetch(normal_tex, source, 0).rgb)), 0.0), 8.0);
-      sum += w * c;
+      sum += w * taps[i];
       weight += w;
     }
-  vec4 result = spatial && weight > 0.0 ? sum / weight : center;
+    if (weight > 0.0) result = sum / weight;
+  }
   if ((flags & 1u) != 0u && temporal_blend > 0.0) {
     vec2 uv = (vec2(texel) + 0.5) / vec2(full_size);
     vec2 previous = uv - texelFetch(motion_tex, texel, 0).rg;

@@ -24,9 +24,24 @@ void main() {
   ivec2 low = ivec2(gl_GlobalInvocationID.xy);
   ivec2 low_size = textureSize(resolved, 0), full_size = imageSize(reflections);
   if (any(greaterThanEqual(low, low_size))) return;
-  UpsampleTaps taps = upsample_taps(resolved, depth_tex, normal_tex, low, k);
-  for (int t = 0; t < 4; ++t) taps.value[t].rgb *= taps.value[t].a;
   ivec2 end = upsample_block_end(low, k, low_size, full_size);
+  // Where none of the four texels has a hit (the sky, rough surfaces, misses: most of a frame)
+  // the block is 0, and neither the guide nor the pixels' surfaces need reading.
+  vec4 value[4];
+  float confidence = 0.0;
+  for (int t = 0; t < 4; ++t) {
+    value[t] = texelFetch(resolved, min(low + ivec2(t & 1, t >> 1), low_size - 1), 0);
+    value[t].rgb *= value[t].a;
+    confidence = max(confidence, value[t].a);
+  }
+  if (!(confidence > 0.0)) {
+    for (int y = low.y * k; y < end.y; ++y)
+      for (int x = low.x * k; x < end.x; ++x) imageStore(reflections, ivec2(x, y), vec4(0.0));
+    return;
+  }
+  UpsampleTaps taps;
+  taps.guide = upsample_guide(depth_tex, normal_tex, low, k, low_size);
+  taps.value = value;
   for (int y = low.y * k; y < end.y; ++y)
     for (int x = low.x * k; x < end.x; ++x) {
       ivec2 texel = ivec2(x, y);
