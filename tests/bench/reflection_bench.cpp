@@ -1,13 +1,15 @@
 // lumagraph-bench-reflections: issue 17's reflections, error against time, on lavapipe. On the
 // reflection room and the gallery with its floor polished (tests/lighting/reflection_worlds.h),
 // each configuration of examples/reflections.json (the environment only, probes without and with
-// parallax correction, SSR alone, SSR with the probes' fallback; quality knobs swept: the probes'
-// face_size, SSR's max_steps and resolution_scale) gives
+// parallax correction, SSR alone, SSR with the probes' fallback without and with it; quality knobs
+// swept: the probes' face_size, SSR's max_steps and resolution_scale) gives
 // - its error: the specular term against the path tracer's specular AOV over the floor's and the
 //   ball's metal pixels (specular_error.h), at --size after --frames frames (SSR accumulates);
 // - its time: the GPU time of the reflection passes (probes/*, ssr/*) at --time-size, median and
-//   fastest of the frames after the first, and the first frame's extra host time over the later
-//   ones' median (the probes' capture and prefilter, whichever way the node captures).
+//   fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
+//   work is CPU work) less the environment-only configuration's, which a loaded machine disturbs
+//   far less than the timestamps; and the first frame's extra host time over the later ones'
+//   median (the probes' capture and prefilter, whichever way the node captures).
 // Configurations are graph links and params only. The references are cached under the build
 // folder, keyed by world, size, paths and the files they come from. Writes reflection_points.csv
 // and reflection_references.csv; scripts/run-reflection-benchmarks plots them.
@@ -50,6 +52,7 @@ struct Point {
   std::string world;
   ReflectionConfig config;
   double median_ms = 0, min_ms = 0, frame_ms = 0, first_extra_ms = 0;
+  double cpu_ms = 0;  // median CPU time of a frame after the first, less the environment-only one's
   test::SpecularError all, floor, ball;
 };
 
@@ -128,11 +131,15 @@ class Measurer {
     p.min_ms = *std::min_element(ms.begin(), ms.end());
     p.frame_ms = median({t.frame_gpu_ms.begin() + 1, t.frame_gpu_ms.end()});
     p.first_extra_ms = t.frame_wall_ms[0] - median({t.frame_wall_ms.begin() + 1, t.frame_wall_ms.end()});
+    const double cpu = median({t.frame_cpu_ms.begin() + 1, t.frame_cpu_ms.end()});
+    if (config.source == ReflectionSource::environment) environment_cpu_ms_ = cpu;
+    p.cpu_ms = cpu - environment_cpu_ms_;
     p.all = error(e, {});
     p.floor = error(e, {w_.floor_roughness});
     p.ball = error(e, {w_.ball_roughness});
-    std::printf("%-16s %-34s %8.2f %8.2f %9.1f %9.0f   %7.4f %7.4f %7.4f\n", p.world.c_str(), label.c_str(),
-                p.median_ms, p.min_ms, p.frame_ms, p.first_extra_ms, p.all.relative, p.floor.relative, p.ball.relative);
+    std::printf("%-16s %-34s %8.2f %8.2f %8.1f %9.1f %9.0f   %7.4f %7.4f %7.4f\n", p.world.c_str(), label.c_str(),
+                p.median_ms, p.min_ms, p.cpu_ms, p.frame_ms, p.first_extra_ms, p.all.relative, p.floor.relative,
+                p.ball.relative);
     std::fflush(stdout);
     points.push_back(std::move(p));
   }
@@ -147,6 +154,7 @@ class Measurer {
   const Options& o_;
   const test::ReflectionWorld& w_;
   const ReferenceImage& reference_;
+  double environment_cpu_ms_ = 0;  // measured first
 };
 
 void measure_world(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
@@ -164,10 +172,10 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
   references << w.name << ',' << o.width << ',' << o.height << ',' << o.paths << ',' << noise(-1.0f).noise << ','
              << noise(w.floor_roughness).noise << ',' << noise(w.ball_roughness).noise << ','
              << noise(w.floor_roughness).pixels << ',' << noise(w.ball_roughness).pixels << '\n';
-  std::printf("\n%-16s %-34s %8s %8s %9s %9s   %-23s\n", "", "", "median", "min", "frame", "1st frame",
+  std::printf("\n%-16s %-34s %8s %8s %8s %9s %9s   %-23s\n", "", "", "median", "min", "CPU", "frame", "1st frame",
               "error / reference mean");
-  std::printf("%-16s %-34s %8s %8s %9s %9s   %7s %7s %7s\n", "world", "configuration", "ms", "ms", "ms", "extra ms",
-              "metal", "floor", "ball");
+  std::printf("%-16s %-34s %8s %8s %8s %9s %9s   %7s %7s %7s\n", "world", "configuration", "GPU ms", "GPU ms",
+              "extra ms", "GPU ms", "extra ms", "metal", "floor", "ball");
 
   Measurer m(o, w, reference);
   m.measure({.source = ReflectionSource::environment});
@@ -178,9 +186,12 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
     for (const double steps : o.steps)
       m.measure({.source = ReflectionSource::ssr, .max_steps = int(steps), .ssr_scale = scale < 1 ? scale : 0});
   for (const double scale : o.scales)
-    for (const double face : o.faces)
-      m.measure(
-          {.source = ReflectionSource::ssr_with_probes, .face_size = int(face), .ssr_scale = scale < 1 ? scale : 0});
+    for (const bool parallax : {false, true})
+      for (const double face : o.faces)
+        m.measure({.source = ReflectionSource::ssr_with_probes,
+                   .parallax = parallax,
+                   .face_size = int(face),
+                   .ssr_scale = scale < 1 ? scale : 0});
   std::printf("\n");
   points.insert(points.end(), m.points.begin(), m.points.end());
 }
@@ -188,14 +199,14 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
 void write_points(const Options& o, const std::vector<Point>& points) {
   std::ofstream csv(o.results_dir + "/reflection_points.csv");
   csv << "world,source,parallax,face_size,max_steps,ssr_scale,median_ms,min_ms,frame_ms,first_frame_extra_ms,"
-         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label\n";
+         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms\n";
   for (const Point& p : points) {
     const ReflectionConfig& c = p.config;
     csv << p.world << ',' << test::reflection_source_name(c.source) << ',' << c.parallax << ',' << c.face_size << ','
         << c.max_steps << ',' << (c.ssr_scale > 0 ? c.ssr_scale : 1.0) << ',' << p.median_ms << ',' << p.min_ms << ','
         << p.frame_ms << ',' << p.first_extra_ms << ',' << p.all.relative << ',' << p.floor.relative << ','
         << p.ball.relative << ',' << p.floor.pixels << ',' << p.ball.pixels << ',' << p.all.noise << ','
-        << test::config_label(c) << '\n';
+        << test::config_label(c) << ',' << p.cpu_ms << '\n';
   }
 }
 

@@ -1,5 +1,7 @@
 #include "tests/lighting/reflection_render.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -11,6 +13,13 @@
 
 namespace lg::test {
 namespace {
+
+double process_cpu_ms() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto ms = [](const timeval& t) { return double(t.tv_sec) * 1e3 + double(t.tv_usec) * 1e-3; };
+  return ms(usage.ru_utime) + ms(usage.ru_stime);
+}
 
 constexpr const char* kExample = LUMAGRAPH_SOURCE_DIR "/examples/reflections.json";
 
@@ -96,7 +105,9 @@ ReflectionFrame render_reflections(const World& world, uint32_t width, uint32_t 
   ReflectionFrame out;
   for (int f = 0; f < frames; ++f) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_ms();
     const FrameStats& stats = renderer.render(world, {width, height});
+    out.frame_cpu_ms.push_back(process_cpu_ms() - cpu_start);
     out.frame_wall_ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     double ms = 0;

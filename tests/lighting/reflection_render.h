@@ -41,7 +41,11 @@ struct ReflectionFrame {
   std::vector<double> reflection_gpu_ms;     // per frame: the probes' and ssr's passes summed
   std::vector<double> frame_gpu_ms;          // per frame: the whole command buffer
   std::vector<double> frame_wall_ms;         // per frame: render() on the host, captures included
-  PathEnvironment environment;               // the plan's, for the reference
+  // Per frame: the process's CPU time (user and system, every thread) during render(). On
+  // lavapipe that is the GPU work too, and unlike the timestamps it barely grows with the load
+  // of a shared machine.
+  std::vector<double> frame_cpu_ms;
+  PathEnvironment environment;  // the plan's, for the reference
   size_t validation_messages = 0;
 };
 

@@ -5,7 +5,8 @@
 // - the gallery (examples/worlds/gallery.json) with its floor polished: the file's floor is a
 //   rough dielectric (0.7, beyond lighting.ssr's default max_roughness of 0.5, and a dielectric's
 //   specular term cannot be told from its diffuse one in the lit image), so here it is steel at
-//   roughness 0.2. Its sphere probe around the chrome ball covers the floor near the ball.
+//   roughness 0.2. Its box probe, 1 m above the floor in front of the plinths, covers the whole
+//   floor with the gallery's bounds (floor, back wall, 4 m up) as its proxy.
 #pragma once
 
 #include <string>
