@@ -184,14 +184,14 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
       m.measure({.source = ReflectionSource::probes, .parallax = parallax, .face_size = int(face)});
   for (const double scale : o.scales)
     for (const double steps : o.steps)
-      m.measure({.source = ReflectionSource::ssr, .max_steps = int(steps), .ssr_scale = scale < 1 ? scale : 0});
+      m.measure({.source = ReflectionSource::ssr, .max_steps = int(steps), .ssr_scale = scale});
   for (const double scale : o.scales)
     for (const bool parallax : {false, true})
       for (const double face : o.faces)
         m.measure({.source = ReflectionSource::ssr_with_probes,
                    .parallax = parallax,
                    .face_size = int(face),
-                   .ssr_scale = scale < 1 ? scale : 0});
+                   .ssr_scale = scale});
   std::printf("\n");
   points.insert(points.end(), m.points.begin(), m.points.end());
 }

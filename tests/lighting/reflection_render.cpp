@@ -70,7 +70,7 @@ std::string config_label(const ReflectionConfig& c) {
   }
   if (uses_ssr(c.source)) {
     if (c.max_steps > 0) label += " steps=" + std::to_string(c.max_steps);
-    if (c.ssr_scale > 0) label += " scale=" + std::to_string(c.ssr_scale).substr(0, 4);
+    if (c.ssr_scale > 0 && c.ssr_scale < 1) label += " scale=" + std::to_string(c.ssr_scale).substr(0, 4);
   }
   return label;
 }

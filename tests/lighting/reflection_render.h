@@ -3,7 +3,7 @@
 // back what an error against the path tracer's specular AOV needs: the lit and direct images and
 // the G-buffer's material, plus the reflection passes' GPU time per frame. Configurations differ
 // only in graph links and params, so this knows nothing of how a node captures or traces.
-// Shared by tests/lighting/reflection_comparison_test.cpp and lumagraph-bench-reflections.
+// Used by lumagraph-bench-reflections (tests/bench/reflection_bench.cpp).
 #pragma once
 
 #include <string>
