@@ -1,8 +1,8 @@
 // lighting.ssr on lavapipe: examples/ssr.json on examples/worlds/ssr-floor.json (a polished steel
 // floor under coloured boxes) against the path tracer's specular AOV, with and without the
-// reflections linked into lighting.ibl; and degenerate input (sky, grazing rays, depth at the
-// near plane, a NaN and Inf lit image) that must leave every output finite; and the same at a
-// resolution_scale below 1.
+// reflections linked into lighting.ibl and at half resolution; and degenerate input (sky, grazing
+// rays, depth at the near plane, a NaN and Inf lit image) that must leave every output finite, at
+// full resolution and at a third of it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
