@@ -50,7 +50,7 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
   // static results the new plan would compute again with the same keys are carried over.
   auto executor = std::make_unique<Executor>(*context_, builtin_kernels(), std::move(*result.plan));
   if (executor_) executor->adopt_cached_results(*executor_);
-  if (!gpu_scene_) gpu_scene_ = std::make_unique<GpuScene>(*context_, executor->submitter());
+  if (!gpu_scene_) gpu_scene_ = std::make_unique<GpuScene>(*context_);
   executor_ = std::move(executor);
   summary_ = summary;
   frame_ = frame;

@@ -19,6 +19,7 @@ int nodes_command(const std::vector<std::string>& argv);
 int render_command(const std::vector<std::string>& argv);
 int bake_command(const std::vector<std::string>& argv);
 int reference_command(const std::vector<std::string>& argv);
+int soak_command(const std::vector<std::string>& argv);
 
 // Prints "lumagraph COMMAND: MESSAGE" and a pointer to --help; returns exit_usage.
 int usage_error(const std::string& command, const std::string& message);

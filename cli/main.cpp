@@ -17,6 +17,7 @@ commands:
   nodes             list the node types, their ports and params
   bake MESH         bake ambient occlusion and bent normals (vertex, texel, volume)
   reference [SCENE] path-trace the ground truth that global illumination is measured against
+  soak [GRAPH]      render for a long time with hot reloads and world changes; memory per frame
 
 `lumagraph COMMAND --help` describes each command; `lumagraph --version` prints the version. With no GRAPH, render and compile use
 the embedded default graph (examples/default.json) and the embedded default scene.
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
   if (command == "nodes") return nodes_command(rest);
   if (command == "bake") return bake_command(rest);
   if (command == "reference") return reference_command(rest);
+  if (command == "soak") return soak_command(rest);
   std::fprintf(stderr, "lumagraph: unknown command '%s'\n\n%s", command.c_str(), help);
   return exit_usage;
 }

@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/dump_outputs.h"
 #include "cli/graph_input.h"
+#include "cli/validation_report.h"
 #include "graph/json_writer.h"
 #include "runtime/image/image_file.h"
 #include "runtime/scene/default_world.h"
@@ -56,13 +57,6 @@ void use_environment(Graph& graph, const std::string& path, AssetRoots& roots) {
   for (GraphNode& node : graph.nodes)
     if (node.type == "env.load") node.params.set("path", absolute);
   roots.roots.push_back(std::filesystem::path(absolute).parent_path().string());
-}
-
-void print_validation(Context& context, size_t& count) {
-  for (const ValidationMessage& m : context.take_validation_messages()) {
-    std::fprintf(stderr, "lumagraph render: validation: [%s] %s\n", m.id.c_str(), m.text.c_str());
-    ++count;
-  }
 }
 
 }  // namespace
@@ -121,7 +115,7 @@ int render_command(const std::vector<std::string>& argv) {
     FrameStats stats;
     for (unsigned f = 0; f < frames; ++f) {
       stats = renderer.render(world, frame);
-      print_validation(renderer.context(), validation_messages);
+      print_validation("render", renderer.context(), validation_messages);
       if (progress) std::fprintf(stderr, "\rframe %u/%u  %.1f ms GPU", f + 1, frames, stats.gpu_ms);
     }
     if (progress) std::fputc('\n', stderr);
@@ -139,7 +133,7 @@ int render_command(const std::vector<std::string>& argv) {
         return exit_runtime;
       }
     }
-    print_validation(renderer.context(), validation_messages);
+    print_validation("render", renderer.context(), validation_messages);
   } catch (const GraphError& e) {
     std::fputs(e.what(), stderr);
     return exit_invalid;

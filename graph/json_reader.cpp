@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "graph/fault_injection.h"
 #include "graph/limits.h"
 
 namespace lg {
@@ -381,7 +382,7 @@ std::optional<JsonValue> read_json_file(const std::string& path, Diagnostics& di
   }
   std::string text;
   char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+  while (!inject_fault(FaultSite::file_read) && (in.read(buffer, sizeof buffer) || in.gcount() > 0)) {
     text.append(buffer, static_cast<size_t>(in.gcount()));
     if (text.size() > limits::max_file_bytes) {
       diagnostics.error({}, "", "the file is larger than the limit of " +
@@ -389,7 +390,7 @@ std::optional<JsonValue> read_json_file(const std::string& path, Diagnostics& di
       return std::nullopt;
     }
   }
-  if (in.bad()) {
+  if (in.bad() || !in.eof()) {
     diagnostics.error({}, "", "cannot read the file");
     return std::nullopt;
   }

@@ -9,6 +9,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "graph/fault_injection.h"
+
 namespace lg {
 namespace {
 
@@ -129,7 +131,8 @@ bool write_file_atomically(const std::string& path, const std::string& text, std
   int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return fail("cannot create " + temp);
   for (size_t done = 0; done < text.size();) {
-    ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    ssize_t n = inject_fault(FaultSite::file_write) ? (errno = ENOSPC, -1)
+                                                    : ::write(fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       ::close(fd);

@@ -30,6 +30,7 @@ std::string output_name(const PlanNode& node) {
 
 Executor::Executor(Context& context, const KernelRegistry& kernels, Plan plan)
     : context_(context),
+      registry_(kernels),
       plan_(std::move(plan)),
       submitter_(context),
       pipelines_(context),
@@ -37,19 +38,24 @@ Executor::Executor(Context& context, const KernelRegistry& kernels, Plan plan)
       nearest_(context, {Filter::nearest, Address::clamp}),
       timestamps_(context, static_cast<uint32_t>(plan_.passes.size()) + 1),
       layouts_(layouts_after_frame(plan_)),
-      kernels_(plan_.nodes.size()),
       ran_keys_(plan_.passes.size(), 0) {
   // Kernels first: a missing one is a configuration error, found before any memory is taken.
+  make_kernels();
+  memory_ = allocate_plan_memory(context, plan_);
+}
+
+void Executor::make_kernels() {
+  std::vector<std::unique_ptr<NodeKernel>> kernels(plan_.nodes.size());
   for (const PlanPass& pass : plan_.passes) {
-    auto& kernel = kernels_[pass.node];
+    auto& kernel = kernels[pass.node];
     if (kernel) continue;
     const PlanNode& node = plan_.nodes[pass.node];
-    const KernelFactory* factory = kernels.find(node.type);
+    const KernelFactory* factory = registry_.find(node.type);
     if (!factory) throw ExecutorError("node '" + node.id + "' (" + node.type + ") has no kernel in this build");
     kernel = (*factory)(node);
     if (!kernel) throw ExecutorError("the kernel factory of " + node.type + " made nothing for node '" + node.id + "'");
   }
-  memory_ = allocate_plan_memory(context, plan_);
+  kernels_ = std::move(kernels);
 }
 
 Executor::~Executor() = default;
@@ -112,6 +118,10 @@ FrameStats Executor::run_frame(const SceneView& scene, GpuScene& gpu_scene) {
     submitter_.run([&](VkCommandBuffer cmd) { record_frame(cmd, scene, gpu_scene, skip_cached); });
   } catch (...) {
     if (frames_ > 0) swap_history();  // back: the failed frame does not count
+    // Nothing of the failed frame ran, yet its kernels may believe their uploads and layout
+    // changes did: they start afresh, and the static passes run again.
+    make_kernels();
+    invalidate_cache();
     throw;
   }
   const auto end = std::chrono::steady_clock::now();

@@ -36,7 +36,8 @@ class Executor {
   // `plan` must be compiled with `options.alias = device_alias_options(context)` so that its
   // placements hold what the device needs. Throws ExecutorError naming the node and its type
   // when a node with passes has no kernel in `kernels`. Works the same on a Context of its own
-  // or one adopted from a host engine.
+  // or one adopted from a host engine. `kernels` must outlive the executor (a failed frame makes
+  // its kernels again).
   Executor(Context& context, const KernelRegistry& kernels, Plan plan);
   ~Executor();
   Executor(const Executor&) = delete;
@@ -88,6 +89,8 @@ class Executor {
   Image& output_image(std::string_view output_name) { return image(output_resource(output_name)); }
 
  private:
+  // One kernel per node with passes, made afresh (all or none: on a throw the old ones stay).
+  void make_kernels();
   void record_frame(VkCommandBuffer cmd, const SceneView& scene, GpuScene& gpu_scene, bool skip_cached);
   void clear_history(VkCommandBuffer cmd);
   void swap_history();
@@ -95,6 +98,7 @@ class Executor {
   const PlacedResource& readable(std::string_view resource) const;
 
   Context& context_;
+  const KernelRegistry& registry_;  // outlives the executor
   Plan plan_;
   Submitter submitter_;
   PipelineCache pipelines_;

@@ -59,7 +59,7 @@ const std::shared_ptr<const T>& not_null(const std::shared_ptr<const T>& asset, 
 
 }  // namespace
 
-GpuScene::GpuScene(Context& context, Submitter& submitter) : context_(context), submitter_(submitter) {
+GpuScene::GpuScene(Context& context) : context_(context), submitter_(context) {
   white_ = Image::dedicated(context_, {.name = "white texture", .format = texture_format(ColorSpace::srgb)});
   const float white[4] = {1, 1, 1, 1};
   upload_image(submitter_, white_, white, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);

@@ -19,13 +19,13 @@
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/sampler.h"
+#include "runtime/gpu/submit.h"
 #include "runtime/scene/mesh_tools.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
 
 class Context;
-class Submitter;
 struct GraphicsPipelineDesc;
 
 // One vertex as the vertex buffers hold it. What a mesh lacks is filled in: uvs 0, colour
@@ -58,7 +58,8 @@ void draw_mesh(VkCommandBuffer cmd, const GpuMesh& mesh);
 
 class GpuScene {
  public:
-  GpuScene(Context& context, Submitter& submitter);
+  // Uploads through a submitter of its own: it outlives the executors that draw with it.
+  explicit GpuScene(Context& context);
 
   // Uploads the meshes and textures when `scene.version` differs from the last upload (the
   // first call always uploads). Throws std::invalid_argument naming a malformed mesh or
@@ -81,7 +82,7 @@ class GpuScene {
   Image upload(const TextureData& texture);
 
   Context& context_;
-  Submitter& submitter_;
+  Submitter submitter_;
   std::optional<uint64_t> version_;
   std::vector<GpuMesh> meshes_;
   std::vector<Bounds> bounds_;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "graph/fault_injection.h"
 #include "graph/plan_format.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/gpu_error.h"
@@ -53,7 +54,10 @@ DeviceMemory::DeviceMemory(Context& context, uint64_t size, uint32_t type_bits, 
   auto info = vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
   info.allocationSize = size;
   info.memoryTypeIndex = type_index_;
-  vk_check(vkAllocateMemory(context.device(), &info, nullptr, &memory_), "vkAllocateMemory",
+  const VkResult allocated = inject_fault(FaultSite::device_allocation)
+                                 ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                 : vkAllocateMemory(context.device(), &info, nullptr, &memory_);
+  vk_check(allocated, "vkAllocateMemory",
            "while allocating " + name_ + " (" + format_bytes(size) + ")");
   context.memory_used_ += size;
   context.set_name(VK_OBJECT_TYPE_DEVICE_MEMORY, memory_, name_);

@@ -2,6 +2,7 @@
 
 #include <type_traits>
 
+#include "graph/fault_injection.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/gpu_error.h"
 #include "runtime/gpu/vk_struct.h"
@@ -47,7 +48,9 @@ class ShaderModule {
     auto info = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
     info.codeSize = words.size_bytes();
     info.pCode = words.data();
-    vk_check(vkCreateShaderModule(device_, &info, nullptr, &module_), "vkCreateShaderModule");
+    vk_check(inject_fault(FaultSite::shader_module) ? VK_ERROR_OUT_OF_HOST_MEMORY
+                                                    : vkCreateShaderModule(device_, &info, nullptr, &module_),
+             "vkCreateShaderModule");
   }
   ~ShaderModule() { vkDestroyShaderModule(device_, module_, nullptr); }
   ShaderModule(const ShaderModule&) = delete;

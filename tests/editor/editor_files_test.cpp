@@ -1,6 +1,7 @@
 // The editor and files: saving writes the runtime's format, examples round-trip untouched (an
-// edit undone and saved renders the same image), a file changed on disk reloads (a broken one
-// keeps the last good graph), autosave recovers unsaved work, and --screenshot writes the window.
+// edit undone and saved renders the same image), a save onto a full disk keeps everything, a file
+// changed on disk reloads (a broken one keeps the last good graph), autosave recovers unsaved
+// work, and --screenshot writes the window.
 #include <gtest/gtest.h>
 
 #include <QDir>
@@ -8,6 +9,7 @@
 #include <QImage>
 #include <QListWidget>
 #include <QProcess>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
 
@@ -16,6 +18,7 @@
 #include "editor/document.h"
 #include "editor/graph_edits.h"
 #include "editor/main_window.h"
+#include "graph/fault_injection.h"
 #include "graph/graph_io.h"
 #include "qt_app.h"
 #include "runtime/scene/default_world.h"
@@ -127,6 +130,35 @@ TEST_F(FilesTest, SavingWritesTheExpectedJson) {
   std::optional<Graph> want = parse_graph_text(expected, d);
   ASSERT_TRUE(want) << d.to_string();
   EXPECT_EQ(json_of_file(path), graph_to_json(*want));
+}
+
+// A disk that fills up while saving (an injected ENOSPC, graph/fault_injection.h; a read-only
+// folder cannot be tested as root, which CI is): the save fails and says why, the file on disk
+// is what it was, no temporary file is left, and the edit is still in the document, unsaved.
+TEST_F(FilesTest, ASaveOntoAFullDiskKeepsTheDocumentAndTheFileAndSaysWhy) {
+  const QString path = copy_example("minimal.json");
+  ASSERT_TRUE(window->open_file(path));
+  QFile before(path);
+  ASSERT_TRUE(before.open(QIODevice::ReadOnly));
+  const QByteArray on_disk = before.readAll();
+  Graph g = window->document()->graph();
+  set_param(g, "tonemap", "exposure", JsonValue(1.5));
+  window->document()->edit(g, "test edit");
+
+  arm_fault(FaultSite::file_write, 1);
+  EXPECT_FALSE(window->save_to(path));
+  arm_fault(FaultSite::file_write, 0);
+  EXPECT_TRUE(window->statusBar()->currentMessage().contains("No space left on device"))
+      << window->statusBar()->currentMessage().toStdString();
+  QFile after(path);
+  ASSERT_TRUE(after.open(QIODevice::ReadOnly));
+  EXPECT_EQ(after.readAll(), on_disk);
+  EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files), QStringList{"minimal.json"});
+  EXPECT_TRUE(window->document()->is_modified());
+  EXPECT_EQ(*find_node(window->document()->graph(), "tonemap")->params.find("exposure"), JsonValue(1.5));
+
+  ASSERT_TRUE(window->save_to(path));  // the disk has room again
+  EXPECT_FALSE(window->document()->is_modified());
 }
 
 TEST_F(FilesTest, ABrokenFileOnDiskKeepsTheLastGoodGraph) {

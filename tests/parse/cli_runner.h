@@ -27,10 +27,12 @@ inline std::string shell_quote(const std::string& s) {
   return out + "'";
 }
 
-// Runs `lumagraph ARGS...` from the source root (where ctest runs the tests).
-inline Outcome lumagraph(const std::vector<std::string>& args) {
+// Runs `lumagraph ARGS...` from the source root (where ctest runs the tests), with `variable`
+// (NAME=value) added to its environment when given.
+inline Outcome lumagraph(const std::vector<std::string>& args, const std::string& variable = "") {
   TempDir dir;
-  std::string command = shell_quote(LUMAGRAPH_BINARY_DIR "/lumagraph");
+  std::string command =
+      (variable.empty() ? "" : "env " + shell_quote(variable) + " ") + shell_quote(LUMAGRAPH_BINARY_DIR "/lumagraph");
   for (const auto& a : args) command += " " + shell_quote(a);
   command += " >" + shell_quote(dir.file("out")) + " 2>" + shell_quote(dir.file("err")) + " </dev/null";
   int raw = std::system(command.c_str());

@@ -66,6 +66,17 @@ TEST(RenderCli, BrokenGraphGetsLocatedErrors) {
 
 // A scene whose mesh lies outside the scene's folder renders once --asset-root allows that folder,
 // as the refusal's message says; the scene's own folder stays allowed beside it.
+// A frame that fails on the device (an injected failure, graph/fault_injection.h): status 3, the
+// pass named, no image written.
+TEST(RenderCli, AFailedFrameExitsWithStatus3NamingThePass) {
+  TempDir dir;
+  Outcome r = lumagraph({"render", "examples/minimal.json", "--size", "64x36", "--out", dir.file("frame.png")},
+                        "LUMAGRAPH_FAULT=shader_module:1");
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_TRUE(contains(r.err, "pass '") && contains(r.err, "vkCreateShaderModule failed")) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("frame.png")));
+}
+
 TEST(RenderCli, AssetRootAllowsSceneFilePaths) {
   TempDir dir;
   fs::create_directories(dir.path() / "meshes");

@@ -24,7 +24,7 @@ TEST_P(ExecExamplesTest, FramesValidateAndLaterFramesSkipCachedPasses) {
   for (const NodeSchema* schema : builtin_registry().all())
     kernels.add(schema->type, [](const PlanNode&) { return std::make_unique<RecordsNothing>(); });
   Executor exec(context(), kernels, compile_example(context(), GetParam(), {64, 48}));
-  GpuScene gpu_scene(context(), exec.submitter());
+  GpuScene gpu_scene(context());
   SceneView scene;
   for (uint64_t frame = 0; frame < 3; ++frame) {
     FrameStats stats = exec.run_frame(scene, gpu_scene);

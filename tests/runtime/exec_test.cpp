@@ -70,7 +70,7 @@ constexpr std::string_view chain_graph = R"({ "format": "lumagraph/1", "name": "
 
 TEST_F(ExecTest, RunsAChainOfPassesFrameAfterFrame) {
   auto exec = executor(chain_graph);
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   for (uint64_t frame = 0; frame < 3; ++frame) {
     FrameStats stats = exec->run_frame(scene, gpu_scene);
     EXPECT_EQ(stats.frame, frame);
@@ -86,7 +86,7 @@ TEST_F(ExecTest, RunsAChainOfPassesFrameAfterFrame) {
 
 TEST_F(ExecTest, FindsOutputsByName) {
   auto exec = executor(chain_graph);
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   exec->run_frame(scene, gpu_scene);
   EXPECT_EQ(exec->output_names(), std::vector<std::string>{"main"});
   EXPECT_EQ(exec->output_resource("main"), "two.color");
@@ -129,7 +129,7 @@ TEST_F(ExecTest, AliasedResourcesKeepResultsExact) {
   ASSERT_LT(plan.memory.transient, plan.memory.transient_unaliased);
   EXPECT_TRUE(std::any_of(plan.barriers.begin(), plan.barriers.end(),
                           [](const Barrier& b) { return b.reason == BarrierReason::alias; }));
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   for (int frame = 0; frame < 3; ++frame) {
     exec->run_frame(scene, gpu_scene);
     EXPECT_EQ(wrong_texels(exec->read_image("c.color"), filled(6.5f)), 0) << "frame " << frame;
@@ -150,7 +150,7 @@ TEST_F(ExecTest, AliasedResourcesKeepResultsExact) {
 
 TEST_F(ExecTest, WithoutAliasingEveryIntermediateReadsBack) {
   auto exec = executor(aliased_graph, false);
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   exec->run_frame(scene, gpu_scene);
   EXPECT_EQ(exec->readable_resources().size(), exec->plan().resources.size());
   EXPECT_EQ(wrong_texels(exec->read_image("fill.color"), filled(0.5f)), 0);
@@ -162,7 +162,7 @@ TEST_F(ExecTest, HistoryFrameNSeesWhatFrameNMinusOneWrote) {
   auto exec = executor(R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "acc", "type": "test.accumulate" }, { "id": "out", "type": "test.display" } ],
     "links": [ { "from": "acc.color", "to": "acc.history" }, { "from": "acc.color", "to": "out.color" } ] })");
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   const auto red = [](float r) { return [r](uint32_t, uint32_t) { return Texel{r, 0, 0, 0}; }; };
   for (int frame = 0; frame < 4; ++frame) {
     exec->run_frame(scene, gpu_scene);
@@ -185,7 +185,7 @@ TEST_F(ExecTest, StaticPassesRunOnceThenAreSkippedAsCached) {
   ASSERT_TRUE(exec->plan().passes[0].is_static);
   ASSERT_TRUE(std::any_of(exec->plan().barriers.begin(), exec->plan().barriers.end(),
                           [](const Barrier& b) { return b.skip_when_cached; }));
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   auto& calls = *kernels.calls;
   for (int frame = 0; frame < 3; ++frame) {
     FrameStats stats = exec->run_frame(scene, gpu_scene);
@@ -219,7 +219,7 @@ TEST_F(ExecTest, DrawsTheGpuScenesMeshIntoAnAttachment) {
   mesh.normals.assign(3, {0.25f, 0.5f, 0.75f});
   mesh.indices = {0, 1, 2};
   scene.meshes.push_back(std::make_shared<const MeshData>(std::move(mesh)));
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   for (int frame = 0; frame < 2; ++frame) {
     exec->run_frame(scene, gpu_scene);
     EXPECT_EQ(wrong_texels(exec->read_image("raster.color"),
@@ -235,7 +235,7 @@ TEST_F(ExecTest, ReadsBuffersAsBytes) {
   auto exec = executor(R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "sh", "type": "test.sh", "params": { "order": 2, "value": 3 } } ],
     "outputs": [ "sh.sh" ] })");
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   exec->run_frame(scene, gpu_scene);
   std::vector<std::byte> bytes = exec->read_buffer("sh.sh");
   ASSERT_EQ(bytes.size(), 9u * 16);
@@ -267,7 +267,7 @@ TEST_F(ExecTest, AKernelsErrorNamesThePass) {
   auto exec = executor(R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "boom", "type": "test.boom" }, { "id": "out", "type": "test.display" } ],
     "links": [ { "from": "boom.color", "to": "out.color" } ] })");
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   try {
     exec->run_frame(scene, gpu_scene);
     ADD_FAILURE() << "no throw";
@@ -290,7 +290,7 @@ TEST_F(ExecTest, AnUnknownSlotNamesTheNodeAndWhatThePassBinds) {
   Executor exec(context(), registry, compile_test_graph(context(), R"({ "format": "lumagraph/1",
     "nodes": [ { "id": "f", "type": "test.fill" }, { "id": "out", "type": "test.display" } ],
     "links": [ { "from": "f.color", "to": "out.color" } ] })"));
-  GpuScene gpu_scene(context(), exec.submitter());
+  GpuScene gpu_scene(context());
   try {
     exec.run_frame(scene, gpu_scene);
     ADD_FAILURE() << "no throw";
@@ -308,7 +308,7 @@ TEST_F(ExecTest, DeviceMemoryMatchesThePlan) {
   const uint64_t planned = exec->plan().memory.transient + exec->plan().memory.persistent;
   EXPECT_GE(used, planned * 9 / 10);
   EXPECT_LE(used, planned * 11 / 10) << used << " bytes used, " << planned << " planned";
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   FrameStats stats = exec->run_frame(scene, gpu_scene);
   EXPECT_EQ(stats.plan_memory.transient, exec->plan().memory.transient);
   EXPECT_GE(stats.device_memory_used, used);
@@ -319,7 +319,7 @@ TEST_F(ExecTest, StatsNameSkippedNodesAndWriteJsonAndText) {
     "nodes": [ { "id": "bake", "type": "test.bake" }, { "id": "noop", "type": "test.add", "params": { "add": 0 } },
                { "id": "unused", "type": "test.fill" }, { "id": "out", "type": "test.display" } ],
     "links": [ { "from": "bake.color", "to": "noop.src" }, { "from": "noop.color", "to": "out.color" } ] })");
-  GpuScene gpu_scene(context(), exec->submitter());
+  GpuScene gpu_scene(context());
   exec->run_frame(scene, gpu_scene);
   FrameStats stats = exec->run_frame(scene, gpu_scene);
   ASSERT_EQ(stats.skipped_nodes.size(), 2u);
@@ -353,7 +353,7 @@ TEST_F(ExecTest, StatsNameDroppedPasses) {
     "nodes": [ { "id": "light", "type": "test.lit" }, { "id": "out", "type": "test.display" } ],
     "links": [ { "from": "light.color", "to": "out.color" } ] })",
                                    true, {width, height}, no_area_lights));
-  GpuScene gpu_scene(context(), exec.submitter());
+  GpuScene gpu_scene(context());
   FrameStats stats = exec.run_frame(scene, gpu_scene);
   ASSERT_EQ(stats.passes.size(), 1u);
   EXPECT_EQ(stats.passes[0].name, "light/direct");
@@ -371,7 +371,7 @@ TEST_F(ExecTest, RunsOnADeviceAdoptedFromAHost) {
                           context().queue_family()});
   ASSERT_FALSE(host.owns_device());
   Executor exec(host, kernels.registry, compile_test_graph(host, chain_graph));
-  GpuScene gpu_scene(host, exec.submitter());
+  GpuScene gpu_scene(host);
   for (int frame = 0; frame < 2; ++frame) {
     exec.run_frame(scene, gpu_scene);
     EXPECT_EQ(wrong_texels(exec.read_image("two.color"), filled(3.25f)), 0);

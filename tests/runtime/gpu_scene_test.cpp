@@ -61,7 +61,7 @@ SceneView one_triangle_scene() {
 
 TEST_F(GpuSceneTest, UploadsInterleavedVerticesAndIndices) {
   const SceneView scene = one_triangle_scene();
-  GpuScene gpu(context(), submitter());
+  GpuScene gpu(context());
   gpu.update(scene);
   ASSERT_EQ(gpu.mesh_count(), 2);
   for (int m = 0; m < 2; ++m) {
@@ -107,7 +107,7 @@ TEST_F(GpuSceneTest, UploadsInterleavedVerticesAndIndices) {
 
 TEST_F(GpuSceneTest, UploadsTexturesInSrgbAndAWhiteTexture) {
   const SceneView scene = one_triangle_scene();
-  GpuScene gpu(context(), submitter());
+  GpuScene gpu(context());
   gpu.update(scene);
   ASSERT_EQ(gpu.texture_count(), 1);
   const Image& texture = gpu.texture(0);
@@ -127,7 +127,7 @@ TEST_F(GpuSceneTest, TexturesGetFullMipChainsInTheirColourSpacesFormat) {
   TextureData data = *scene.textures[0];
   data.color_space = ColorSpace::linear;
   scene.textures.push_back(std::make_shared<const TextureData>(data));
-  GpuScene gpu(context(), submitter());
+  GpuScene gpu(context());
   gpu.update(scene);
   for (int t = 0; t < 2; ++t) {
     const Image& texture = gpu.texture(t);
@@ -165,7 +165,7 @@ TEST(TextureMips, OddSizesAverageEveryTexel) {
 }
 
 TEST_F(GpuSceneTest, OneSamplerPerDistinctSampling) {
-  GpuScene gpu(context(), submitter());
+  GpuScene gpu(context());
   TextureSampling clamped{.wrap_u = TextureWrap::clamp_to_edge, .wrap_v = TextureWrap::mirrored_repeat};
   TextureSampling nearest{.mag = TextureFilter::nearest, .min = TextureFilter::nearest, .mip = MipFilter::none};
   VkSampler a = gpu.sampler({}), b = gpu.sampler(clamped), c = gpu.sampler(nearest);
@@ -178,7 +178,7 @@ TEST_F(GpuSceneTest, OneSamplerPerDistinctSampling) {
 
 TEST_F(GpuSceneTest, UploadsAgainOnlyWhenTheVersionChanges) {
   SceneView scene = one_triangle_scene();
-  GpuScene gpu(context(), submitter());
+  GpuScene gpu(context());
   gpu.update(scene);
   scene.meshes.pop_back();
   gpu.update(scene);  // same version: the scene is taken as unchanged
@@ -190,7 +190,7 @@ TEST_F(GpuSceneTest, UploadsAgainOnlyWhenTheVersionChanges) {
 
 TEST_F(GpuSceneTest, RefusesMalformedMeshesAndKeepsThePreviousUpload) {
   SceneView scene = one_triangle_scene();
-  GpuScene gpu(context(), submitter());
+  GpuScene gpu(context());
   gpu.update(scene);
   scene.version = 9;
   edited_mesh(scene, 1).indices.push_back(4);

@@ -1,10 +1,18 @@
-// gi.reflection_capture's kernel. The "lookup" pass first makes sure the cubes are current: when
-// reflection_capture_key() of the frame's scene differs from the last capture's, every probe's
-// cube is captured again on the CPU (reflection_cube_capture.h, under the plan's own environment,
-// plan_environment()), uploaded, prefiltered on the GPU into a GGX mip chain by
-// env.specular_prefilter's record_specular_prefilter() and copied into one cube array, cube i
-// for probe i; otherwise the cubes on the device stay as they are. Then one dispatch looks them
-// up per pixel (shaders/reflection_lookup.comp).
+// gi.reflection_capture's kernel. The "lookup" pass first makes sure the cubes are current, then
+// one dispatch looks them up per pixel (shaders/reflection_lookup.comp).
+//
+// capture "raster" (raster_cube_capture.h): with faces_per_frame 0, when
+// reflection_capture_key() of the frame's scene differs from the last capture's, every face of
+// every probe is drawn on the GPU and every probe prefiltered; with faces_per_frame N, the whole
+// capture is drawn on the first frame (and when the number of probes changes), then N faces a
+// frame, round robin over the probes and their faces, whatever changed, and a probe is
+// prefiltered again when its sixth face is drawn. second_bounce draws the capture again with each
+// probe's first capture as the specular map of the surfaces it sees.
+//
+// capture "path_traced": every probe's cube is traced on the CPU (reflection_cube_capture.h,
+// under the plan's own environment, plan_environment()) when the key changes, then uploaded.
+//
+// Prefiltering is env.specular_prefilter's record_specular_prefilter() (probe_cubes.h).
 #include "nodes/gi/reflection_capture/reflection_capture_kernel.h"
 
 #include <algorithm>
@@ -12,6 +20,7 @@
 #include <bit>
 #include <chrono>
 #include <cstdio>
+#include <numeric>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -21,11 +30,14 @@
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
-#include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 #include "nodes/gi/irradiance_volume/probe_bake_key.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
+#include "nodes/gi/reflection_capture/captured_cube_source.h"
+#include "nodes/gi/reflection_capture/probe_cubes.h"
+#include "nodes/gi/reflection_capture/raster_cube_capture.h"
 #include "nodes/gi/reflection_capture/reflection_cube_capture.h"
 #include "nodes/gi/reflection_capture/reflection_probe_buffer.h"
+#include "runtime/gpu/buffer.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/direct_barriers.h"
@@ -33,42 +45,26 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/texel_codec.h"
+#include "runtime/gpu/transfer.h"
 
 namespace lg {
 namespace {
-
-constexpr VkFormat kCubeFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
 struct Push {  // shaders/reflection_lookup.comp
   uint32_t probe_count;
 };
 
 constexpr SyncScope kTransferWrite{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
-constexpr SyncScope kTransferRead{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
 constexpr SyncScope kComputeRead{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
-constexpr SyncScope kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-constexpr SyncScope kNothing{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE};
 
-Image cube_image(Context& gpu, const std::string& name, uint32_t size, uint32_t mips, uint32_t cubes = 1) {
-  return Image::dedicated(gpu, {.name = name,
-                                .kind = ImageKind::cube,
-                                .format = kCubeFormat,
-                                .width = size,
-                                .height = size,
-                                .mips = mips,
-                                .layers = 6 * cubes});
-}
-
-// One probe's images while it is prefiltered: its captured radiance, the prefilter's chain and
-// the prefiltered result, kept until the next capture (the frame that records them may still run).
-struct ProbeImages {
-  Image captured, chain, prefiltered;
-};
-
-class ReflectionCaptureKernel final : public NodeKernel {
+class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSource {
  public:
   explicit ReflectionCaptureKernel(const PlanNode& node)
-      : prefilter_samples_(uint32_t(param_number(node, "prefilter_samples"))) {
+      : raster_(param_string(node, "capture") == "raster"),
+        second_bounce_(param_bool(node, "second_bounce")),
+        faces_per_frame_(uint32_t(param_number(node, "faces_per_frame"))),
+        prefilter_samples_(uint32_t(param_number(node, "prefilter_samples"))),
+        intensity_(float(param_number(node, "intensity"))) {
     settings_.face_size = uint32_t(param_number(node, "face_size"));
     settings_.samples = uint32_t(param_number(node, "samples"));
     settings_.bounces = uint32_t(param_number(node, "bounces"));
@@ -87,10 +83,34 @@ class ReflectionCaptureKernel final : public NodeKernel {
                                  "': the device has no imageCubeArray feature enabled, which the probe lookup needs");
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       probe_buffer_.emplace(ctx.gpu(), ctx.node().id + " probes", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-      staging_.emplace(ctx.gpu(), ctx.node().id + " capture staging", VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     }
-    const uint64_t key = reflection_capture_key(ctx.scene());
-    if (!cubes_ || key != captured_key_) capture(ctx, key);
+    const SceneView& scene = ctx.scene();
+    const uint64_t key = reflection_capture_key(scene);
+    const bool fresh = cubes_.prepare(ctx, scene.reflection_probes.size(), settings_.face_size, mips_);
+    if (fresh || key != captured_key_) {
+      probe_buffer_->write(pack_reflection_probes(scene, "gi.reflection_capture '" + ctx.node().id + "'"));
+      push_.probe_count = uint32_t(scene.reflection_probes.size());
+    }
+    if (!raster_) {
+      if (fresh || key != captured_key_) capture_traced(ctx);
+    } else if (faces_per_frame_ == 0 || fresh) {
+      if (fresh || key != captured_key_) capture_raster_all(ctx);
+    } else {
+      capture_raster_slice(ctx);
+    }
+    captured_key_ = key;
+    lookup(ctx);
+  }
+
+  std::vector<float> read_captured_face(Submitter& submitter, uint32_t probe, int face) override {
+    if (probe >= cubes_.captured().size() || face < 0 || face > 5)
+      throw std::out_of_range("gi.reflection_capture: no captured face " + std::to_string(face) + " of probe " +
+                              std::to_string(probe));
+    return read_image(submitter, cubes_.captured()[probe], VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, {0, uint32_t(face)});
+  }
+
+ private:
+  void lookup(PassContext& ctx) {
     const Image& depth = ctx.image("in.gbuffer", 0);
     Image& out = ctx.image("out.reflections");
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
@@ -100,13 +120,85 @@ class ReflectionCaptureKernel final : public NodeKernel {
         sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
         sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
         uniform_buffer(4, probe_buffer_->handle()),
-        sampled_image(5, cubes_->view({.type = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY}), ctx.linear_sampler()),
+        sampled_image(5, cubes_.array().view({.type = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY}), ctx.linear_sampler()),
         storage_image(6, out.view())};
     dispatch_compute(ctx, "nodes/gi/reflection_capture/shaders/reflection_lookup.comp", writes, out.desc().width,
                      out.desc().height, std::as_bytes(std::span(&push_, 1)), kTileSize, constants_);
   }
 
- private:
+  // What the raster capture's shading binds: the graph's environment where the scene has one
+  // (refused when its inputs are not linked), otherwise placeholders its flags skip.
+  ForwardResources forward_resources(PassContext& ctx, ForwardSettings& settings) {
+    const bool environment = ctx.scene().has_environment;
+    const bool sh = ctx.has("in.sh");
+    if (environment && (!ctx.has("in.specular") || !ctx.has("in.brdf_lut") || (!sh && !ctx.has("in.irradiance"))))
+      throw std::runtime_error("gi.reflection_capture '" + ctx.node().id +
+                               "': capture 'raster' under an environment needs its inputs 'specular', 'brdf_lut' "
+                               "and 'sh' or 'irradiance' linked (or capture 'path_traced')");
+    settings = {(environment ? 1u : 0u) | (sh ? 2u : 0u), intensity_};
+    const VkImageView placeholder_2d = ctx.image("in.gbuffer", 0).view();
+    const VkImageView placeholder_cube = cubes_.cube_view(0);
+    if (!sh_placeholder_) {
+      sh_placeholder_.emplace(ctx.gpu(), ctx.node().id + " no SH", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      sh_placeholder_->write(std::vector<float>(4, 0.0f));
+    }
+    return {.sh = sh ? ctx.buffer("in.sh").handle() : sh_placeholder_->handle(),
+            .irradiance = ctx.has("in.irradiance") ? ctx.image("in.irradiance").view() : placeholder_cube,
+            .specular = environment ? ctx.image("in.specular").view() : placeholder_cube,
+            .brdf_lut = environment ? ctx.image("in.brdf_lut").view() : ctx.image("in.gbuffer", 1).view(),
+            .placeholder_2d = placeholder_2d,
+            .linear = ctx.linear_sampler(),
+            .nearest = ctx.nearest_sampler()};
+  }
+
+  // Draws `faces`, reading the probes' own cubes as specular map when `probe_specular`.
+  void draw_faces(PassContext& ctx, std::span<const CubeFace> faces, bool probe_specular) {
+    if (!raster_capture_) raster_capture_.emplace(ctx.gpu(), ctx.node().id);
+    ForwardSettings settings{};
+    const ForwardResources resources = forward_resources(ctx, settings);
+    std::vector<VkImageView> specular;
+    if (probe_specular)
+      for (uint32_t p = 0; p < cubes_.captured().size(); ++p) specular.push_back(cubes_.cube_view(p));
+    raster_capture_->record(ctx, faces, cubes_.captured(), resources, settings, specular);
+  }
+
+  void capture_raster_all(PassContext& ctx) {
+    const auto start = std::chrono::steady_clock::now();
+    const uint32_t count = uint32_t(cubes_.captured().size());
+    std::vector<CubeFace> faces;
+    for (uint32_t p = 0; p < count; ++p)
+      for (int f = 0; f < 6; ++f) faces.push_back({p, f});
+    std::vector<uint32_t> probes(count);
+    std::iota(probes.begin(), probes.end(), 0u);
+    for (int bounce = 0; bounce < (second_bounce_ ? 2 : 1); ++bounce) {
+      draw_faces(ctx, faces, bounce > 0);
+      cubes_.prefilter(ctx, probes, prefilter_samples_);
+    }
+    next_face_ = 0;
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr,
+                 "gi.reflection_capture '%s': captured %u probe(s), %ux%u faces, raster%s (recorded in %.1f ms)\n",
+                 ctx.node().id.c_str(), count, settings_.face_size, settings_.face_size,
+                 second_bounce_ ? ", two bounces" : "", ms);
+  }
+
+  // faces_per_frame faces from where the last frame stopped; each probe whose last face is among
+  // them has six new faces and is prefiltered.
+  void capture_raster_slice(PassContext& ctx) {
+    const uint32_t slots = uint32_t(6 * cubes_.captured().size());
+    if (slots == 0) return;
+    std::vector<CubeFace> faces;
+    std::vector<uint32_t> complete;
+    for (uint32_t k = 0; k < std::min(faces_per_frame_, slots); ++k) {
+      const uint32_t slot = (next_face_ + k) % slots;
+      faces.push_back({slot / 6, int(slot % 6)});
+      if (slot % 6 == 5) complete.push_back(slot / 6);
+    }
+    next_face_ = (next_face_ + uint32_t(faces.size())) % slots;
+    draw_faces(ctx, faces, second_bounce_);
+    cubes_.prefilter(ctx, complete, prefilter_samples_);
+  }
+
   // The plan's environment for the CPU tracer, loaded once (per environment presence).
   const PathEnvironment& environment(PassContext& ctx) {
     const bool has = ctx.scene().has_environment;
@@ -118,101 +210,63 @@ class ReflectionCaptureKernel final : public NodeKernel {
     return *environment_;
   }
 
-  void capture(PassContext& ctx, uint64_t key) {
+  void capture_traced(PassContext& ctx) {
     const SceneView& scene = ctx.scene();
-    const std::string who = "gi.reflection_capture '" + ctx.node().id + "'";
-    probe_buffer_->write(pack_reflection_probes(scene, who));
     const auto start = std::chrono::steady_clock::now();
     const PathScene traced(scene, environment(ctx));
     const size_t count = scene.reflection_probes.size();
     const uint32_t size = settings_.face_size;
-    const size_t face_texels = size_t(size) * size;
+    const FormatInfo& format = format_info(ProbeCubes::kFormat);
+    const size_t cube_bytes = 6 * size_t(size) * size * format.bytes_per_texel;
     // Every probe's six faces as rgba16f, one after the other.
-    const FormatInfo& format = format_info(kCubeFormat);
-    std::vector<std::byte> bytes(count * 6 * face_texels * format.bytes_per_texel);
-    std::vector<float> rgba(6 * face_texels * 4);
+    std::vector<std::byte> bytes(count * cube_bytes);
+    std::vector<float> rgba(6 * size_t(size) * size * 4);
     for (size_t i = 0; i < count; ++i) {
       const CubeImage cube =
           capture_reflection_cube(traced, glm::dvec3(scene.reflection_probes[i].world[3]), uint32_t(i), settings_);
       for (size_t t = 0; t < cube.texels.size(); ++t)
         for (int c = 0; c < 4; ++c) rgba[t * 4 + c] = float(cube.texels[t][c]);
-      const size_t cube_bytes = rgba.size() / 4 * format.bytes_per_texel;
       encode_texels(format, rgba, std::span(bytes).subspan(i * cube_bytes, cube_bytes));
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!staging_) staging_.emplace(ctx.gpu(), ctx.node().id + " capture staging", VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     staging_->write(std::span<const std::byte>(bytes));
-    record_cubes(ctx, count);
-    captured_key_ = key;
-    push_.probe_count = uint32_t(count);
-    std::fprintf(stderr, "%s: captured %zu probe(s), %ux%u faces, %u paths a texel, %u bounces, in %.2f s\n",
-                 who.c_str(), count, size, size, settings_.samples, settings_.bounces, seconds);
-  }
-
-  // Uploads the staged cubes, prefilters each and copies the results into the cube array.
-  void record_cubes(PassContext& ctx, size_t count) {
-    Context& gpu = ctx.gpu();
     VkCommandBuffer cmd = ctx.cmd();
-    const uint32_t size = settings_.face_size;
-    const std::string& name = ctx.node().id;
-    probes_.clear();
-    // An empty scene still binds a cube array (of one black cube).
-    cubes_.emplace(cube_image(gpu, name + " prefiltered cubes", size, mips_, uint32_t(std::max<size_t>(count, 1))));
-    image_barrier(cmd, *cubes_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kNothing,
-                  kTransferWrite);
-    if (count == 0) {
-      const VkClearColorValue zero{};
-      const VkImageSubresourceRange range = cubes_->whole_range();
-      vkCmdClearColorImage(cmd, cubes_->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-    }
-    const uint64_t cube_bytes = uint64_t(6) * size * size * format_info(kCubeFormat).bytes_per_texel;
-    for (size_t i = 0; i < count; ++i) {
-      const std::string probe = name + " probe " + std::to_string(i);
-      ProbeImages& p =
-          probes_.emplace_back(ProbeImages{cube_image(gpu, probe + " captured", size, 1),
-                                           cube_image(gpu, probe + " chain", size, uint32_t(std::bit_width(size))),
-                                           cube_image(gpu, probe + " prefiltered", size, mips_)});
-      image_barrier(cmd, p.captured, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kNothing,
-                    kTransferWrite);
+    std::vector<uint32_t> probes;
+    for (uint32_t i = 0; i < count; ++i) {
+      Image& cube = cubes_.captured()[i];
+      image_barrier(cmd, cube, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    {kComputeRead.stages, VK_ACCESS_2_NONE}, kTransferWrite);
       VkBufferImageCopy region{};
       region.bufferOffset = i * cube_bytes;
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 6};
       region.imageExtent = {size, size, 1};
-      vkCmdCopyBufferToImage(cmd, staging_->handle(), p.captured.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                             &region);
-      image_barrier(cmd, p.captured, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                    kTransferWrite, kComputeRead);
-      for (Image* image : {&p.chain, &p.prefiltered})
-        image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kNothing, kComputeWrite);
-      record_specular_prefilter(gpu, ctx.pipelines(), cmd, ctx.pass().name + " prefilter", prefilter_samples_,
-                                p.captured, &p.chain, ctx.linear_sampler(), p.prefiltered, PrefilterSampling::filtered);
-      image_barrier(cmd, p.prefiltered, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kComputeWrite,
-                    kTransferRead);
-      std::vector<VkImageCopy> copies;
-      for (uint32_t mip = 0; mip < mips_; ++mip) {
-        VkImageCopy copy{};
-        copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, 6};
-        copy.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, uint32_t(6 * i), 6};
-        const uint32_t m = std::max(1u, size >> mip);
-        copy.extent = {m, m, 1};
-        copies.push_back(copy);
-      }
-      vkCmdCopyImage(cmd, p.prefiltered.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, cubes_->handle(),
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(copies.size()), copies.data());
+      vkCmdCopyBufferToImage(cmd, staging_->handle(), cube.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+      image_barrier(cmd, cube, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, kTransferWrite,
+                    kComputeRead);
+      probes.push_back(i);
     }
-    image_barrier(cmd, *cubes_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL, kTransferWrite,
-                  kComputeRead);
+    cubes_.prefilter(ctx, probes, prefilter_samples_);
+    std::fprintf(
+        stderr,
+        "gi.reflection_capture '%s': captured %zu probe(s), %ux%u faces, %u paths a texel, %u bounces, in %.2f s\n",
+        ctx.node().id.c_str(), count, size, size, settings_.samples, settings_.bounces, seconds);
   }
 
+  const bool raster_, second_bounce_;
+  const uint32_t faces_per_frame_, prefilter_samples_;
+  const float intensity_;
   ReflectionCaptureSettings settings_;
-  uint32_t prefilter_samples_ = 0, mips_ = 1;
+  uint32_t mips_ = 1;
   std::array<uint32_t, 1> constants_{};  // shaders/reflection_lookup.comp: parallax
   Push push_{};
   uint64_t captured_key_ = 0;
-  std::optional<HostBuffer> camera_, probe_buffer_, staging_;
+  uint32_t next_face_ = 0;  // the time-sliced capture's next slot (6 probe + face)
+  std::optional<HostBuffer> camera_, probe_buffer_, staging_, sh_placeholder_;
   std::optional<PathEnvironment> environment_;
   bool environment_has_ = false;
-  std::vector<ProbeImages> probes_;
-  std::optional<Image> cubes_;
+  ProbeCubes cubes_;
+  std::optional<RasterCubeCapture> raster_capture_;
 };
 
 }  // namespace

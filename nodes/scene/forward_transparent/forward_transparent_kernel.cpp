@@ -9,6 +9,7 @@
 #include "nodes/common/node_shaders.h"
 #include "nodes/lighting/deferred/light_buffers.h"
 #include "nodes/scene/forward_transparent/blend_order.h"
+#include "nodes/scene/forward_transparent/forward_bindings.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "nodes/scene/gbuffer/material_textures.h"
 #include "runtime/exec/gpu_scene.h"
@@ -21,11 +22,6 @@
 
 namespace lg {
 namespace {
-
-struct Settings {  // shaders/forward.frag
-  uint32_t flags;  // 1: image-based light, 2: its diffuse from SH
-  float intensity;
-};
 
 class ForwardTransparentKernel final : public NodeKernel {
  public:
@@ -57,7 +53,7 @@ class ForwardTransparentKernel final : public NodeKernel {
     lights_->constants.write_value(constants);
     draws_->write(draw_constants(scene));
     // Image-based light as lighting.ibl gives it, which a scene without an environment bypasses.
-    const Settings settings{(scene.has_environment ? 1u : 0u) | (diffuse_from_sh_ ? 2u : 0u), intensity_};
+    const ForwardSettings settings{(scene.has_environment ? 1u : 0u) | (diffuse_from_sh_ ? 2u : 0u), intensity_};
     settings_->write_value(settings);
 
     VkRenderingAttachmentInfo target = cleared_attachment(color.view());
@@ -87,27 +83,19 @@ class ForwardTransparentKernel final : public NodeKernel {
   }
 
  private:
-  // What every draw binds (forward.frag's bindings but the material's textures).
-  // Where an input is unused, any resource of its kind binds: the settings' flags skip it.
+  // What every draw binds (forward.frag's bindings but the material's textures). Where an input
+  // is unused, any resource of its kind binds: the settings' flags skip it.
   std::vector<DescriptorWrite> shared_writes(PassContext& ctx) {
-    Image& depth = ctx.image("in.gbuffer", 0);
     Image& specular = ctx.image("in.specular");
-    std::vector<DescriptorWrite> writes;
-    lights_->add_constants(writes);
-    writes.push_back(storage_buffer(1, draws_->handle()));
-    writes.push_back(storage_buffer(6, ctx.has("in.sh") ? ctx.buffer("in.sh").handle() : draws_->handle()));
-    writes.push_back(sampled_image(7, (ctx.has("in.irradiance") ? ctx.image("in.irradiance") : specular).view(),
-                                   ctx.linear_sampler()));
-    writes.push_back(sampled_image(8, specular.view(), ctx.linear_sampler()));
-    writes.push_back(sampled_image(9, ctx.image("in.brdf_lut").view(), ctx.linear_sampler()));
-    // The shadow map and the local shadow atlas are not drawn here (the constants say so).
-    writes.push_back(sampled_image(10, depth.view(), ctx.nearest_sampler()));
-    writes.push_back(sampled_image(14, depth.view(), ctx.nearest_sampler()));
-    lights_->add_direct_lists(writes);
-    lights_->add_shadow_views(writes);
-    lights_->add_area_lists(writes);
-    writes.push_back(sampled_image(19, depth.view(), ctx.nearest_sampler()));
-    writes.push_back(uniform_buffer(20, settings_->handle()));
+    const ForwardResources resources{
+        .sh = ctx.has("in.sh") ? ctx.buffer("in.sh").handle() : draws_->handle(),
+        .irradiance = (ctx.has("in.irradiance") ? ctx.image("in.irradiance") : specular).view(),
+        .specular = specular.view(),
+        .brdf_lut = ctx.image("in.brdf_lut").view(),
+        .placeholder_2d = ctx.image("in.gbuffer", 0).view(),  // also forward.frag's scene depth at 19
+        .linear = ctx.linear_sampler(),
+        .nearest = ctx.nearest_sampler()};
+    std::vector<DescriptorWrite> writes = forward_writes(*lights_, draws_->handle(), settings_->handle(), resources);
     shared_write_count_ = writes.size();
     return writes;
   }
@@ -122,29 +110,12 @@ class ForwardTransparentKernel final : public NodeKernel {
     return ctx.pipelines().graphics(desc);
   }
 
-  // The G-buffer's textured vertex stage, forward.frag, premultiplied "over" blending; back
-  // faces culled unless the material is double-sided.
+  // forward_pipeline_desc() with forward.frag and premultiplied "over" blending.
   const Pipeline& draw_pipeline(PassContext& ctx, VkFormat format, bool double_sided) {
-    GraphicsPipelineDesc desc;
-    desc.name = ctx.pass().name;
-    desc.vertex_shader = node_shader("nodes/scene/gbuffer/shaders/gbuffer.vert");
-    desc.fragment_shader = node_shader("nodes/scene/forward_transparent/shaders/forward.frag");
-    for (uint32_t b = 0; b <= 21; ++b) desc.bindings.push_back({b, binding_type(b)});
-    desc.push_constant_bytes = sizeof(uint32_t);
-    use_gpu_vertices(desc, true);
-    desc.cull = double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-    desc.color_formats = {format};
+    GraphicsPipelineDesc desc = forward_pipeline_desc(
+        ctx.pass().name, node_shader("nodes/scene/forward_transparent/shaders/forward.frag"), format, double_sided);
     desc.blend = Blend::premultiplied;
     return ctx.pipelines().graphics(desc);
-  }
-
-  // forward.frag's bindings: constants 0 and settings 20 uniform; draws 1, SH 6 and the light
-  // lists (11 to 13, 15 to 18) storage buffers; the rest sampled images (the material's
-  // textures at material_texture_bindings among them).
-  static VkDescriptorType binding_type(uint32_t b) {
-    if (b == 0 || b == 20) return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    if (b == 1 || b == 6 || (b >= 11 && b <= 13) || (b >= 15 && b <= 18)) return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   }
 
   const bool diffuse_from_sh_;
