@@ -19,11 +19,18 @@ namespace {
 struct TracePush {  // nodes/lighting/ssr/shaders/trace.comp
   uint32_t max_steps, flags, frame;
   float max_roughness, thickness, max_distance, edge_fade, near_plane;
+  int32_t k;
 };
 
 struct ResolvePush {  // nodes/lighting/ssr/shaders/resolve.comp
   uint32_t flags;
-  float temporal_blend;
+  float temporal_blend, max_roughness;
+  int32_t k;
+};
+
+struct UpsamplePush {  // nodes/lighting/ssr/shaders/upsample.comp
+  int32_t k;
+  float max_roughness;
 };
 
 class SsrKernel final : public NodeKernel {
@@ -35,7 +42,8 @@ class SsrKernel final : public NodeKernel {
         max_distance_(float(param_number(node, "max_distance"))),
         edge_fade_(float(param_number(node, "edge_fade"))),
         spatial_reuse_(param_bool(node, "spatial_reuse")),
-        temporal_blend_(float(param_number(node, "temporal_blend"))) {}
+        temporal_blend_(float(param_number(node, "temporal_blend"))),
+        k_(resolution_divisor(node)) {}
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
@@ -45,6 +53,8 @@ class SsrKernel final : public NodeKernel {
       trace(ctx);
     else if (pass == "resolve")
       resolve(ctx);
+    else if (pass == "upsample")
+      upsample(ctx);
     else
       throw std::logic_error("lighting.ssr has no pass '" + pass + "'");
   }
@@ -66,11 +76,15 @@ class SsrKernel final : public NodeKernel {
     }
   }
 
+  bool full_resolution() const { return k_ == 1; }
+
+  // On the grid of resolution_scale (raw's extent), each texel the ray of its G-buffer pixel.
   void trace(PassContext& ctx) {
     Image& out = ctx.image("tmp.raw");
     if (!camera_) camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     const CameraView& camera = ctx.scene().camera;
-    camera_->write_value(camera_constants(camera, out.desc().width, out.desc().height));
+    const ImageDesc& full = ctx.image("tmp.pyramid").desc();
+    camera_->write_value(camera_constants(camera, full.width, full.height));
     // The executor clears history before the first frame: black, not last frame's light.
     const bool history = ctx.frame_index() > 0 && ctx.has("in.history");
     Image& color = ctx.image("in.color");
@@ -85,13 +99,14 @@ class SsrKernel final : public NodeKernel {
         storage_image(7, out.view())};
     const TracePush push{max_steps_,     history ? 1u : 0u, uint32_t(ctx.frame_index()),
                          max_roughness_, thickness_,        max_distance_,
-                         edge_fade_,     camera.near_plane};
+                         edge_fade_,     camera.near_plane, k_};
     dispatch_compute(ctx, "nodes/lighting/ssr/shaders/trace.comp", writes, out.desc().width, out.desc().height,
                      std::as_bytes(std::span(&push, 1)));
   }
 
+  // On the same grid: straight into the output at full resolution, else for the upsample.
   void resolve(PassContext& ctx) {
-    Image& out = ctx.image("out.reflections");
+    Image& out = ctx.image(full_resolution() ? "out.reflections" : "tmp.resolved");
     Image& raw = ctx.image("tmp.raw");
     const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history");  // not the cleared one
     const DescriptorWrite writes[] = {
@@ -103,8 +118,23 @@ class SsrKernel final : public NodeKernel {
         sampled_image(5, (ctx.has("in.reflection_history") ? ctx.image("in.reflection_history") : raw).view(),
                       ctx.linear_sampler()),
         storage_image(6, out.view())};
-    const ResolvePush push{(history ? 1u : 0u) | (spatial_reuse_ ? 2u : 0u), temporal_blend_};
+    const ResolvePush push{(history ? 1u : 0u) | (spatial_reuse_ ? 2u : 0u), temporal_blend_, max_roughness_, k_};
     dispatch_compute(ctx, "nodes/lighting/ssr/shaders/resolve.comp", writes, out.desc().width, out.desc().height,
+                     std::as_bytes(std::span(&push, 1)));
+  }
+
+  // One invocation per grid texel, each writing its block of k x k pixels; nothing at full
+  // resolution, where the resolve wrote the output itself.
+  void upsample(PassContext& ctx) {
+    if (full_resolution()) return;
+    Image& low = ctx.image("tmp.resolved");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      sampled_image(3, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
+                                      storage_image(4, ctx.image("out.reflections").view())};
+    const UpsamplePush push{k_, max_roughness_};
+    dispatch_compute(ctx, "nodes/lighting/ssr/shaders/upsample.comp", writes, low.desc().width, low.desc().height,
                      std::as_bytes(std::span(&push, 1)));
   }
 
@@ -112,6 +142,7 @@ class SsrKernel final : public NodeKernel {
   float max_roughness_, thickness_, max_distance_, edge_fade_;
   bool spatial_reuse_;
   float temporal_blend_;
+  int32_t k_;  // 1 / resolution_scale: the G-buffer's resolution over the trace's grid
   std::optional<HostBuffer> camera_;
 };
 

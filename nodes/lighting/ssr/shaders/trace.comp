@@ -11,10 +11,12 @@
 // grazing ray's own floor, the far side of a box) do not stop it. The hit reflects the lit image
 // at its pixel: last frame's final image where the motion vectors find it, else this frame's
 // `color`. Confidence: 0 for a miss (off screen, out of steps or length, thickness miss),
-// otherwise the screen-edge fade times the roughness fade.
+// otherwise the screen-edge fade times the roughness fade. At resolution_scale 1/k one invocation
+// traces the ray of G-buffer pixel k * i for texel i of the smaller `reflections` grid.
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
+#include "nodes/common/shaders/joint_upsample.glsl"
 #include "nodes/env/common/shaders/ggx_sampling.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -26,7 +28,7 @@ layout(binding = 3) uniform sampler2D material_tex;  // r: perceptual roughness
 layout(binding = 4) uniform sampler2D motion_tex;    // uv(now) - uv(last frame)
 layout(binding = 5) uniform sampler2D color_tex;
 layout(binding = 6) uniform sampler2D history_tex;  // bilinear; bound to color_tex when absent
-layout(binding = 7, rgba16f) uniform writeonly image2D reflections;
+layout(binding = 7, rgba16f) uniform writeonly image2D reflections;  // the grid of resolution_scale
 layout(push_constant) uniform Push {
   uint max_steps;
   uint flags;  // 1: history usable
@@ -36,6 +38,7 @@ layout(push_constant) uniform Push {
   float max_distance;  // m
   float edge_fade;     // fraction of the image
   float near_plane;    // m: linear depth = near_plane / device depth
+  int k;               // 1 / resolution_scale
 };
 
 const float kNudge = 0.01;  // pixels past a cell's border, so the next lookup lands in the next cell
@@ -127,14 +130,15 @@ vec3 hit_radiance(ivec2 hit) {
 }
 
 void main() {
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = imageSize(reflections);
-  if (any(greaterThanEqual(texel, size))) return;
+  ivec2 low = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(low, imageSize(reflections)))) return;
+  ivec2 size = textureSize(hiz, 0);
+  ivec2 texel = upsample_source_texel(low, k, size);
   float depth = texelFetch(hiz, texel, 0).r;  // NaN already made 0 by the pyramid
   float roughness = texelFetch(material_tex, texel, 0).r;
   float roughness_fade = clamp((max_roughness - roughness) / (0.25 * max_roughness), 0.0, 1.0);
   if (depth <= 0.0 || !(roughness_fade > 0.0)) {  // the sky, or too rough
-    imageStore(reflections, texel, vec4(0.0));
+    imageStore(reflections, low, vec4(0.0));
     return;
   }
   vec3 p = world_position(camera, texel, depth);
@@ -162,5 +166,5 @@ void main() {
     if (hit.x >= 0)
       result = vec4(hit_radiance(hit), edge_confidence((vec2(hit) + 0.5) / vec2(size)) * roughness_fade);
   }
-  imageStore(reflections, texel, result);
+  imageStore(reflections, low, result);
 }

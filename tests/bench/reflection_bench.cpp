@@ -1,0 +1,275 @@
+// lumagraph-bench-reflections: issue 17's reflections, error against time, on lavapipe. On the
+// reflection room and the gallery with its floor polished (tests/lighting/reflection_worlds.h),
+// each configuration of examples/reflections.json (the environment only, probes without and with
+// parallax correction, SSR alone, SSR with the probes' fallback without and with it; quality knobs
+// swept: the probes' face_size, SSR's max_steps and resolution_scale) gives
+// - its error: the specular term against the path tracer's specular AOV over the floor's and the
+//   ball's metal pixels (specular_error.h), at --size after --frames frames (SSR accumulates);
+// - its time: the GPU time of the reflection passes (probes/*, ssr/*) at --time-size, median and
+//   fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
+//   work is CPU work) less the environment-only configuration's, which a loaded machine disturbs
+//   far less than the timestamps; and the first frame's extra host time over the later ones'
+//   median (the probes' capture and prefilter, whichever way the node captures).
+// Configurations are graph links and params only. The references are cached under the build
+// folder, keyed by world, size, paths and the files they come from. Writes reflection_points.csv
+// and reflection_references.csv; scripts/run-reflection-benchmarks plots them.
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "nodes/gi/path_tracer/reference_file.h"
+#include "tests/bench/bench_flags.h"
+#include "tests/lighting/reflection_render.h"
+#include "tests/lighting/reflection_worlds.h"
+#include "tests/lighting/specular_error.h"
+
+namespace lg::bench {
+namespace {
+
+using test::ReflectionConfig;
+using test::ReflectionSource;
+
+struct Options {
+  std::string results_dir = "bench-results";
+  std::string cache_dir = std::string(LUMAGRAPH_BINARY_DIR) + "/reflection-reference-cache";
+  uint32_t width = 320, height = 180;             // where the error is measured
+  uint32_t time_width = 1280, time_height = 720;  // where the passes are timed
+  int frames = 8, time_frames = 4;
+  uint32_t paths = 1024;
+  std::vector<double> faces{16, 32, 64, 128}, steps{8, 16, 32, 64, 128}, scales{1};
+  std::string worlds = "room,gallery";
+  std::string only;  // measure only the configurations whose label contains this
+  std::string probe_params;
+};
+
+struct Point {
+  std::string world;
+  ReflectionConfig config;
+  double median_ms = 0, min_ms = 0, frame_ms = 0, first_extra_ms = 0;
+  double cpu_ms = 0;  // median CPU time of a frame after the first, less the environment-only one's
+  test::SpecularError all, floor, ball;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// FNV-1a of the text.
+uint64_t text_hash(const std::string& text) {
+  uint64_t hash = 0xcbf29ce484222325ull;
+  for (unsigned char c : text) hash = (hash ^ c) * 0x100000001b3ull;
+  return hash;
+}
+
+// The reference of `w`, from the cache when a file there was traced for the same run: the world
+// and graph files (the environment is the graph's), the world's edits (its name), size and paths.
+ReferenceImage cached_reference(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
+                                const PathEnvironment& environment) {
+  const std::string source = LUMAGRAPH_SOURCE_DIR;
+  const uint64_t hash = text_hash(file_text(source + "/examples/worlds/" + world_file) +
+                                  file_text(source + "/examples/reflections.json"));
+  char run[256];
+  std::snprintf(run, sizeof run, "world=%s files=%016" PRIx64 " size=%ux%u spp=%u", w.name.c_str(), hash, o.width,
+                o.height, o.paths);
+  char name[256];
+  std::snprintf(name, sizeof name, "/%s-%ux%u-%u-%016" PRIx64 ".part", w.name.c_str(), o.width, o.height, o.paths,
+                hash);
+  const std::string path = o.cache_dir + name;
+  if (std::filesystem::exists(path)) {
+    ReferencePart part = read_reference_part(path);
+    if (part.run == run) {
+      std::printf("%s reference: cached in %s\n", w.name.c_str(), path.c_str());
+      return std::move(part.image);
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  ReferencePart part{run, 0, 1, test::trace_specular_reference(w.world, o.width, o.height, o.paths, environment)};
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  std::filesystem::create_directories(o.cache_dir);
+  write_reference_part(path, part);
+  std::printf("%s reference: traced in %.0f s, saved to %s\n", w.name.c_str(), seconds.count(), path.c_str());
+  return std::move(part.image);
+}
+
+void print_error(const char* what, const test::SpecularError& e) {
+  std::printf("  %-6s %6zu pixels, reference noise %.4f of its mean\n", what, e.pixels, e.noise);
+}
+
+class Measurer {
+ public:
+  Measurer(const Options& o, const test::ReflectionWorld& w, const ReferenceImage& reference)
+      : o_(o), w_(w), reference_(reference) {}
+
+  void measure(ReflectionConfig config) {
+    config.probe_params = o_.probe_params;
+    const std::string label = test::config_label(config);
+    if (label.find(o_.only) == std::string::npos) return;
+    const Graph graph = test::reflection_graph(config);
+    const test::ReflectionFrame e = test::render_reflections(w_.world, o_.width, o_.height, graph, o_.frames, false);
+    const test::ReflectionFrame t =
+        test::render_reflections(w_.world, o_.time_width, o_.time_height, graph, o_.time_frames, false);
+    Point p;
+    p.world = w_.name;
+    p.config = config;
+    const std::vector<double> ms(t.reflection_gpu_ms.begin() + 1, t.reflection_gpu_ms.end());
+    p.median_ms = median(ms);
+    p.min_ms = *std::min_element(ms.begin(), ms.end());
+    p.frame_ms = median({t.frame_gpu_ms.begin() + 1, t.frame_gpu_ms.end()});
+    p.first_extra_ms = t.frame_wall_ms[0] - median({t.frame_wall_ms.begin() + 1, t.frame_wall_ms.end()});
+    const double cpu = median({t.frame_cpu_ms.begin() + 1, t.frame_cpu_ms.end()});
+    if (config.source == ReflectionSource::environment) environment_cpu_ms_ = cpu;
+    p.cpu_ms = cpu - environment_cpu_ms_;
+    p.all = error(e, {});
+    p.floor = error(e, {w_.floor_roughness});
+    p.ball = error(e, {w_.ball_roughness});
+    std::printf("%-16s %-34s %8.2f %8.2f %8.1f %9.1f %9.0f   %7.4f %7.4f %7.4f\n", p.world.c_str(), label.c_str(),
+                p.median_ms, p.min_ms, p.cpu_ms, p.frame_ms, p.first_extra_ms, p.all.relative, p.floor.relative,
+                p.ball.relative);
+    std::fflush(stdout);
+    points.push_back(std::move(p));
+  }
+
+  std::vector<Point> points;
+
+ private:
+  test::SpecularError error(const test::ReflectionFrame& f, test::SurfaceMask mask) const {
+    return test::specular_error(reference_, f.lit, f.direct, f.material, mask);
+  }
+
+  const Options& o_;
+  const test::ReflectionWorld& w_;
+  const ReferenceImage& reference_;
+  double environment_cpu_ms_ = 0;  // measured first
+};
+
+void measure_world(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
+                   std::vector<Point>& points, std::ofstream& references) {
+  // One small frame for the plan's environment, which the reference is lit by.
+  const test::ReflectionFrame base = test::render_reflections(
+      w.world, o.width, o.height, test::reflection_graph({.source = ReflectionSource::environment}), 1, false);
+  const ReferenceImage reference = cached_reference(o, w, world_file, base.environment);
+  const auto noise = [&](float roughness) {
+    return test::specular_error(reference, base.lit, base.direct, base.material, {roughness});
+  };
+  print_error("metal", noise(-1.0f));
+  print_error("floor", noise(w.floor_roughness));
+  print_error("ball", noise(w.ball_roughness));
+  references << w.name << ',' << o.width << ',' << o.height << ',' << o.paths << ',' << noise(-1.0f).noise << ','
+             << noise(w.floor_roughness).noise << ',' << noise(w.ball_roughness).noise << ','
+             << noise(w.floor_roughness).pixels << ',' << noise(w.ball_roughness).pixels << '\n';
+  std::printf("\n%-16s %-34s %8s %8s %8s %9s %9s   %-23s\n", "", "", "median", "min", "CPU", "frame", "1st frame",
+              "error / reference mean");
+  std::printf("%-16s %-34s %8s %8s %8s %9s %9s   %7s %7s %7s\n", "world", "configuration", "GPU ms", "GPU ms",
+              "extra ms", "GPU ms", "extra ms", "metal", "floor", "ball");
+
+  Measurer m(o, w, reference);
+  m.measure({.source = ReflectionSource::environment});
+  for (const bool parallax : {false, true})
+    for (const double face : o.faces)
+      m.measure({.source = ReflectionSource::probes, .parallax = parallax, .face_size = int(face)});
+  for (const double scale : o.scales)
+    for (const double steps : o.steps)
+      m.measure({.source = ReflectionSource::ssr, .max_steps = int(steps), .ssr_scale = scale});
+  for (const double scale : o.scales)
+    for (const bool parallax : {false, true})
+      for (const double face : o.faces)
+        m.measure({.source = ReflectionSource::ssr_with_probes,
+                   .parallax = parallax,
+                   .face_size = int(face),
+                   .ssr_scale = scale});
+  std::printf("\n");
+  points.insert(points.end(), m.points.begin(), m.points.end());
+}
+
+void write_points(const Options& o, const std::vector<Point>& points) {
+  std::ofstream csv(o.results_dir + "/reflection_points.csv");
+  csv << "world,source,parallax,face_size,max_steps,ssr_scale,median_ms,min_ms,frame_ms,first_frame_extra_ms,"
+         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms\n";
+  for (const Point& p : points) {
+    const ReflectionConfig& c = p.config;
+    csv << p.world << ',' << test::reflection_source_name(c.source) << ',' << c.parallax << ',' << c.face_size << ','
+        << c.max_steps << ',' << (c.ssr_scale > 0 ? c.ssr_scale : 1.0) << ',' << p.median_ms << ',' << p.min_ms << ','
+        << p.frame_ms << ',' << p.first_extra_ms << ',' << p.all.relative << ',' << p.floor.relative << ','
+        << p.ball.relative << ',' << p.floor.pixels << ',' << p.ball.pixels << ',' << p.all.noise << ','
+        << test::config_label(c) << ',' << p.cpu_ms << '\n';
+  }
+}
+
+const char* const usage =
+    "usage: lumagraph-bench-reflections [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--time-size WxH]\n"
+    "                                   [--frames N] [--time-frames N] [--paths N] [--faces A,B] [--steps A,B]\n"
+    "                                   [--scales A,B] [--worlds room,gallery] [--only TEXT] [--probe-params JSON]\n"
+    "  --results-dir DIR   where the CSV files go (default bench-results)\n"
+    "  --cache-dir DIR     where the references are kept (default BUILD/reflection-reference-cache)\n"
+    "  --size WxH          size the error is measured at (default 320x180)\n"
+    "  --time-size WxH     size the passes are timed at (default 1280x720)\n"
+    "  --frames N          frames rendered before the error is taken (default 8; SSR accumulates)\n"
+    "  --time-frames N     frames timed, the first not counted (default 4)\n"
+    "  --paths N           reference paths per pixel (default 1024)\n"
+    "  --faces LIST        gi.reflection_capture face sizes (default 16,32,64,128)\n"
+    "  --steps LIST        lighting.ssr max_steps (default 8,16,32,64,128)\n"
+    "  --scales LIST       lighting.ssr resolution_scale values (default 1)\n"
+    "  --worlds LIST       room, gallery or both (default)\n"
+    "  --only TEXT         only configurations whose label (\"ssr+probes face=64\") contains TEXT\n"
+    "  --probe-params JSON more gi.reflection_capture params as JSON members, e.g. '\"samples\": 64'\n";
+
+int run(int argc, char** argv) {
+  Options o;
+  BenchFlags flags(usage);
+  flags.text("--results-dir", o.results_dir);
+  flags.text("--cache-dir", o.cache_dir);
+  flags.size("--size", o.width, o.height);
+  flags.size("--time-size", o.time_width, o.time_height);
+  flags.count("--frames", o.frames);
+  flags.count("--time-frames", o.time_frames, 2);
+  flags.count("--paths", o.paths);
+  flags.numbers("--faces", o.faces);
+  flags.numbers("--steps", o.steps);
+  flags.numbers("--scales", o.scales);
+  flags.text("--worlds", o.worlds);
+  flags.text("--only", o.only);
+  flags.text("--probe-params", o.probe_params);
+  if (const auto status = flags.parse(argc, argv)) return *status;
+  std::filesystem::create_directories(o.results_dir);
+  std::ofstream references(o.results_dir + "/reflection_references.csv");
+  references << "world,width,height,paths,noise_metal,noise_floor,noise_ball,pixels_floor,pixels_ball\n";
+  std::vector<Point> points;
+  std::printf(
+      "Specular term against the path tracer's specular AOV (%ux%u, %u paths a pixel, %d frames), reflection "
+      "passes timed at %ux%u. Errors: mean |error| / mean reference over the metal pixels, the floor's, the "
+      "ball's.\n",
+      o.width, o.height, o.paths, o.frames, o.time_width, o.time_height);
+  if (o.worlds.find("room") != std::string::npos)
+    measure_world(o, test::reflection_room(), "reflection-room.json", points, references);
+  if (o.worlds.find("gallery") != std::string::npos)
+    measure_world(o, test::polished_gallery(), "gallery.json", points, references);
+  write_points(o, points);
+  return 0;
+}
+
+}  // namespace
+}  // namespace lg::bench
+
+int main(int argc, char** argv) {
+  try {
+    return lg::bench::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lumagraph-bench-reflections: %s\n", e.what());
+    return 1;
+  }
+}
