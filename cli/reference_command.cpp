@@ -47,8 +47,6 @@ options:
 exit status: 0 written, 1 usage error, 2 invalid scene, graph or part files, 3 writing failed
 )";
 
-constexpr uint32_t kMaxChunks = 65536;
-
 ArgSpec reference_arg_spec() {
   return {{"--help"},
           {"--graph", "--env", "--spp", "--bounces", "--aov", "--size", "--seed", "--chunk", "--out", "--asset-root"},
@@ -76,7 +74,7 @@ std::optional<std::string> read_reference_options(const Args& args, ReferenceArg
   FrameSize frame{1280, 720};
   if (auto bad = read_frame_size(args, frame)) return bad;
   o.trace.width = frame.width, o.trace.height = frame.height;
-  if (auto bad = read_chunk(args, kMaxChunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
+  if (auto bad = read_chunk(args, max_reference_chunks, o.chunk_index, o.chunk_count, o.chunked)) return bad;
   if (o.chunked) chunk_rows(o.trace.height, o.chunk_index, o.chunk_count, o.trace.row_begin, o.trace.row_end);
   return std::nullopt;
 }

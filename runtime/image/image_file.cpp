@@ -8,6 +8,8 @@
 #include <limits>
 #include <memory>
 
+#include "runtime/image/exr_header_check.h"
+
 namespace lg {
 namespace {
 
@@ -31,6 +33,7 @@ struct ImageReader::Input {
 ImageReader::ImageReader(const std::string& path) : path_(path), input_(std::make_unique<Input>()) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw ImageFileError(path + ": error: no such image file");
+  check_exr_header(path);
   input_->image = OIIO::ImageInput::open(path);
   if (!input_->image) throw ImageFileError(path + ": error: cannot read the image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = input_->image->spec();

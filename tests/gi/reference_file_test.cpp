@@ -104,6 +104,10 @@ TEST_F(ReferenceFile, ReadingABrokenPartNamesTheFileAndTheProblem) {
             ": error: bad header line (expected 'chunk I N width W height H rows BEGIN END non_finite K')");
   EXPECT_EQ(message("lumagraph-reference/1\nchunk 0 1 width 5 height 7 rows 0 9 non_finite 0\nrun\n"),
             ": error: bad header: size, rows or chunk out of range");
+  // A fuzzer's finding (fuzz/regressions/reference_part/): sscanf reads "-2" as 4294967294 chunks,
+  // for which merging made a table of 32 GB.
+  EXPECT_EQ(message("lumagraph-reference/1\nchunk 1 -2 width 3 height 4 rows 0 1 non_finite 0\nrun\n"),
+            ": error: bad header: 4294967294 chunks, more than a run can have (65536)");
   EXPECT_EQ(message("lumagraph-reference/1\nchunk 0 1 width 5 height 7 rows 0 7 non_finite 0\nrun\n1234"),
             ": error: truncated: the pixels end early");
   const std::string whole = path("whole");

@@ -17,6 +17,17 @@ glm::dvec3 equirect_direction(const glm::dvec2& uv) {
   return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
 }
 
+uint64_t sanitize_equirect(std::span<float> rgba, double intensity) {
+  uint64_t non_finite = 0;
+  for (size_t t = 0; t + 3 < rgba.size(); t += 4) {
+    float* texel = &rgba[t];
+    const bool finite = std::isfinite(texel[0]) && std::isfinite(texel[1]) && std::isfinite(texel[2]);
+    for (int c = 0; c < 3; ++c) texel[c] = finite ? float(texel[c] * intensity) : 0.0f;
+    non_finite += finite ? 0 : 1;
+  }
+  return non_finite;
+}
+
 glm::dvec4 sample_equirect(const Equirect& image, const glm::dvec2& uv) {
   const double x = uv.x * image.width - 0.5, y = std::clamp(uv.y * image.height - 0.5, 0.0, image.height - 1.0);
   const int64_t x0 = int64_t(std::floor(x)), y0 = int64_t(std::floor(y));

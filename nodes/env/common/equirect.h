@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <span>
 #include <vector>
 
 #include "nodes/env/common/cube_map.h"
@@ -21,6 +22,10 @@ struct Equirect {
 
 glm::dvec2 equirect_uv(const glm::dvec3& direction);  // in [0, 1]^2
 glm::dvec3 equirect_direction(const glm::dvec2& uv);
+
+// Scales the RGB of `rgba` by `intensity` and replaces non-finite texels by 0, in place, as
+// env.load and the CPU tracers do with an env file; returns how many texels held NaN or Inf.
+uint64_t sanitize_equirect(std::span<float> rgba, double intensity);
 
 // Bilinear, wrapping around in u and clamped at the poles.
 glm::dvec4 sample_equirect(const Equirect& image, const glm::dvec2& uv);

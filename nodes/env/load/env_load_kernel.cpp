@@ -8,6 +8,7 @@
 
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/env/common/equirect.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/vk_struct.h"
@@ -72,17 +73,6 @@ class EnvLoadKernel final : public NodeKernel {
 };
 
 }  // namespace
-
-uint64_t sanitize_equirect(std::span<float> rgba, double intensity) {
-  uint64_t non_finite = 0;
-  for (size_t t = 0; t + 3 < rgba.size(); t += 4) {
-    float* texel = &rgba[t];
-    const bool finite = std::isfinite(texel[0]) && std::isfinite(texel[1]) && std::isfinite(texel[2]);
-    for (int c = 0; c < 3; ++c) texel[c] = finite ? float(texel[c] * intensity) : 0.0f;
-    non_finite += finite ? 0 : 1;
-  }
-  return non_finite;
-}
 
 uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size) {
   // A face spans a quarter of the width; a cube texel about width / (4 face) equirect texels.

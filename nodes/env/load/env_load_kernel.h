@@ -20,10 +20,6 @@
 
 namespace lg {
 
-// Scales the RGB of `rgba` by `intensity` and replaces non-finite texels by 0, in place;
-// returns how many texels held NaN or Inf.
-uint64_t sanitize_equirect(std::span<float> rgba, double intensity);
-
 // Samples per cube texel along each axis: enough to cover the equirect texels it spans.
 uint32_t equirect_supersample(uint32_t equirect_width, uint32_t face_size);
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "nodes/common/node_params.h"
-#include "nodes/env/load/env_load_kernel.h"
+#include "nodes/env/common/equirect.h"
 #include "runtime/image/image_file.h"
 
 namespace lg {

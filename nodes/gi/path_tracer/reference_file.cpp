@@ -70,6 +70,10 @@ ReferencePart read_reference_part(const std::string& path) {
   if (im.width == 0 || im.width > kMaxSide || im.height == 0 || im.height > kMaxSide || im.row_begin > im.row_end ||
       im.row_end > im.height || part.chunk_count == 0 || part.chunk_index >= part.chunk_count)
     throw error(path, "bad header: size, rows or chunk out of range");
+  // Merging keeps a slot per chunk: a count no run can have would be gigabytes of them.
+  if (part.chunk_count > max_reference_chunks)
+    throw error(path, "bad header: " + std::to_string(part.chunk_count) + " chunks, more than a run can have (" +
+                          std::to_string(max_reference_chunks) + ")");
   for (auto* planes : {&part.image.mean, &part.image.standard_error})
     for (std::vector<glm::vec3>& plane : *planes) {
       plane.resize(part.image.pixel_count());

@@ -16,6 +16,9 @@
 
 namespace lg {
 
+// The most chunks a run splits into (`lumagraph reference --chunk I/N`); part files claiming more are refused.
+inline constexpr uint32_t max_reference_chunks = 65536;
+
 class ReferenceFileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

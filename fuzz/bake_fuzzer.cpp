@@ -1,0 +1,15 @@
+// libFuzzer harness: an occlusion bake file (.lgbake, docs/bake-format.md) through
+// read_bake_file(), and a whole one through merge_bake_parts() as `lumagraph bake --merge` and
+// the readers of baked occlusion do. A bad file must be a BakeFileError naming it.
+#include "fuzz/fuzz_input.h"
+#include "nodes/occlusion/bake/bake_file.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const lg::fuzz::InputFile file("input.lgbake", lg::fuzz::as_text(data, size));
+  try {
+    const lg::BakeFile bake = lg::read_bake_file(file.path());
+    (void)lg::merge_bake_parts({bake}, {file.path()});
+  } catch (const lg::BakeFileError&) {
+  }
+  return 0;
+}

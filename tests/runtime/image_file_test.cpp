@@ -1,0 +1,75 @@
+// Image files (runtime/image): what the EXR header check refuses before OpenEXR reads a header
+// that declares more bytes than the file holds, and that real files still load.
+#include "runtime/image/image_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace lg {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+struct TempFolder {
+  fs::path path = fs::temp_directory_path() / ("lumagraph-image-file-test-" + std::to_string(::getpid()));
+  TempFolder() { fs::create_directories(path); }
+  ~TempFolder() { fs::remove_all(path); }
+  std::string write(const std::string& name, const std::string& bytes) const {
+    std::ofstream((path / name).string(), std::ios::binary) << bytes;
+    return (path / name).string();
+  }
+};
+
+std::string open_error(const std::string& path) {
+  try {
+    ImageReader reader(path);
+  } catch (const ImageFileError& e) {
+    return e.what();
+  }
+  return "opened";
+}
+
+// The fuzzer's finding: a 200-byte file whose 'capDate' string claims 1.09 GB. OpenEXR alone
+// took 10 s and 1.3 GB to refuse it, with a message that did not say why.
+TEST(ImageFile, ExrAttributeLongerThanTheFileIsRefusedByName) {
+  const std::string path =
+      std::string(LUMAGRAPH_SOURCE_DIR) + "/fuzz/regressions/env_image/exr-string-attribute-claims-1gb";
+  const std::string message = open_error(path);
+  EXPECT_EQ(message.rfind(path + ": error: the EXR header's attribute 'capDate' (string) declares 1095909155 bytes", 0),
+            0u)
+      << message;
+}
+
+TEST(ImageFile, ExrWithAnAttributeSizeMadeTooLargeIsRefusedAndTheTrueOneLoads) {
+  TempFolder folder;
+  const std::vector<float> rgba(4 * 3 * 4, 0.5f);
+  const std::string good = (folder.path / "good.exr").string();
+  save_image(good, 4, 3, rgba, {.compress = false, .full_float = true});
+  const ImageData image = load_image(good);
+  EXPECT_EQ(image.width, 4u);
+  EXPECT_EQ(image.rgba[5], 0.5f);
+
+  // The first attribute's size follows its name and type after the 8-byte magic and version.
+  std::string bytes = read_bytes(good);
+  const size_t name_end = bytes.find('\0', 8), type_end = bytes.find('\0', name_end + 1);
+  const std::string name = bytes.substr(8, name_end - 8);
+  bytes[type_end + 4] = '\x7f';  // the size's high byte: about 2 GB
+  const std::string bad = folder.write("bad.exr", bytes);
+  const std::string message = open_error(bad);
+  EXPECT_NE(message.find("attribute '" + name + "'"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace lg
