@@ -118,8 +118,10 @@ FrameStats Executor::run_frame(const SceneView& scene, GpuScene& gpu_scene) {
     submitter_.run([&](VkCommandBuffer cmd) { record_frame(cmd, scene, gpu_scene, skip_cached); });
   } catch (...) {
     if (frames_ > 0) swap_history();  // back: the failed frame does not count
-    // Nothing of the failed frame ran, yet its kernels may believe their uploads and layout
-    // changes did: they start afresh, and the static passes run again.
+    // Its kernels may believe their uploads and layout changes ran: they start afresh, and the
+    // static passes run again. A frame that timed out may still be running on the device, so
+    // the old kernels' resources go only once it is idle (or lost).
+    vkDeviceWaitIdle(context_.device());
     make_kernels();
     invalidate_cache();
     throw;
