@@ -506,7 +506,14 @@ class GltfImporter {
 };
 
 // tinygltf reads the files a glTF file refers to through this (contained_path.h says why).
+// Only regular files: a folder (a uri that is empty once its NUL bytes end it, found by fuzzing)
+// has tinygltf size a buffer of 2^63 bytes, which throws std::bad_alloc past every catch.
 bool contained_read(std::vector<unsigned char>* out, std::string* error, const std::string& path, void* folder) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path.c_str(), ec)) {
+    if (error) *error += "'" + std::string(path.c_str()) + "' is not a file";
+    return false;
+  }
   if (inside_folder(path, *static_cast<std::string*>(folder)))
     return tinygltf::ReadWholeFile(out, error, path, nullptr);
   if (error) *error += "'" + path + "' is outside the folder of the glTF file";
@@ -538,6 +545,9 @@ std::vector<Entity> import_gltf(World& world, const std::string& path, Entity pa
                                            : loader.LoadASCIIFromFile(&model, &error, &warning, path);
   if (!ok) {
     while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+    // A uri's NUL bytes reach the message inside paths; written out, so the message goes on.
+    for (size_t at = error.find('\0'); at != std::string::npos; at = error.find('\0', at))
+      error.replace(at, 1, "\\u0000");
     throw SceneError(path, "not a valid glTF file: " + (error.empty() ? std::string("unknown error") : error));
   }
   try {

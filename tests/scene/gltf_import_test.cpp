@@ -196,6 +196,11 @@ INSTANTIATE_TEST_SUITE_P(
                    R"("uri": "missing.bin", "x": ")", "missing.bin"},
         BrokenGltf{"buffer_outside_folder", R"("uri": "data:application/octet-stream;base64,)",
                    R"("uri": "../CMakeCache.txt", "x": ")", "is outside the folder of the glTF file"},
+        BrokenGltf{"buffer_is_a_folder", R"("uri": "data:application/octet-stream;base64,)",
+                   R"("uri": ".", "x": ")", "is not a file"},
+        // Found by the gltf fuzzer: the NUL ends the path at the folder.
+        BrokenGltf{"buffer_uri_starts_with_nul", R"("uri": "data:application/octet-stream;base64,)",
+                   R"("uri": "\u0000.bin", "x": ")", "is not a file"},
         BrokenGltf{"missing_image", R"("uri": "data:image/png;base64,)", R"("uri": "missing.png", "x": ")",
                    "missing.png"},
         BrokenGltf{"corrupt_image", R"("uri": "data:image/png;base64,)",
