@@ -88,8 +88,6 @@ class GtaoKernel final : public NodeKernel {
     // falloff, the more so the thinner surfaces are assumed against the radius.
     const float stretch = 1.0f + 0.5f * std::min(1.0f, radius_ / (4.0f * std::max(thickness_, 1e-4f)));
     c.search = glm::vec4(radius_, 0.5f * h * std::abs(p[1][1]), stretch, 0.25f * std::max(w, h));
-    c.counts[0] = quality_.slices;
-    c.counts[1] = quality_.steps;
     c.counts[2] = uint32_t(ctx.frame_index());
     // The executor clears history before the first frame: that would read as full occlusion.
     c.counts[3] = ctx.frame_index() > 0 && ctx.has("in.history") ? 1u : 0u;
@@ -125,8 +123,9 @@ class GtaoKernel final : public NodeKernel {
                                       storage_image(3, noisy.view()),
                                       storage_image(4, ctx.image("tmp.edges").view()),
                                       storage_image(5, bent.view())};
+    const uint32_t quality[] = {quality_.slices, quality_.steps};  // horizons.comp's specialization
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width,
-                     noisy.desc().height);
+                     noisy.desc().height, {}, kTileSize, quality);
   }
 
   // On the same grid; the history it blends is the full-resolution output of the last frame.

@@ -12,7 +12,7 @@ layout(std140, binding = 0) uniform Constants {
   vec4 unproject;        // 1 / P[0][0], 1 / P[1][1], P[2][0], P[2][1]: ndc -> view x, y per unit depth
   vec4 viewport;         // the G-buffer's width, height, 1 / width, 1 / height
   vec4 search;           // radius (m), pixels per metre at unit depth, z stretch of the falloff, max radius (px)
-  uvec4 counts;          // slices, steps per side, frame index, history usable (0 or 1)
+  uvec4 counts;          // unused, unused, frame index, history usable (0 or 1)
   vec4 blend;            // temporal weight of the history, near plane, k = 1 / resolution_scale, unused
 };
 

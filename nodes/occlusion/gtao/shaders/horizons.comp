@@ -10,6 +10,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+// The quality, fixed when the pipeline is made: loops of known length unroll. With the counts in
+// the uniform buffer, lavapipe (Mesa 22.3) kept about 0.5 MiB of host memory per dispatch at
+// 64x36 until the pipeline was destroyed (docs/reliability.md, the soak).
+layout(constant_id = 0) const uint slices = 2u;
+layout(constant_id = 1) const uint steps = 2u;  // per side of each slice
+
 layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
 layout(binding = 2) uniform sampler2D gbuffer_normal;
 // On the horizon grid (grid_pixel): the G-buffer's extent at resolution_scale 1, else 1/k of it.
@@ -109,7 +115,6 @@ void main() {
   vec3 world_n = decode_normal(texelFetch(gbuffer_normal, pixel, 0).rgb);
   vec3 normal = normalize(mat3(view_from_world) * world_n);
 
-  uint slices = counts.x, steps = counts.y;
   float radius = search.x;
   float screen_radius = min(radius * search.y / z, search.w);  // pixels
   // Samples fade out between 62% and 100% of the radius: weight (radius - d) / (radius - from),
