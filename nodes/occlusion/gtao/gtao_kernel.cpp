@@ -124,8 +124,8 @@ class GtaoKernel final : public NodeKernel {
                                       storage_image(4, ctx.image("tmp.edges").view()),
                                       storage_image(5, bent.view())};
     const uint32_t quality[] = {quality_.slices, quality_.steps};  // horizons.comp's specialization
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width,
-                     noisy.desc().height, {}, kTileSize, quality);
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height,
+                     {}, kTileSize, quality);
   }
 
   // On the same grid; the history it blends is the full-resolution output of the last frame.
