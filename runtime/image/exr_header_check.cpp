@@ -4,7 +4,9 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "runtime/image/image_file.h"
@@ -15,15 +17,45 @@ namespace {
 constexpr std::array<unsigned char, 4> kMagic{0x76, 0x2f, 0x31, 0x01};
 constexpr size_t kMaxName = 255;  // with the long-names flag; 31 without
 
-// A NUL-terminated name or type; nullopt when the file ends or it is longer than any EXR allows.
-std::optional<std::string> read_name(std::ifstream& in) {
+// The value sizes of the standard attribute types whose size is fixed. OpenEXR reads these, and
+// channel lists, by their content and not by the size the header declares, so a wrong size
+// made it read the next attribute from another place than this walk did.
+int32_t fixed_size(const std::string& type) {
+  static const std::map<std::string, int32_t> sizes{{"box2i", 16},      {"box2f", 16},   {"chromaticities", 32},
+                                                    {"compression", 1}, {"double", 8},   {"envmap", 1},
+                                                    {"float", 4},       {"int", 4},      {"keycode", 28},
+                                                    {"lineOrder", 1},   {"m33f", 36},    {"m33d", 72},
+                                                    {"m44f", 64},       {"m44d", 128},   {"rational", 8},
+                                                    {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+                                                    {"v2f", 8},         {"v2d", 16},     {"v3i", 12},
+                                                    {"v3f", 12},        {"v3d", 24},     {"deepImageState", 1}};
+  const auto it = sizes.find(type);
+  return it == sizes.end() ? -1 : it->second;
+}
+
+// A NUL-terminated name or type; nullopt when `in` runs out.
+// Throws past kMaxName, which no EXR allows.
+std::optional<std::string> read_name(std::istream& in, const std::string& path) {
   std::string name;
   for (char c; in.get(c);) {
     if (c == '\0') return name;
-    if (name.size() == kMaxName) return std::nullopt;
+    if (name.size() == kMaxName)
+      throw ImageFileError(path + ": error: the EXR header has a name longer than " + std::to_string(kMaxName) +
+                           " characters ('" + name.substr(0, 16) + "...')");
     name += c;
   }
   return std::nullopt;
+}
+
+// A channel list: (name, 16 bytes) per channel, then an empty name, filling the value exactly.
+bool channel_list_fills(const std::string& value, const std::string& path) {
+  std::istringstream in(value);
+  for (;;) {
+    const std::optional<std::string> name = read_name(in, path);
+    if (!name) return false;
+    if (name->empty()) return in.tellg() == std::streamoff(value.size());
+    if (!in.seekg(16, std::ios::cur) || in.tellg() > std::streamoff(value.size())) return false;
+  }
 }
 
 }  // namespace
@@ -37,11 +69,14 @@ void check_exr_header(const std::string& path) {
       !std::equal(kMagic.begin(), kMagic.end(), start.begin()))
     return;
   const bool multipart = start[5] & 0x10;  // bit 12 of the version field
+  const auto refuse = [&](const std::string& name, const std::string& type, const std::string& what) {
+    throw ImageFileError(path + ": error: the EXR header's attribute '" + name + "' (" + type + ") " + what);
+  };
   // Attributes (name, type, int32 size, value) up to an empty name; a multi-part file has a
   // header per part, and one more empty name after the last.
   bool header_ended = false;
   for (;;) {
-    const std::optional<std::string> name = read_name(in);
+    const std::optional<std::string> name = read_name(in, path);
     if (!name) return;
     if (name->empty()) {
       if (!multipart || header_ended) return;
@@ -49,17 +84,26 @@ void check_exr_header(const std::string& path) {
       continue;
     }
     header_ended = false;
-    const std::optional<std::string> type = read_name(in);
+    const std::optional<std::string> type = read_name(in, path);
     std::array<unsigned char, 4> bytes{};
     if (!type || !in.read(reinterpret_cast<char*>(bytes.data()), bytes.size())) return;
     const int32_t size =
         int32_t(uint32_t(bytes[0]) | uint32_t(bytes[1]) << 8 | uint32_t(bytes[2]) << 16 | uint32_t(bytes[3]) << 24);
     const std::streamoff at = in.tellg();
     if (size < 0 || at + size > file_size)
-      throw ImageFileError(path + ": error: the EXR header's attribute '" + *name + "' (" + *type + ") declares " +
-                           std::to_string(size) + " bytes at byte " + std::to_string(at) + " of a " +
-                           std::to_string(file_size) + "-byte file");
-    in.seekg(size, std::ios::cur);
+      refuse(*name, *type,
+             "declares " + std::to_string(size) + " bytes at byte " + std::to_string(at) + " of a " +
+                 std::to_string(file_size) + "-byte file");
+    if (const int32_t fixed = fixed_size(*type); fixed >= 0 && size != fixed)
+      refuse(*name, *type, "declares " + std::to_string(size) + " bytes where its type has " + std::to_string(fixed));
+    if (*type == "chlist") {
+      std::string value(static_cast<size_t>(size), '\0');
+      in.read(value.data(), size);
+      if (!channel_list_fills(value, path))
+        refuse(*name, *type, "does not end at its declared " + std::to_string(size) + " bytes");
+    } else {
+      in.seekg(size, std::ios::cur);
+    }
   }
 }
 

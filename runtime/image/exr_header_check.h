@@ -1,14 +1,19 @@
 // A check of an OpenEXR file's header before OpenImageIO opens it: every attribute's declared
-// size must fit in the file. OpenEXR 3.1 allocates and reads whatever size a header declares, so
-// a 300-byte file whose string attribute claimed 1 GB took it 10 s and 1.3 GB of memory to
-// refuse (found by fuzz/env_image_fuzzer.cpp, docs/fuzzing.md).
+// size must fit in the file, names must be of a length EXR allows, and the standard types must
+// declare the size their content has (channel lists included). OpenEXR 3.1 allocates and reads
+// whatever size a header declares, and reads fixed-size values and channel lists by content, so
+// a header whose declared sizes disagree with its content sent it to read a "size" out of another
+// attribute's bytes: a 300-byte file took it seconds and gigabytes of memory to refuse (found by
+// fuzz/env_image_fuzzer.cpp, docs/fuzzing.md). No valid file is refused: in one, sizes and
+// content agree.
 #pragma once
 
 #include <string>
 
 namespace lg {
 
-// Throws ImageFileError naming `path` and the attribute when one runs past the end of the file.
+// Throws ImageFileError naming `path` and the attribute when one runs past the end of the file or
+// disagrees with its type.
 // Files that do not start with EXR's magic number, and headers cut short (which OpenEXR reports
 // itself), pass.
 void check_exr_header(const std::string& path);

@@ -71,5 +71,46 @@ TEST(ImageFile, ExrWithAnAttributeSizeMadeTooLargeIsRefusedAndTheTrueOneLoads) {
   EXPECT_NE(message.find("attribute '" + name + "'"), std::string::npos) << message;
 }
 
+// Two headers the fuzzer found, whose sizes disagree with their content: OpenEXR reads channel
+// lists and fixed-size values by content, then read a "size" of gigabytes out of the bytes that
+// followed (seconds per file). Each is refused by the attribute it breaks.
+TEST(ImageFile, ExrWhoseAttributeSizeDisagreesWithItsContentIsRefusedByName) {
+  TempFolder folder;
+  const std::vector<float> rgba(4 * 3 * 4, 0.5f);
+  const std::string good = (folder.path / "good.exr").string();
+  save_image(good, 4, 3, rgba, {.compress = false, .full_float = true});
+  const std::string bytes = read_bytes(good);
+  // Each attribute's size is the 4 bytes after its name and type.
+  const auto with_size = [&](const std::string& name_and_type, char size) {
+    std::string changed = bytes;
+    const size_t at = changed.find(name_and_type);
+    EXPECT_NE(at, std::string::npos) << name_and_type;
+    changed[at + name_and_type.size()] = size;
+    return folder.write(name_and_type.substr(0, name_and_type.find('\0')) + ".exr", changed);
+  };
+  const std::string channels = with_size(std::string("channels\0chlist\0", 16), 20);
+  EXPECT_EQ(open_error(channels).rfind(channels + ": error: the EXR header's attribute 'channels' (chlist) does not "
+                                                   "end at its declared 20 bytes",
+                                       0),
+            0u)
+      << open_error(channels);
+  const std::string compression = with_size(std::string("compression\0compression\0", 24), 2);
+  EXPECT_EQ(open_error(compression)
+                .rfind(compression + ": error: the EXR header's attribute 'compression' (compression) declares 2 "
+                                     "bytes where its type has 1",
+                       0),
+            0u)
+      << open_error(compression);
+}
+
+TEST(ImageFile, ExrWithANameLongerThanAnyExrAllowsIsRefused) {
+  TempFolder folder;
+  std::string bytes("\x76\x2f\x31\x01\x02\0\0\0", 8);
+  bytes += std::string(300, 'n') + '\0';
+  const std::string bad = folder.write("long.exr", bytes);
+  EXPECT_EQ(open_error(bad).rfind(bad + ": error: the EXR header has a name longer than 255 characters", 0), 0u)
+      << open_error(bad);
+}
+
 }  // namespace
 }  // namespace lg
