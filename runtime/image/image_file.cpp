@@ -40,8 +40,8 @@ ImageReader::ImageReader(const std::string& path) : path_(path), input_(std::mak
   input_->image = OIIO::ImageInput::create(path);
   OIIO::ImageSpec opened;
   if (!input_->image || !input_->image->open(path, opened))
-    throw ImageFileError(path + ": error: cannot read the image: " +
-                         (input_->image ? input_->image->geterror() : OIIO::geterror()));
+    throw ImageFileError(
+        path + ": error: cannot read the image: " + (input_->image ? input_->image->geterror() : OIIO::geterror()));
   const OIIO::ImageSpec& spec = input_->image->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
     throw ImageFileError(path + ": error: not a 2D image (" + std::to_string(spec.width) + "x" +
