@@ -61,8 +61,8 @@ class PathLights {
   struct Light {
     Kind kind;
     bool scene_light = true;
-    glm::dvec3 radiance{0.0};  // point: intensity (W/sr); distant: the disk's radiance or, at
-                               // radius 0, the irradiance
+    glm::dvec3 radiance{0.0};           // point: intensity (W/sr); distant: the disk's radiance or, at
+                                        // radius 0, the irradiance
     // distant: toward; point: position and, for a spot, its axis b (the way light travels);
     // sphere, rect: centre; tube: ends a and b; rect: half axes b and c
     glm::dvec3 a{0.0}, b{0.0}, c{0.0};
