@@ -11,6 +11,7 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "nodes/env/brdf_lut/brdf_albedo.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/render/deferred_graph.h"
 #include "tests/runtime/gpu_test.h"
@@ -57,7 +58,8 @@ double radius_at(uint32_t x, uint32_t y) {
 
 // nodes/common/shaders/brdf.glsl in double for the floor (albedo 1, roughness 1, metalness 0,
 // normal +Y) at distance r from the axis: Lambert plus GGX, height-correlated Smith and Schlick,
-// times n.l, each direction reduced to its height over its length.
+// times n.l, each direction reduced to its height over its length; the specular with its
+// multiple-scattering scale and the diffuse weighted by what it leaves (brdf_albedo.h).
 double brdf_cosine(double r) {
   const double alpha = 1.0, f0 = 0.04;
   const double lx = -r, ly = kLightHeight, ll = std::hypot(lx, ly);
@@ -70,7 +72,10 @@ double brdf_cosine(double r) {
   const double visibility = 0.5 / (n_dot_l * std::sqrt(n_dot_v * n_dot_v * (1.0 - a2) + a2) +
                                    n_dot_v * std::sqrt(n_dot_l * n_dot_l * (1.0 - a2) + a2));
   const double fresnel = f0 + (1.0 - f0) * std::pow(1.0 - v_dot_h, 5.0);
-  return (1.0 / kPi + distribution * visibility * fresnel) * n_dot_l;
+  const glm::dvec2 scale_bias = brdf_albedo_lookup(n_dot_v, 1.0);
+  const double diffuse = 1.0 - specular_albedo(glm::dvec3(f0), scale_bias).x;
+  const double scale = specular_energy_scale(glm::dvec3(f0), scale_bias).x;
+  return (diffuse / kPi + distribution * visibility * fresnel * scale) * n_dot_l;
 }
 
 // The point light's radiance at r: intensity over distance squared (no range).

@@ -1,7 +1,12 @@
 // The microfacet BRDF every lighting node shares: GGX distribution, height-correlated Smith
-// visibility, Schlick Fresnel, Lambert diffuse; alpha = roughness^2 (perceptual roughness).
+// visibility, Schlick Fresnel, Lambert diffuse; alpha = roughness^2 (perceptual roughness). The
+// specular carries the multiple-scattering compensation and the diffuse gets what the specular
+// leaves at the view (share_energy, brdf_energy.glsl), so the lobes integrate to 1 for a white
+// surface.
 #ifndef LG_BRDF_GLSL
 #define LG_BRDF_GLSL
+
+#include "nodes/common/shaders/brdf_energy.glsl"
 
 const float LG_BRDF_PI = 3.14159265358979;
 const float LG_MIN_ALPHA = 1e-3;  // a mirror's highlight from a point light stays finite
@@ -29,8 +34,9 @@ struct Surface {
   vec3 position;
   vec3 normal;
   vec3 view;  // unit, toward the eye
-  vec3 diffuse_color;  // albedo (1 - metalness)
-  vec3 f0;             // specular reflectance at normal incidence
+  vec3 diffuse_color;   // albedo (1 - metalness), times 1 - the specular albedo after share_energy
+  vec3 f0;              // specular reflectance at normal incidence
+  vec3 specular_scale;  // multiple-scattering compensation at the view
   float alpha;
 };
 
@@ -39,10 +45,19 @@ Surface make_surface(vec3 position, vec3 normal, vec3 eye, vec3 albedo, float ro
   s.position = position;
   s.normal = normal;
   s.view = normalize(eye - position);
-  s.diffuse_color = albedo * (1.0 - metalness);
   s.f0 = mix(vec3(0.04), albedo, metalness);
+  s.specular_scale = vec3(1.0);
+  s.diffuse_color = albedo * (1.0 - metalness);
   s.alpha = max(roughness * roughness, LG_MIN_ALPHA);
   return s;
+}
+
+// The lobes' energy sharing at the surface's view from the GGX lobe's (A, B) there (brdf_albedo.glsl's
+// brdf_albedo_lookup(max(n.v, 1e-4), roughness) for direct light): the specular's multiple-
+// scattering scale, and the diffuse reduced to what the specular leaves.
+void share_energy(inout Surface s, vec2 scale_bias) {
+  s.specular_scale = specular_energy_scale(s.f0, scale_bias);
+  s.diffuse_color *= 1.0 - specular_albedo(s.f0, scale_bias);
 }
 
 // Specular BRDF times n.l for light arriving from unit direction l.
@@ -53,7 +68,7 @@ vec3 specular_term(Surface s, vec3 l, float alpha) {
   vec3 h = normalize(l + s.view);
   float n_dot_h = clamp(dot(s.normal, h), 0.0, 1.0);
   return ggx_distribution(n_dot_h, alpha) * smith_visibility(n_dot_v, n_dot_l, alpha) *
-         fresnel_schlick(s.f0, dot(s.view, h)) * n_dot_l;
+         fresnel_schlick(s.f0, dot(s.view, h)) * s.specular_scale * n_dot_l;
 }
 
 // (diffuse + specular BRDF) times n.l.

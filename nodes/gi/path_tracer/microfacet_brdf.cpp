@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "nodes/env/brdf_lut/brdf_albedo.h"
 #include "nodes/raytrace/cosine_sampling.h"
 
 namespace lg {
@@ -60,6 +61,7 @@ BrdfSurface make_brdf_surface(glm::dvec3 normal, const SurfaceMaterial& m) {
   s.normal = normal;
   s.diffuse_color = m.base_color * (1.0 - m.metalness);
   s.f0 = glm::mix(glm::dvec3(0.04), m.base_color, m.metalness);
+  s.roughness = m.roughness;
   s.alpha = std::max(m.roughness * m.roughness, kMinAlpha);
   return s;
 }
@@ -68,13 +70,19 @@ BrdfCosine evaluate_brdf(const BrdfSurface& s, glm::dvec3 v, glm::dvec3 l) {
   BrdfCosine out;
   const double n_dot_l = glm::dot(s.normal, l);
   if (!(n_dot_l > 0.0)) return out;
-  out.diffuse = s.diffuse_color / kPi * n_dot_l;
   const double n_dot_v = std::max(glm::dot(s.normal, v), kMinNDotV);
+  const glm::dvec2 scale_bias = brdf_albedo_lookup(n_dot_v, s.roughness);
+  out.diffuse = s.diffuse_color * (1.0 - specular_albedo(s.f0, scale_bias)) / kPi * n_dot_l;
   const glm::dvec3 h = glm::normalize(l + v);
   const double n_dot_h = std::clamp(glm::dot(s.normal, h), 0.0, 1.0);
   out.specular = ggx_distribution(n_dot_h, s.alpha) * smith_visibility(n_dot_v, n_dot_l, s.alpha) *
-                 fresnel_schlick(s.f0, glm::dot(v, h)) * n_dot_l;
+                 fresnel_schlick(s.f0, glm::dot(v, h)) * specular_energy_scale(s.f0, scale_bias) * n_dot_l;
   return out;
+}
+
+glm::dvec3 diffuse_reflectance(const BrdfSurface& s, glm::dvec3 v) {
+  const double n_dot_v = std::max(glm::dot(s.normal, v), kMinNDotV);
+  return s.diffuse_color * (1.0 - specular_albedo(s.f0, brdf_albedo_lookup(n_dot_v, s.roughness)));
 }
 
 double specular_lobe_probability(const BrdfSurface& s, glm::dvec3 v) {

@@ -1,6 +1,8 @@
 // The BRDF every lighting node shades with (nodes/common/shaders/brdf.glsl: Lambert diffuse plus
 // GGX with height-correlated Smith visibility and Schlick Fresnel, alpha = roughness^2 clamped
-// to 1e-3) on the CPU in double precision, with what a path tracer needs besides its value:
+// to 1e-3, the specular with multiple-scattering compensation and the diffuse weighted by what
+// the specular leaves at the view, from nodes/env/brdf_lut/brdf_albedo.h's table as the GLSL
+// reads it) on the CPU in double precision, with what a path tracer needs besides its value:
 // cosine sampling of the diffuse lobe, sampling of GGX's visible normals for the specular lobe
 // (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") and both densities.
 #pragma once
@@ -14,8 +16,9 @@ namespace lg {
 
 struct BrdfSurface {
   glm::dvec3 normal;         // unit shading normal
-  glm::dvec3 diffuse_color;  // base colour x (1 - metalness)
+  glm::dvec3 diffuse_color;  // base colour x (1 - metalness), before the specular's share
   glm::dvec3 f0;             // specular reflectance at normal incidence
+  double roughness = 0.5;    // perceptual: where the albedo table is read
   double alpha = 0.25;
 };
 
@@ -27,6 +30,9 @@ struct BrdfCosine {
   glm::dvec3 sum() const { return diffuse + specular; }
 };
 BrdfCosine evaluate_brdf(const BrdfSurface& s, glm::dvec3 v, glm::dvec3 l);
+
+// The diffuse lobe's albedo toward v: the diffuse colour times 1 minus the specular albedo there.
+glm::dvec3 diffuse_reflectance(const BrdfSurface& s, glm::dvec3 v);
 
 // The probability of sampling the specular lobe (else the diffuse one): by each lobe's share of
 // the reflected energy at this view, Fresnel against the diffuse colour.

@@ -236,7 +236,7 @@ ProbeHit PathTransport::probe_hit(glm::dvec3 origin, glm::dvec3 direction, const
   s.diffuse = glm::dvec3(1.0);  // as probe_ray()
   if (segment(s, origin, direction, 0.0, 0, random, out, &h.ray)) {
     sample_lights(s, 0, random, out, false);
-    h.surface = VisibleSurface{s.vertex.position, s.vertex.brdf.normal, s.vertex.brdf.diffuse_color};
+    h.surface = VisibleSurface{s.vertex.position, s.vertex.brdf.normal, diffuse_reflectance(s.vertex.brdf, -direction)};
     const BrdfSample b = sample_brdf(s, 0, random);
     if (b.pdf > 0.0) h.albedo = b.f.sum() / b.pdf;
   }
@@ -249,7 +249,7 @@ std::optional<VisibleSurface> PathTransport::visible_surface(glm::dvec3 eye, glm
   const std::optional<CameraHit> hit = first_camera_hit(scene_.rays(), eye, direction, cull_backfaces);
   if (!hit) return std::nullopt;
   const Vertex v = make_vertex(scene_, hit->hit, hit->position, direction);
-  return VisibleSurface{v.position, v.brdf.normal, v.brdf.diffuse_color};
+  return VisibleSurface{v.position, v.brdf.normal, diffuse_reflectance(v.brdf, -direction)};
 }
 
 }  // namespace lg

@@ -47,7 +47,8 @@ struct ProbeRay {
 };
 
 // What the G-buffer holds at a pixel, as the path tracer sees it: the visible surface's position,
-// its shading normal on the camera's side, and its diffuse colour (base colour x (1 - metal)).
+// its shading normal on the camera's side, and its diffuse colour toward the camera (base colour
+// x (1 - metal) x (1 - the specular albedo at that view): what multiplies irradiance / pi).
 struct VisibleSurface {
   glm::dvec3 position, normal, diffuse_color;
 };

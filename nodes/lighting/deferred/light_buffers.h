@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "nodes/common/camera_constants.h"
+#include "nodes/env/brdf_lut/brdf_albedo.h"
 #include "nodes/lighting/deferred/local_shadows.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
@@ -24,6 +25,9 @@ struct LightConstants {
   uint32_t counts[4];
   uint32_t counts2[4];
   glm::vec4 local_shadow;  // 1 when the atlas was drawn, its views' near plane, area-light shadow samples
+  // The BRDF's albedo table, for the lobes' energy sharing (brdf_albedo.glsl): constant, but every
+  // pass that shades with brdf.glsl binds this block already.
+  std::array<glm::vec4, kBrdfAlbedoSize* kBrdfAlbedoSize / 2> brdf_albedo = brdf_albedo_texels();
 };
 
 // The first directional light that casts shadows owns the shadow map, or -1.

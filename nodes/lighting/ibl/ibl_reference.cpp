@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "nodes/env/brdf_lut/brdf_albedo.h"
+
 namespace lg {
 
 double specular_occlusion_from_ao(double n_dot_v, double ao, double roughness) {
@@ -14,9 +16,8 @@ glm::dvec3 ibl_shade_reference(const IblSurface& s, const glm::dvec3& irradiance
                                const glm::dvec2& scale_bias) {
   const glm::dvec3 diffuse_color = s.albedo * (1 - s.metalness);
   const glm::dvec3 f0 = glm::dvec3(0.04) * (1 - s.metalness) + s.albedo * s.metalness;
-  const double e = std::max(scale_bias.x + scale_bias.y, 1e-4);
-  const glm::dvec3 specular = prefiltered * (f0 * scale_bias.x + scale_bias.y) * (1.0 + f0 * (1 / e - 1));
-  return diffuse_color / std::numbers::pi * irradiance + specular;
+  const glm::dvec3 specular = specular_albedo(f0, scale_bias);
+  return diffuse_color * (1.0 - specular) / std::numbers::pi * irradiance + prefiltered * specular;
 }
 
 }  // namespace lg

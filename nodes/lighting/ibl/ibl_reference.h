@@ -16,7 +16,8 @@ struct IblSurface {
 // Lagarde and de Rousiers' specular occlusion from ambient occlusion.
 double specular_occlusion_from_ao(double n_dot_v, double ao, double roughness);
 
-// Diffuse plus specular, before ambient and specular occlusion.
+// Diffuse (weighted by 1 minus the specular albedo) plus specular, before ambient and specular
+// occlusion.
 glm::dvec3 ibl_shade_reference(const IblSurface& surface, const glm::dvec3& irradiance, const glm::dvec3& prefiltered,
                                const glm::dvec2& scale_bias);
 

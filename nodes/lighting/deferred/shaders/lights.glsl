@@ -50,6 +50,9 @@ layout(std140, binding = 0) uniform Constants {
   uvec4 counts;            // directional, point, sphere, tube (the rectangles' count is in counts2)
   uvec4 counts2;           // rectangles, spots
   vec4 local_shadow;       // 1 when the local shadow atlas was drawn, the views' near plane, area-light shadow taps
+  vec4 brdf_albedo[512];   // the GGX lobe's (A, B) table, two texels a vec4 (brdf_albedo.glsl)
 };
+
+#include "nodes/env/brdf_lut/shaders/brdf_albedo.glsl"
 
 #endif

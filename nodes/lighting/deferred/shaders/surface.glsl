@@ -1,4 +1,5 @@
-// Reads the surface at a texel of the G-buffer for the deferred passes.
+// Reads the surface at a texel of the G-buffer for the deferred passes, its lobes sharing energy
+// by the albedo table in the constants (brdf_albedo.glsl).
 #ifndef LG_DEFERRED_SURFACE_GLSL
 #define LG_DEFERRED_SURFACE_GLSL
 
@@ -22,6 +23,7 @@ bool read_surface(ivec2 texel, out Surface s) {
   vec3 albedo = texelFetch(gbuffer_albedo, texel, 0).rgb;
   vec2 material = texelFetch(gbuffer_material, texel, 0).rg;
   s = make_surface(p, n, camera.position.xyz, albedo, material.r, material.g);
+  share_energy(s, brdf_albedo_lookup(max(dot(s.normal, s.view), 1e-4), material.r));
   return true;
 }
 

@@ -115,7 +115,9 @@ void main() {
     vec4 volume = texelFetch(volume_tex, texel, 0);
     irradiance_over_pi = mix(irradiance_over_pi, volume.rgb / LG_SH_PI, clamp(volume.a, 0.0, 1.0));
   }
-  vec3 diffuse = diffuse_color * irradiance_over_pi * occlusion;
+  // The diffuse gets what the specular lobe leaves at this view (brdf_energy.glsl).
+  vec2 scale_bias = dfg_scale_bias(n_dot_v, roughness);
+  vec3 diffuse = diffuse_color * (1.0 - specular_albedo(f0, scale_bias)) * irradiance_over_pi * occlusion;
 
   vec3 r = reflect(-v, n);
   vec3 reflected = intensity * prefiltered_radiance(r, roughness);
@@ -127,7 +129,7 @@ void main() {
     vec4 ssr = texelFetch(ssr_tex, texel, 0);
     reflected = mix(reflected, ssr.rgb, clamp(ssr.a, 0.0, 1.0));
   }
-  vec3 specular = split_sum_reflection(reflected, n_dot_v, f0, roughness);
+  vec3 specular = split_sum_specular(reflected, f0, scale_bias);
   if ((flags & 16u) != 0u && cones)
     specular *= specular_occlusion_from_cone(n, r, bent, cone_cos, roughness);
   else if ((flags & 16u) != 0u && (flags & 4u) != 0u)

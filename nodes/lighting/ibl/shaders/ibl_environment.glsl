@@ -29,27 +29,22 @@ vec3 prefiltered_radiance(vec3 r, float roughness) {
   return textureLod(specular_map, r, roughness * (mips - 1.0)).rgb;
 }
 
-// Reflected radiance before the BRDF (the prefiltered map's, or another source's in its place:
-// lighting.ibl's screen-space reflections) through the split sum.
-vec3 split_sum_reflection(vec3 prefiltered, float n_dot_v, vec3 f0, float roughness) {
-  vec2 scale_bias = textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
-  return split_sum_specular(prefiltered, f0, scale_bias);
-}
-
-// Specular image-based light along the reflection r: the prefiltered map through the split sum.
-vec3 environment_specular(vec3 r, float n_dot_v, vec3 f0, float roughness) {
-  return split_sum_reflection(prefiltered_radiance(r, roughness), n_dot_v, f0, roughness);
+// The DFG table's scale A and bias B at (n.v, roughness).
+vec2 dfg_scale_bias(float n_dot_v, float roughness) {
+  return textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
 }
 
 // Image-based light leaving a surface toward v with no occlusion but its material's own
 // (`occlusion`, 1: none), which darkens the diffuse part and, by Lagarde's form, the specular
-// as lighting.ibl does. Diffuse from SH when `from_sh`, else from the irradiance map.
+// as lighting.ibl does. Diffuse from SH when `from_sh`, else from the irradiance map, weighted
+// by what the specular leaves.
 vec3 environment_light(vec3 n, vec3 v, vec3 diffuse_color, vec3 f0, float roughness, float occlusion, bool from_sh) {
   float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
   vec3 irradiance_over_pi = from_sh ? sh_irradiance(n) / LG_SH_PI : textureLod(irradiance_map, n, 0.0).rgb;
-  vec3 specular = environment_specular(reflect(-v, n), n_dot_v, f0, roughness);
+  vec2 scale_bias = dfg_scale_bias(n_dot_v, roughness);
+  vec3 specular = split_sum_specular(prefiltered_radiance(reflect(-v, n), roughness), f0, scale_bias);
   if (occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, occlusion, roughness);
-  return diffuse_color * irradiance_over_pi * occlusion + specular;
+  return diffuse_color * (1.0 - specular_albedo(f0, scale_bias)) * irradiance_over_pi * occlusion + specular;
 }
 
 #endif

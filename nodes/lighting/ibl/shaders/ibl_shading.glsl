@@ -1,8 +1,11 @@
 // lighting.ibl's shading of one surface (nodes/lighting/ibl/ibl_reference.h is the same in
 // double precision): diffuse from irradiance, specular from the split sum with the DFG table's
-// scale A and bias B and multiple-scattering energy compensation.
+// scale A and bias B and multiple-scattering energy compensation, the diffuse weighted by what
+// the specular leaves (brdf_energy.glsl).
 #ifndef LG_IBL_SHADING_GLSL
 #define LG_IBL_SHADING_GLSL
+
+#include "nodes/common/shaders/brdf_energy.glsl"
 
 // Where the DFG table holds (n.v, roughness): texel centres run from 0 to 1 inclusive
 // (nodes/env/brdf_lut/shaders/dfg.comp).
@@ -10,13 +13,10 @@ vec2 dfg_uv(float n_dot_v, float roughness, vec2 size) {
   return (vec2(n_dot_v, roughness) * (size - 1.0) + 0.5) / size;
 }
 
-// The split sum F0 A + B is the single-scattering reflectance; the energy lost to single
-// scattering, 1 - E with E = A + B (the white F0 = 1 albedo), comes back by multiple
-// scattering in proportion to F0 (Fdez-Aguera 2019, Filament): times 1 + F0 (1 / E - 1). A
-// white furnace with F0 = 1 then reflects all of it.
+// The split sum F0 A + B is the single-scattering reflectance, with multiple scattering's
+// share on top (specular_albedo).
 vec3 split_sum_specular(vec3 prefiltered, vec3 f0, vec2 scale_bias) {
-  float e = max(scale_bias.x + scale_bias.y, 1e-4);
-  return prefiltered * (f0 * scale_bias.x + scale_bias.y) * (1.0 + f0 * (1.0 / e - 1.0));
+  return prefiltered * specular_albedo(f0, scale_bias);
 }
 
 // Lagarde and de Rousiers' specular occlusion from ambient occlusion.

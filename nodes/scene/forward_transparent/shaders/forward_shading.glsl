@@ -25,9 +25,10 @@ vec3 forward_radiance(Draw d, MaterialSample m) {
   float roughness = metal_rough.x, metalness = metal_rough.y;
   vec3 albedo = clamp(m.base.rgb, 0.0, 1.0);
   Surface s = make_surface(surface_position, m.normal, camera.position.xyz, albedo, roughness, metalness);
+  share_energy(s, brdf_albedo_lookup(max(dot(s.normal, s.view), 1e-4), roughness));
   vec3 radiance = direct_radiance(s) + area_radiance(s);
   if ((flags & 1u) != 0u)
-    radiance += intensity * environment_light(s.normal, s.view, s.diffuse_color, s.f0, roughness,
+    radiance += intensity * environment_light(s.normal, s.view, albedo * (1.0 - metalness), s.f0, roughness,
                                               clamp(m.occlusion, 0.0, 1.0), (flags & 2u) != 0u);
   return finite_or_zero(radiance + m.emission);
 }
