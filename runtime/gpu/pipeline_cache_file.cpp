@@ -90,8 +90,7 @@ std::string driver_header_problem(std::string_view data, const DeviceIdentity& d
   const auto size = in.get<uint32_t>();
   const auto version = in.get<uint32_t>();
   if (size < driver_header_bytes || size > data.size())
-    return "the driver header says it is " + std::to_string(size) + " bytes long, of " +
-           std::to_string(data.size());
+    return "the driver header says it is " + std::to_string(size) + " bytes long, of " + std::to_string(data.size());
   if (version != VK_PIPELINE_CACHE_HEADER_VERSION_ONE)
     return "the driver header has version " + std::to_string(version) + ", not VK_PIPELINE_CACHE_HEADER_VERSION_ONE";
   const auto vendor = in.get<uint32_t>();
@@ -140,8 +139,7 @@ DecodedPipelineCache decode_pipeline_cache(std::string_view file, const DeviceId
   if (in.get_bytes(sizeof magic) != std::string_view(magic, sizeof magic))
     return refuse("not a Lumagraph pipeline cache (wrong magic)");
   if (const auto version = in.get<uint32_t>(); version != format_version)
-    return refuse("format version " + std::to_string(version) + ", this build reads " +
-                  std::to_string(format_version));
+    return refuse("format version " + std::to_string(version) + ", this build reads " + std::to_string(format_version));
   if (const DeviceIdentity made_on = read_identity(in); !(made_on == device))
     return refuse("made on another device or driver (" + describe(made_on) + "; this is " + describe(device) +
                   (made_on.cache_uuid != device.cache_uuid ? ", another pipeline cache UUID)" : ")"));

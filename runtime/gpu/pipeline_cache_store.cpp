@@ -70,7 +70,8 @@ bool PipelineCacheStore::save() {
     const std::vector<std::byte> data = context_.pipelines().driver_data();
     std::error_code made;
     std::filesystem::create_directories(folder_, made);
-    if (made) error = "cannot make the folder " + folder_ + ": " + made.message();
+    if (made)
+      error = "cannot make the folder " + folder_ + ": " + made.message();
     else if (write_file_atomically(path_, encode_pipeline_cache(device_identity(context_.properties()), data), &error))
       error.clear();
     else if (error.empty())

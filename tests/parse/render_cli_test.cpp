@@ -106,7 +106,8 @@ TEST(RenderCli, ACorruptPipelineCacheFileIsIgnoredWithAWarning) {
   TempDir dir;
   const std::string cache_home = "XDG_CACHE_HOME=" + dir.file("cache");
   auto render = [&](const std::string& out, const std::string& option = "--validate") {
-    return lumagraph({"render", "examples/minimal.json", "--size", "64x36", option, "--out", dir.file(out)}, cache_home);
+    return lumagraph({"render", "examples/minimal.json", "--size", "64x36", option, "--out", dir.file(out)},
+                     cache_home);
   };
   Outcome first = render("first.png");
   ASSERT_EQ(first.status, 0) << first.err;
