@@ -6,8 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <random>
+#include <string>
+
+#include "runtime/gpu/pipeline_cache_store.h"
 
 namespace lg {
 namespace {
@@ -101,6 +106,45 @@ TEST(PipelineCacheFile, ADriverHeaderThatDoesNotMatchIsRefused) {
 TEST(PipelineCacheFile, AnotherFileIsNotTakenForOne) {
   const DecodedPipelineCache decoded = decode_pipeline_cache(std::string(200, '{'), test_device());
   EXPECT_NE(decoded.problem.find("wrong magic"), std::string::npos) << decoded.problem;
+}
+
+// Sets an environment variable for one scope, restoring what was there.
+class ScopedVariable {
+ public:
+  ScopedVariable(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    value ? ::setenv(name, value, 1) : ::unsetenv(name);
+  }
+  ~ScopedVariable() { old_ ? ::setenv(name_, old_->c_str(), 1) : ::unsetenv(name_); }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+TEST(PipelineCacheFolder, IsUnderXdgCacheHomeElseHome) {
+  ScopedVariable home("HOME", "/home/someone");
+  {
+    ScopedVariable xdg("XDG_CACHE_HOME", "/var/cache/me");
+    EXPECT_EQ(default_pipeline_cache_folder(), "/var/cache/me/lumagraph");
+  }
+  ScopedVariable no_xdg("XDG_CACHE_HOME", nullptr);
+  EXPECT_EQ(default_pipeline_cache_folder(), "/home/someone/.cache/lumagraph");
+  ScopedVariable no_home("HOME", nullptr);
+  EXPECT_EQ(default_pipeline_cache_folder(), "");
+}
+
+TEST(PipelineCacheFolder, TheEnvironmentTurnsTheFileOff) {
+  for (const char* off : {"off", "0", "false", "no"}) {
+    ScopedVariable variable("LUMAGRAPH_PIPELINE_CACHE", off);
+    EXPECT_TRUE(pipeline_cache_disabled_by_environment()) << off;
+  }
+  for (const char* on : {"on", "1", ""}) {
+    ScopedVariable variable("LUMAGRAPH_PIPELINE_CACHE", on);
+    EXPECT_FALSE(pipeline_cache_disabled_by_environment()) << on;
+  }
+  ScopedVariable unset("LUMAGRAPH_PIPELINE_CACHE", nullptr);
+  EXPECT_FALSE(pipeline_cache_disabled_by_environment());
 }
 
 }  // namespace
