@@ -11,9 +11,20 @@ namespace lg {
 
 Renderer::Renderer(const RendererOptions& options)
     : options_(options),
-      context_(options.host ? std::make_unique<Context>(*options.host) : std::make_unique<Context>(options.device)) {}
+      context_(options.host ? std::make_unique<Context>(*options.host) : std::make_unique<Context>(options.device)) {
+  const std::string folder =
+      options.pipeline_cache_folder.empty() ? default_pipeline_cache_folder() : options.pipeline_cache_folder;
+  if (options.pipeline_cache_on_disk && !pipeline_cache_disabled_by_environment() && !folder.empty())
+    pipeline_store_ = std::make_unique<PipelineCacheStore>(*context_, folder);
+}
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+  if (pipeline_store_) pipeline_store_->save();  // never throws; its warning has no reader now
+}
+
+std::vector<std::string> Renderer::take_warnings() {
+  return pipeline_store_ ? pipeline_store_->take_warnings() : std::vector<std::string>{};
+}
 
 void Renderer::load_graph(const std::string& path) {
   Diagnostics diagnostics(path);
@@ -60,9 +71,12 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
 const FrameStats& Renderer::render(const World& world, FrameSize frame) {
   SceneView view = make_scene_view(world, float(frame.width) / float(frame.height), has_view_ ? &view_ : nullptr);
   const SceneSummary summary = view.summary();
-  if (!executor_ || graph_changed_ || !summary_ || !(*summary_ == summary) || !(frame_ == frame))
-    compile_for(summary, frame);
+  const bool compile = !executor_ || graph_changed_ || !summary_ || !(*summary_ == summary) || !(frame_ == frame);
+  if (compile) compile_for(summary, frame);
   stats_ = executor_->run_frame(view, *gpu_scene_);
+  // A new plan's first frame made whatever pipelines it needs: keep them for the next run now,
+  // not only at shutdown, which a crash or a killed editor never reaches.
+  if (compile && pipeline_store_) pipeline_store_->save();
   view_ = std::move(view);
   has_view_ = true;
   return stats_;

@@ -13,6 +13,8 @@
 //   }
 //
 // A failed load_graph() or reload_graph() keeps the last good graph running (hot reload).
+// Pipelines are shared by every plan the renderer compiles, and their driver cache is saved to
+// disk after the first frame of each plan that made new ones and when the renderer goes.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -30,6 +32,7 @@
 #include "runtime/exec/executor.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/gpu/context.h"
+#include "runtime/gpu/pipeline_cache_store.h"
 #include "runtime/scene/scene_view.h"
 #include "runtime/scene/world.h"
 
@@ -47,6 +50,11 @@ struct RendererOptions {
   const HostDevice* host = nullptr;  // or the host engine's device, which it keeps owning
   AssetRoots asset_roots{};          // where file paths in graphs may point
   bool alias = true;                 // false: every transient resource keeps its own memory
+  // The driver's pipeline cache kept on disk between runs (runtime/gpu/pipeline_cache_store.h),
+  // in `pipeline_cache_folder` or, when that is empty, $XDG_CACHE_HOME/lumagraph (~/.cache/...).
+  // LUMAGRAPH_PIPELINE_CACHE=off in the environment turns it off too.
+  bool pipeline_cache_on_disk = true;
+  std::string pipeline_cache_folder{};
 };
 
 class Renderer {
@@ -76,11 +84,17 @@ class Renderer {
   VkImageLayout output_layout(std::string_view name = "main");
   std::vector<float> read_output(std::string_view name = "main");  // float RGBA, rows top down
 
+  // The pipeline cache on disk; null when it is off (options, environment, no cache folder).
+  const PipelineCacheStore* pipeline_cache_store() const { return pipeline_store_.get(); }
+  // Warnings since the last call (an ignored or unsaved pipeline cache file), one line each.
+  std::vector<std::string> take_warnings();
+
  private:
   void compile_for(const SceneSummary& summary, FrameSize frame);
 
   RendererOptions options_;
   std::unique_ptr<Context> context_;
+  std::unique_ptr<PipelineCacheStore> pipeline_store_;  // after the context: goes before it
   std::optional<Graph> graph_;
   bool graph_changed_ = false;
   std::optional<SceneSummary> summary_;

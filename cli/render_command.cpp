@@ -39,6 +39,8 @@ options:
   --asset-root DIR    allow file paths in params and in the scene file under DIR
                       (repeatable; the scene file's own folder stays allowed)
   --no-alias          give every transient resource its own memory
+  --no-pipeline-cache do not read or write the pipeline cache on disk
+                      ($XDG_CACHE_HOME/lumagraph; LUMAGRAPH_PIPELINE_CACHE=off does the same)
 
 exit status: 0 rendered, 1 usage error, 2 invalid graph or scene, 3 the GPU or a node failed
 )";
@@ -46,7 +48,7 @@ exit status: 0 rendered, 1 usage error, 2 invalid graph or scene, 3 the GPU or a
 constexpr int exit_runtime = 3;
 
 ArgSpec render_arg_spec() {
-  return {{"--help", "--validate", "--no-alias"},
+  return {{"--help", "--validate", "--no-alias", "--no-pipeline-cache"},
           {"--scene", "--env", "--size", "--frames", "--out", "--dump", "--stats", "--device", "--asset-root"},
           {"--asset-root"}};
 }
@@ -88,6 +90,7 @@ int render_command(const std::vector<std::string>& argv) {
   options.device.device_name = args->value("--device").value_or("");
   options.asset_roots.roots = args->values("--asset-root");
   options.alias = !args->has("--no-alias") && !args->value("--dump");
+  options.pipeline_cache_on_disk = !args->has("--no-pipeline-cache");
   if (auto env = args->value("--env")) use_environment(*graph, *env, options.asset_roots);
 
   World world;
@@ -105,16 +108,25 @@ int render_command(const std::vector<std::string>& argv) {
   size_t validation_messages = 0;
   try {
     Renderer renderer(options);
+    auto print_warnings = [&] {
+      for (const std::string& w : renderer.take_warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    };
+    print_warnings();
     renderer.set_graph(std::move(*graph));
     const bool progress = frames > 1 && isatty(STDERR_FILENO);
     FrameStats stats;
     for (unsigned f = 0; f < frames; ++f) {
       stats = renderer.render(world, frame);
       print_validation("render", renderer.context(), validation_messages);
+      print_warnings();
       if (progress) std::fprintf(stderr, "\rframe %u/%u  %.1f ms GPU", f + 1, frames, stats.gpu_ms);
     }
     if (progress) std::fputc('\n', stderr);
     std::fputs(frame_stats_text(stats).c_str(), stdout);
+    const PipelineCache& pipelines = renderer.context().pipelines();
+    std::printf("pipelines: %llu made, %llu of them from the driver's cache\n",
+                static_cast<unsigned long long>(pipelines.created()),
+                static_cast<unsigned long long>(pipelines.driver_cache_hits()));
 
     std::vector<float> pixels = renderer.read_output();
     const Image& image = renderer.output_image();

@@ -33,7 +33,6 @@ Executor::Executor(Context& context, const KernelRegistry& kernels, Plan plan)
       registry_(kernels),
       plan_(std::move(plan)),
       submitter_(context),
-      pipelines_(context),
       linear_(context, {Filter::linear, Address::clamp}),
       nearest_(context, {Filter::nearest, Address::clamp}),
       timestamps_(context, static_cast<uint32_t>(plan_.passes.size()) + 1),
@@ -59,6 +58,10 @@ void Executor::make_kernels() {
 }
 
 Executor::~Executor() = default;
+
+PipelineCache& Executor::pipelines() {
+  return context_.pipelines();
+}
 
 void Executor::invalidate_cache() {
   std::fill(ran_keys_.begin(), ran_keys_.end(), 0);
@@ -151,8 +154,8 @@ void Executor::record_frame(VkCommandBuffer cmd, const SceneView& scene, GpuScen
   timestamps_.reset(cmd);
   const uint32_t whole = timestamps_.begin(cmd, "frame");
   if (frames_ == 0) clear_history(cmd);
-  const FrameResources frame{context_, pipelines_, cmd,     plan_, memory_.resources,
-                             linear_,  nearest_,   frames_, scene, gpu_scene};
+  const FrameResources frame{
+      context_, context_.pipelines(), cmd, plan_, memory_.resources, linear_, nearest_, frames_, scene, gpu_scene};
   BarrierBatch batch;
   size_t next_barrier = 0;
   for (size_t p = 0; p < plan_.passes.size(); ++p) {

@@ -47,7 +47,7 @@ class Executor {
   Context& context() const { return context_; }
   // For uploads and readbacks between frames (a GpuScene may share it); never during one.
   Submitter& submitter() { return submitter_; }
-  PipelineCache& pipelines() { return pipelines_; }
+  PipelineCache& pipelines();  // the context's, which every executor on it shares
 
   // Updates `gpu_scene` from `scene`, then records, submits and waits for one frame; a wait
   // past the submit timeout throws GpuError. A kernel's failure throws ExecutorError naming
@@ -101,7 +101,6 @@ class Executor {
   const KernelRegistry& registry_;  // outlives the executor
   Plan plan_;
   Submitter submitter_;
-  PipelineCache pipelines_;
   Sampler linear_, nearest_;
   TimestampQueries timestamps_;
   PlanMemory memory_;

@@ -4,6 +4,7 @@
 
 #include "runtime/gpu/device_selection.h"
 #include "runtime/gpu/gpu_error.h"
+#include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/vk_struct.h"
 
 namespace lg {
@@ -31,6 +32,7 @@ Context::Context(const ContextOptions& options) {
     queue_family_ = choice.queue_family;
     create_device();
     load_device_functions();
+    pipelines_ = std::make_unique<PipelineCache>(*this);
   } catch (...) {
     release();  // the destructor does not run for a constructor that throws
     throw;
@@ -60,9 +62,11 @@ Context::Context(const HostDevice& host)
   vkGetPhysicalDeviceProperties(physical_device_, &properties_);
   vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
   load_device_functions();
+  pipelines_ = std::make_unique<PipelineCache>(*this);
 }
 
 Context::~Context() {
+  pipelines_.reset();  // its pipelines belong to the device, the host's included
   release();
 }
 

@@ -18,6 +18,8 @@
 
 namespace lg {
 
+class PipelineCache;
+
 struct ContextOptions {
   bool validation = false;    // Khronos validation layer + synchronization validation
   std::string device_name{};  // a substring of the device's name; empty: the first suitable
@@ -79,6 +81,10 @@ class Context {
 
   void wait_idle() const;
 
+  // The pipelines of this device, shared by every executor on it: a recompile, a resize or a hot
+  // reload reuses those the last plan made. They live as long as the context.
+  PipelineCache& pipelines() const { return *pipelines_; }
+
   // Device-level entry points of extensions.
   PFN_vkCmdPushDescriptorSetKHR cmd_push_descriptor_set = nullptr;
 
@@ -104,6 +110,7 @@ class Context {
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
   std::atomic<uint64_t> memory_used_{0};
+  std::unique_ptr<PipelineCache> pipelines_;  // made last, destroyed before the device
 };
 
 }  // namespace lg

@@ -1,5 +1,6 @@
 #include "runtime/gpu/pipeline.h"
 
+#include <mutex>
 #include <type_traits>
 
 #include "graph/fault_injection.h"
@@ -95,6 +96,27 @@ void destroy(const Context& context, Pipeline& p) {
   vkDestroyDescriptorSetLayout(context.device(), p.set_layout, nullptr);
 }
 
+// Where the driver says whether it made a pipeline from its cache; chained into the create info.
+class CreationFeedback {
+ public:
+  VkPipelineCreationFeedbackCreateInfo* chain(uint32_t stages) {
+    info_ = vk_struct<VkPipelineCreationFeedbackCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CREATION_FEEDBACK_CREATE_INFO);
+    info_.pPipelineCreationFeedback = &pipeline_;
+    info_.pipelineStageCreationFeedbackCount = stages;  // the validation layer wants one per stage
+    info_.pPipelineStageCreationFeedbacks = stage_feedback_;
+    return &info_;
+  }
+  bool cache_hit() const {
+    const VkPipelineCreationFeedbackFlags hit =
+        VK_PIPELINE_CREATION_FEEDBACK_VALID_BIT | VK_PIPELINE_CREATION_FEEDBACK_APPLICATION_PIPELINE_CACHE_HIT_BIT;
+    return (pipeline_.flags & hit) == hit;
+  }
+
+ private:
+  VkPipelineCreationFeedbackCreateInfo info_{};
+  VkPipelineCreationFeedback pipeline_{}, stage_feedback_[2]{};
+};
+
 // Makes the pipeline with `create`, or cleans up the layout and rethrows.
 template <typename Create>
 Pipeline finish(const Context& context, Pipeline p, const std::string& name, Create&& create) {
@@ -138,10 +160,65 @@ VkRenderingAttachmentInfo cleared_attachment(VkImageView view, VkClearValue clea
   return a;
 }
 
-PipelineCache::PipelineCache(Context& context) : context_(context) {}
+PipelineCache::PipelineCache(Context& context) : context_(context) {
+  auto info = vk_struct<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
+  vk_check(vkCreatePipelineCache(context_.device(), &info, nullptr, &cache_), "vkCreatePipelineCache");
+}
 
 PipelineCache::~PipelineCache() {
   for (auto& [key, pipeline] : pipelines_) destroy(context_, pipeline);
+  vkDestroyPipelineCache(context_.device(), cache_, nullptr);
+}
+
+size_t PipelineCache::size() const {
+  std::lock_guard lock(mutex_);
+  return pipelines_.size();
+}
+
+uint64_t PipelineCache::created() const {
+  std::lock_guard lock(mutex_);
+  return created_;
+}
+
+uint64_t PipelineCache::driver_cache_hits() const {
+  std::lock_guard lock(mutex_);
+  return driver_cache_hits_;
+}
+
+std::vector<std::byte> PipelineCache::driver_data() const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::byte> data;
+  // The size can grow between the two calls only through another thread, which the lock stops.
+  size_t size = 0;
+  vk_check(vkGetPipelineCacheData(context_.device(), cache_, &size, nullptr), "vkGetPipelineCacheData");
+  data.resize(size);
+  vk_check(vkGetPipelineCacheData(context_.device(), cache_, &size, data.data()), "vkGetPipelineCacheData");
+  data.resize(size);
+  return data;
+}
+
+bool PipelineCache::merge(std::span<const std::byte> driver_data) {
+  auto info = vk_struct<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
+  info.initialDataSize = driver_data.size();
+  info.pInitialData = driver_data.data();
+  VkPipelineCache loaded = VK_NULL_HANDLE;
+  if (vkCreatePipelineCache(context_.device(), &info, nullptr, &loaded) != VK_SUCCESS) return false;
+  std::lock_guard lock(mutex_);
+  const VkResult merged = vkMergePipelineCaches(context_.device(), cache_, 1, &loaded);
+  vkDestroyPipelineCache(context_.device(), loaded, nullptr);
+  return merged == VK_SUCCESS;
+}
+
+// The pipeline under `key`, or a new one from create(pipeline, feedback), counted.
+template <typename Create>
+const Pipeline& PipelineCache::find_or_make(std::string key, Create&& create) {
+  std::lock_guard lock(mutex_);
+  if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
+  CreationFeedback feedback;
+  Pipeline p = create(feedback);
+  ++created_;
+  if (feedback.cache_hit()) ++driver_cache_hits_;
+  return pipelines_.emplace(std::move(key), p).first->second;
 }
 
 const Pipeline& PipelineCache::compute(const ComputePipelineDesc& desc) {
@@ -150,29 +227,28 @@ const Pipeline& PipelineCache::compute(const ComputePipelineDesc& desc) {
   key.add('C').add_all(desc.shader);
   add_layout(key, desc.bindings, desc.push_constant_bytes);
   key.add_all(std::span(desc.constants));
-  std::string bytes = key.take();
-  if (auto it = pipelines_.find(bytes); it != pipelines_.end()) return it->second;
-
-  Pipeline p = make_layout(context_, desc.bindings, desc.push_constant_bytes, VK_SHADER_STAGE_COMPUTE_BIT,
-                           VK_PIPELINE_BIND_POINT_COMPUTE);
-  p = finish(context_, p, desc.name, [&](Pipeline& out) {
-    ShaderModule module(context_, desc.shader);
-    auto info = vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    info.stage = vk_struct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module.handle();
-    info.stage.pName = "main";
-    std::vector<VkSpecializationMapEntry> entries;
-    for (uint32_t i = 0; i < desc.constants.size(); ++i)
-      entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
-    const VkSpecializationInfo constants{uint32_t(entries.size()), entries.data(),
-                                         desc.constants.size() * sizeof(uint32_t), desc.constants.data()};
-    if (!entries.empty()) info.stage.pSpecializationInfo = &constants;
-    info.layout = out.layout;
-    vk_check(vkCreateComputePipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &out.handle),
-             "vkCreateComputePipelines", "for '" + desc.name + "'");
+  return find_or_make(key.take(), [&](CreationFeedback& feedback) {
+    Pipeline p = make_layout(context_, desc.bindings, desc.push_constant_bytes, VK_SHADER_STAGE_COMPUTE_BIT,
+                             VK_PIPELINE_BIND_POINT_COMPUTE);
+    return finish(context_, p, desc.name, [&](Pipeline& out) {
+      ShaderModule module(context_, desc.shader);
+      auto info =
+          vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO, feedback.chain(1));
+      info.stage = vk_struct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+      info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+      info.stage.module = module.handle();
+      info.stage.pName = "main";
+      std::vector<VkSpecializationMapEntry> entries;
+      for (uint32_t i = 0; i < desc.constants.size(); ++i)
+        entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
+      const VkSpecializationInfo constants{uint32_t(entries.size()), entries.data(),
+                                           desc.constants.size() * sizeof(uint32_t), desc.constants.data()};
+      if (!entries.empty()) info.stage.pSpecializationInfo = &constants;
+      info.layout = out.layout;
+      vk_check(vkCreateComputePipelines(context_.device(), cache_, 1, &info, nullptr, &out.handle),
+               "vkCreateComputePipelines", "for '" + desc.name + "'");
+    });
   });
-  return pipelines_.emplace(std::move(bytes), p).first->second;
 }
 
 const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
@@ -184,92 +260,93 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
   key.add_all(std::span(desc.vertex_bindings)).add_all(std::span(desc.vertex_attributes));
   key.add(desc.topology).add(desc.cull).add(desc.front_face).add_all(std::span(desc.color_formats)).add(desc.blend);
   key.add(desc.depth_format).add(desc.depth_test).add(desc.depth_write).add(desc.depth_compare);
-  std::string bytes = key.take();
-  if (auto it = pipelines_.find(bytes); it != pipelines_.end()) return it->second;
+  return find_or_make(key.take(), [&](CreationFeedback& feedback) {
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    Pipeline p =
+        make_layout(context_, desc.bindings, desc.push_constant_bytes, stages, VK_PIPELINE_BIND_POINT_GRAPHICS);
+    return finish(context_, p, desc.name, [&](Pipeline& out) {
+      ShaderModule vertex(context_, desc.vertex_shader), fragment(context_, desc.fragment_shader);
+      VkPipelineShaderStageCreateInfo shader_stages[2];
+      for (auto& s : shader_stages)
+        s = vk_struct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+      shader_stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+      shader_stages[0].module = vertex.handle();
+      shader_stages[0].pName = "main";
+      shader_stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+      shader_stages[1].module = fragment.handle();
+      shader_stages[1].pName = "main";
 
-  const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-  Pipeline p = make_layout(context_, desc.bindings, desc.push_constant_bytes, stages, VK_PIPELINE_BIND_POINT_GRAPHICS);
-  p = finish(context_, p, desc.name, [&](Pipeline& out) {
-    ShaderModule vertex(context_, desc.vertex_shader), fragment(context_, desc.fragment_shader);
-    VkPipelineShaderStageCreateInfo shader_stages[2];
-    for (auto& s : shader_stages)
-      s = vk_struct<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    shader_stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    shader_stages[0].module = vertex.handle();
-    shader_stages[0].pName = "main";
-    shader_stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    shader_stages[1].module = fragment.handle();
-    shader_stages[1].pName = "main";
+      auto vertex_input =
+          vk_struct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+      vertex_input.vertexBindingDescriptionCount = static_cast<uint32_t>(desc.vertex_bindings.size());
+      vertex_input.pVertexBindingDescriptions = desc.vertex_bindings.data();
+      vertex_input.vertexAttributeDescriptionCount = static_cast<uint32_t>(desc.vertex_attributes.size());
+      vertex_input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
+      auto assembly = vk_struct<VkPipelineInputAssemblyStateCreateInfo>(
+          VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+      assembly.topology = desc.topology;
+      auto viewport =
+          vk_struct<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+      viewport.viewportCount = viewport.scissorCount = 1;  // both dynamic
+      auto raster =
+          vk_struct<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+      raster.polygonMode = VK_POLYGON_MODE_FILL;
+      raster.cullMode = desc.cull;
+      raster.frontFace = desc.front_face;
+      raster.lineWidth = 1;
+      auto multisample =
+          vk_struct<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+      multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+      auto depth =
+          vk_struct<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+      depth.depthTestEnable = desc.depth_test;
+      depth.depthWriteEnable = desc.depth_write;
+      depth.depthCompareOp = desc.depth_compare;
 
-    auto vertex_input =
-        vk_struct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    vertex_input.vertexBindingDescriptionCount = static_cast<uint32_t>(desc.vertex_bindings.size());
-    vertex_input.pVertexBindingDescriptions = desc.vertex_bindings.data();
-    vertex_input.vertexAttributeDescriptionCount = static_cast<uint32_t>(desc.vertex_attributes.size());
-    vertex_input.pVertexAttributeDescriptions = desc.vertex_attributes.data();
-    auto assembly =
-        vk_struct<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = desc.topology;
-    auto viewport = vk_struct<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewport.viewportCount = viewport.scissorCount = 1;  // both dynamic
-    auto raster =
-        vk_struct<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = desc.cull;
-    raster.frontFace = desc.front_face;
-    raster.lineWidth = 1;
-    auto multisample =
-        vk_struct<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    auto depth =
-        vk_struct<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
-    depth.depthTestEnable = desc.depth_test;
-    depth.depthWriteEnable = desc.depth_write;
-    depth.depthCompareOp = desc.depth_compare;
+      VkPipelineColorBlendAttachmentState blend{};
+      blend.colorWriteMask =
+          VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+      if (desc.blend != Blend::none) {
+        blend.blendEnable = VK_TRUE;
+        const bool over = desc.blend != Blend::additive;
+        blend.srcColorBlendFactor = desc.blend == Blend::alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+        blend.dstColorBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+        blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        blend.dstAlphaBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+        blend.colorBlendOp = blend.alphaBlendOp = VK_BLEND_OP_ADD;
+      }
+      std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend);
+      auto color =
+          vk_struct<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+      color.attachmentCount = static_cast<uint32_t>(blends.size());
+      color.pAttachments = blends.data();
+      const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+      auto dynamic = vk_struct<VkPipelineDynamicStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+      dynamic.dynamicStateCount = 2;
+      dynamic.pDynamicStates = dynamic_states;
 
-    VkPipelineColorBlendAttachmentState blend{};
-    blend.colorWriteMask =
-        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    if (desc.blend != Blend::none) {
-      blend.blendEnable = VK_TRUE;
-      const bool over = desc.blend != Blend::additive;
-      blend.srcColorBlendFactor = desc.blend == Blend::alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
-      blend.dstColorBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
-      blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-      blend.dstAlphaBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
-      blend.colorBlendOp = blend.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
-    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend);
-    auto color =
-        vk_struct<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
-    color.attachmentCount = static_cast<uint32_t>(blends.size());
-    color.pAttachments = blends.data();
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    auto dynamic = vk_struct<VkPipelineDynamicStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamic_states;
+      auto rendering =
+          vk_struct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO, feedback.chain(2));
+      rendering.colorAttachmentCount = static_cast<uint32_t>(desc.color_formats.size());
+      rendering.pColorAttachmentFormats = desc.color_formats.data();
+      rendering.depthAttachmentFormat = desc.depth_format;
 
-    auto rendering = vk_struct<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
-    rendering.colorAttachmentCount = static_cast<uint32_t>(desc.color_formats.size());
-    rendering.pColorAttachmentFormats = desc.color_formats.data();
-    rendering.depthAttachmentFormat = desc.depth_format;
-
-    auto info = vk_struct<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
-    info.stageCount = 2;
-    info.pStages = shader_stages;
-    info.pVertexInputState = &vertex_input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depth;
-    info.pColorBlendState = &color;
-    info.pDynamicState = &dynamic;
-    info.layout = out.layout;
-    vk_check(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &out.handle),
-             "vkCreateGraphicsPipelines", "for '" + desc.name + "'");
+      auto info = vk_struct<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
+      info.stageCount = 2;
+      info.pStages = shader_stages;
+      info.pVertexInputState = &vertex_input;
+      info.pInputAssemblyState = &assembly;
+      info.pViewportState = &viewport;
+      info.pRasterizationState = &raster;
+      info.pMultisampleState = &multisample;
+      info.pDepthStencilState = &depth;
+      info.pColorBlendState = &color;
+      info.pDynamicState = &dynamic;
+      info.layout = out.layout;
+      vk_check(vkCreateGraphicsPipelines(context_.device(), cache_, 1, &info, nullptr, &out.handle),
+               "vkCreateGraphicsPipelines", "for '" + desc.name + "'");
+    });
   });
-  return pipelines_.emplace(std::move(bytes), p).first->second;
 }
 
 }  // namespace lg

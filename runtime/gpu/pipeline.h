@@ -1,12 +1,16 @@
 // Compute and graphics pipelines (graphics with dynamic rendering: no render passes) made
 // from SPIR-V and cached by a hash of the SPIR-V words and the pipeline state, so asking again
-// for the same pipeline returns the one made before. Descriptors are push descriptors (set 0,
-// VK_KHR_push_descriptor): no pools, no descriptor indexing (lavapipe has none).
+// for the same pipeline returns the one made before. Pipelines are made through a
+// VkPipelineCache whose data can be saved and handed to a later run (pipeline_cache_store.h).
+// Descriptors are push descriptors (set 0, VK_KHR_push_descriptor): no pools, no descriptor
+// indexing (lavapipe has none).
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -75,6 +79,8 @@ VkRenderingAttachmentInfo cleared_attachment(VkImageView view, VkClearValue clea
 VkRenderingInfo rendering_info(uint32_t width, uint32_t height, std::span<const VkRenderingAttachmentInfo> colors,
                                const VkRenderingAttachmentInfo* depth = nullptr);
 
+// Context::pipelines() is the one every executor of a context shares, so a hot reload, a resize
+// or a recompile finds the pipelines the last plan made. Safe to call from several threads.
 class PipelineCache {
  public:
   explicit PipelineCache(Context& context);
@@ -86,12 +92,29 @@ class PipelineCache {
   const Pipeline& compute(const ComputePipelineDesc& desc);
   const Pipeline& graphics(const GraphicsPipelineDesc& desc);
 
-  size_t size() const { return pipelines_.size(); }
+  size_t size() const;
+  // Pipelines made so far (vkCreate*Pipelines calls that succeeded).
+  uint64_t created() const;
+  // Of those, the ones the driver reports it made from its pipeline cache (creation feedback's
+  // APPLICATION_PIPELINE_CACHE_HIT). A driver without a real cache, lavapipe among them, says 0.
+  uint64_t driver_cache_hits() const;
+
+  // The driver's cache data (vkGetPipelineCacheData): what a later run can merge().
+  std::vector<std::byte> driver_data() const;
+  // Adds data from driver_data() of an earlier run to the driver's cache. False when the driver
+  // refuses it (then nothing changes); the data must be checked first (pipeline_cache_file.h).
+  bool merge(std::span<const std::byte> driver_data);
 
  private:
+  template <typename Create>
+  const Pipeline& find_or_make(std::string key, Create&& create);
+
   Context& context_;
+  VkPipelineCache cache_ = VK_NULL_HANDLE;
+  mutable std::mutex mutex_;
   // Keyed by the SPIR-V and state bytes; the map hashes them and compares them in full.
   std::unordered_map<std::string, Pipeline> pipelines_;
+  uint64_t created_ = 0, driver_cache_hits_ = 0;
 };
 
 }  // namespace lg

@@ -100,6 +100,35 @@ TEST(RenderCli, AssetRootAllowsSceneFilePaths) {
   EXPECT_TRUE(fs::exists(dir.file("x.png")));
 }
 
+// The pipeline cache on disk ($XDG_CACHE_HOME/lumagraph): a corrupt file is ignored with one
+// warning naming it and the image is the same; --no-pipeline-cache neither reads nor writes one.
+TEST(RenderCli, ACorruptPipelineCacheFileIsIgnoredWithAWarning) {
+  TempDir dir;
+  const std::string cache_home = "XDG_CACHE_HOME=" + dir.file("cache");
+  auto render = [&](const std::string& out, const std::string& option = "--validate") {
+    return lumagraph({"render", "examples/minimal.json", "--size", "64x36", option, "--out", dir.file(out)},
+                     cache_home);
+  };
+  Outcome first = render("first.png");
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_FALSE(contains(first.err, "warning")) << first.err;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "cache" / "lumagraph")) files.push_back(entry.path());
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0].filename().string().rfind("pipeline-cache-", 0), 0u) << files[0];
+
+  write_text(files[0].string(), "not a pipeline cache, but long enough to hold a header of one");
+  Outcome second = render("second.png");
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_TRUE(contains(second.err, "warning: pipeline cache " + files[0].string() + " ignored: ")) << second.err;
+  EXPECT_EQ(read_text(dir.file("second.png")), read_text(dir.file("first.png")));
+
+  fs::remove_all(dir.path() / "cache");
+  Outcome off = render("off.png", "--no-pipeline-cache");
+  ASSERT_EQ(off.status, 0) << off.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "cache" / "lumagraph"));
+}
+
 TEST(RenderCli, BadOptionsAreUsageErrors) {
   for (std::vector<std::string> args : {std::vector<std::string>{"render", "--frames", "0"},
                                         {"render", "--size", "12x"},

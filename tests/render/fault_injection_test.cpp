@@ -1,7 +1,8 @@
-// Failures injected (graph/fault_injection.h) into device allocations and shader modules while
-// the default graph is compiled for a new frame size and its first frame runs, and into hot
-// reloads: the error names what failed, and the Renderer keeps its last good state, so the next
-// frame renders exactly what a Renderer that never failed renders.
+// Failures injected (graph/fault_injection.h) into device allocations while the default graph
+// is compiled for a new frame size and its first frame runs, into shader modules while a new
+// renderer makes its pipelines (a resize reuses those of the last plan), and into hot reloads:
+// the error names what failed, and the Renderer keeps its last good state, so the next frame
+// renders exactly what a Renderer that never failed renders.
 #include "graph/fault_injection.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "api/renderer.h"
@@ -23,13 +25,19 @@ namespace {
 const std::string kGraph = LUMAGRAPH_SOURCE_DIR "/examples/default.json";
 constexpr FrameSize kSmall{64, 36}, kLarger{96, 54};
 // At most this many of a site's calls are failed one by one (evenly spread, the first and the
-// last among them): every executor build compiles all pipelines again, about a second each.
+// last among them): each try costs a frame, and a new renderer's pipelines, about a second.
 constexpr uint64_t kMaxTried = 8;
 
-Renderer make_renderer() {
+// No pipeline cache on disk: every renderer makes its pipelines afresh, from the same calls.
+RendererOptions test_options() {
   RendererOptions options;
   options.device.validation = true;
-  return Renderer(options);
+  options.pipeline_cache_on_disk = false;
+  return options;
+}
+
+Renderer make_renderer() {
+  return Renderer(test_options());
 }
 
 // The first frame at `size` of a renderer that never failed (the first frame of an executor:
@@ -41,54 +49,69 @@ std::vector<float> clean_first_frame(FrameSize size) {
   return renderer.read_output();
 }
 
-// How many calls at `site` going from kSmall to kLarger makes (compile, executor, first frame).
-uint64_t calls_of_a_resize(FaultSite site) {
-  Renderer renderer = make_renderer();
-  renderer.load_graph(kGraph);
-  renderer.render(default_world(), kSmall);
+// Where failures are injected: a resize (a compile, a new executor and its first frame) of a
+// renderer that rendered at kSmall, or the first frame of a new renderer, which also makes its
+// pipelines (a resize finds them made).
+enum class Scenario { resize, new_renderer };
+
+// How many calls at `site` the scenario makes.
+uint64_t calls_of(Scenario scenario, FaultSite site) {
+  std::optional<Renderer> renderer;
+  if (scenario == Scenario::resize) {
+    renderer.emplace(test_options());
+    renderer->load_graph(kGraph);
+    renderer->render(default_world(), kSmall);
+  }
   arm_fault(site, std::numeric_limits<uint64_t>::max());
-  renderer.render(default_world(), kLarger);
+  if (!renderer) {
+    renderer.emplace(test_options());
+    renderer->load_graph(kGraph);
+  }
+  renderer->render(default_world(), kLarger);
   const uint64_t calls = fault_site_calls(site);
   arm_fault(site, 0);
   return calls;
 }
 
-void fail_each_call_of_a_resize(FaultSite site, const std::string& failed_call) {
-  const uint64_t calls = calls_of_a_resize(site);
-  ASSERT_GT(calls, 0u) << "the resize makes no call at this site, so nothing would be tested";
+void fail_each_call(Scenario scenario, FaultSite site, const std::string& failed_call) {
+  const uint64_t calls = calls_of(scenario, site);
+  ASSERT_GT(calls, 0u) << "the scenario makes no call at this site, so nothing would be tested";
   const std::vector<float> small = clean_first_frame(kSmall), larger = clean_first_frame(kLarger);
 
-  Renderer renderer = make_renderer();
-  renderer.load_graph(kGraph);
-  renderer.render(default_world(), kSmall);
+  std::optional<Renderer> renderer;
   const uint64_t tried = std::min(calls, kMaxTried);
   for (uint64_t i = 0; i < tried; ++i) {
     const uint64_t nth = tried == 1 ? 1 : 1 + i * (calls - 1) / (tried - 1);
-    // Alternate sizes, so every attempt builds a new executor the same way.
-    const bool grow = i % 2 == 0;
+    if (scenario == Scenario::new_renderer || !renderer) {
+      renderer.emplace(test_options());
+      renderer->load_graph(kGraph);
+      if (scenario == Scenario::resize) renderer->render(default_world(), kSmall);
+    }
+    // A resize alternates sizes, so every attempt builds a new executor the same way.
+    const bool grow = scenario == Scenario::new_renderer || i % 2 == 0;
     SCOPED_TRACE("call " + std::to_string(nth) + " of " + std::to_string(calls) + (grow ? ", growing" : ", shrinking"));
     arm_fault(site, nth);
     try {
-      renderer.render(default_world(), grow ? kLarger : kSmall);
+      renderer->render(default_world(), grow ? kLarger : kSmall);
       ADD_FAILURE() << "the injected failure did not reach the caller";
     } catch (const std::exception& e) {
       EXPECT_NE(std::string(e.what()).find(failed_call), std::string::npos) << e.what();
     }
     arm_fault(site, 0);
-    renderer.context().take_validation_messages();  // a failed frame may leave some; the next must not
-    renderer.render(default_world(), grow ? kLarger : kSmall);
-    EXPECT_EQ(renderer.read_output(), grow ? larger : small);
-    const auto messages = renderer.context().take_validation_messages();
+    renderer->context().take_validation_messages();  // a failed frame may leave some; the next must not
+    renderer->render(default_world(), grow ? kLarger : kSmall);
+    EXPECT_EQ(renderer->read_output(), grow ? larger : small);
+    const auto messages = renderer->context().take_validation_messages();
     EXPECT_TRUE(messages.empty()) << describe(messages);
   }
 }
 
 TEST(FaultInjection, AFailedDeviceAllocationLeavesTheRendererAbleToRenderTheNextFrame) {
-  fail_each_call_of_a_resize(FaultSite::device_allocation, "vkAllocateMemory");
+  fail_each_call(Scenario::resize, FaultSite::device_allocation, "vkAllocateMemory");
 }
 
 TEST(FaultInjection, AFailedShaderModuleLeavesTheRendererAbleToRenderTheNextFrame) {
-  fail_each_call_of_a_resize(FaultSite::shader_module, "vkCreateShaderModule");
+  fail_each_call(Scenario::new_renderer, FaultSite::shader_module, "vkCreateShaderModule");
 }
 
 // Hot reload: a graph file that vanished, was half written, or could not be read keeps the last
