@@ -12,7 +12,7 @@
 namespace lg {
 namespace {
 
-constexpr uint32_t kHistogramTile = 16;  // nodes/post/exposure/shaders/histogram.comp
+constexpr uint32_t kHistogramTile = 64;  // pixels a workgroup counts: nodes/post/exposure/shaders/histogram.comp
 
 struct Push {  // nodes/post/exposure/shaders/exposure_common.glsl
   float histogram_min, histogram_max;

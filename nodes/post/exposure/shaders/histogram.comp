@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The log2-luminance histogram: each workgroup counts its 16x16 pixels in shared memory, then
+// The log2-luminance histogram: each workgroup counts a tile of 64x64 pixels (4x4 per
+// invocation, a pixel's neighbours 16 apart so that reads stay together) in shared memory, then
 // adds its non-empty bins to the global histogram (cleared by the kernel before this pass).
 // Pixels with a NaN or infinite channel are not counted.
 #include "nodes/post/exposure/shaders/exposure_common.glsl"
@@ -15,11 +16,15 @@ shared uint local_counts[kBins];
 void main() {
   local_counts[gl_LocalInvocationIndex] = 0u;  // 256 invocations, one per bin
   barrier();
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (all(lessThan(texel, textureSize(scene_color, 0)))) {
-    vec3 c = texelFetch(scene_color, texel, 0).rgb;
-    if (!any(isnan(c)) && !any(isinf(c))) atomicAdd(local_counts[luminance_bin(luminance(c))], 1u);
-  }
+  ivec2 size = textureSize(scene_color, 0);
+  ivec2 origin = ivec2(gl_WorkGroupID.xy) * 64 + ivec2(gl_LocalInvocationID.xy);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      ivec2 texel = origin + 16 * ivec2(i, j);
+      if (any(greaterThanEqual(texel, size))) continue;
+      vec3 c = texelFetch(scene_color, texel, 0).rgb;
+      if (!any(isnan(c)) && !any(isinf(c))) atomicAdd(local_counts[luminance_bin(luminance(c))], 1u);
+    }
   barrier();
   uint count = local_counts[gl_LocalInvocationIndex];
   if (count > 0u) atomicAdd(counts[gl_LocalInvocationIndex], count);
