@@ -68,8 +68,10 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
   graph_changed_ = false;
 }
 
-const FrameStats& Renderer::render(const World& world, FrameSize frame) {
+const FrameStats& Renderer::render(const World& world, FrameSize frame, FrameTiming timing) {
   SceneView view = make_scene_view(world, float(frame.width) / float(frame.height), has_view_ ? &view_ : nullptr);
+  view.frame_seconds = timing.seconds;
+  view.camera_cut = timing.camera_cut;
   const SceneSummary summary = view.summary();
   const bool compile = !executor_ || graph_changed_ || !summary_ || !(*summary_ == summary) || !(frame_ == frame);
   if (compile) compile_for(summary, frame);

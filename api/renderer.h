@@ -57,6 +57,13 @@ struct RendererOptions {
   std::string pipeline_cache_folder{};
 };
 
+// What temporal nodes need of a frame beyond the world (post.exposure adapts over it): the time
+// since the previous frame and whether the camera cut, which restarts their history.
+struct FrameTiming {
+  float seconds = 1.0f / 60.0f;
+  bool camera_cut = false;
+};
+
 class Renderer {
  public:
   explicit Renderer(const RendererOptions& options = {});
@@ -73,7 +80,7 @@ class Renderer {
   // Renders one frame; compiles first when the graph, the world's scene summary or the frame
   // size changed since the last frame. Throws GraphError when the graph does not compile for
   // this scene, ExecutorError or GpuError when the frame fails.
-  const FrameStats& render(const World& world, FrameSize frame);
+  const FrameStats& render(const World& world, FrameSize frame, FrameTiming timing = {});
 
   // Valid after the first render().
   const Plan& plan() const;

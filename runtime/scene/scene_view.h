@@ -206,6 +206,11 @@ struct SceneView {
   std::vector<IrradianceVolumeData> irradiance_volumes;
   std::vector<ReflectionProbeData> reflection_probes;
   float exposure = 0.0f;  // EV from the world's PostProcessSettings
+  // Frame timing for temporal nodes (post.exposure's adaptation): seconds since the previous
+  // frame, and a camera cut (history no longer describes this view: temporal state restarts).
+  // lg::Renderer::render's FrameTiming sets them; make_scene_view leaves 1/60 s and no cut.
+  float frame_seconds = 1.0f / 60.0f;
+  bool camera_cut = false;
 
   // The draw's material, or the default PbrMaterial when it has none (material -1, which the ECS
   // uses for "default") or an index out of range.
