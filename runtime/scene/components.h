@@ -40,6 +40,9 @@ struct Camera {
 struct MeshRenderer {
   int mesh = -1;      // index into World::meshes()
   int material = -1;  // index into World::materials(), or -1 for the default material
+  // Whether reflection probes' captures see the mesh: off for objects inside a probe's proxy
+  // that the proxy does not model (docs/reflection-probes.md).
+  bool captured_by_probes = true;
 };
 
 struct DirectionalLight {

@@ -109,6 +109,7 @@ void add_draws(const World& world, const SceneView* previous, SceneView& view) {
     auto found = previous_worlds.find(e.id());
     d.previous_world = found != previous_worlds.end() ? found->second : d.world;
     d.entity = e.id();
+    d.captured_by_probes = r.captured_by_probes;
     view.draws.push_back(d);
   });
   // Dense order changes with removals; entity order keeps the view stable from frame to frame.

@@ -24,10 +24,23 @@ namespace {
 
 constexpr double max_length = 1e6, max_power = 1e9;
 
-const std::vector<std::string> entity_keys = {
-    "name",       "parent",     "transform",         "model",           "shape",      "material",
-    "occlusion",  "camera",     "directional_light", "point_light",     "spot_light", "sphere_light",
-    "tube_light", "rect_light", "irradiance_volume", "reflection_probe"};
+const std::vector<std::string> entity_keys = {"name",
+                                              "parent",
+                                              "transform",
+                                              "model",
+                                              "shape",
+                                              "material",
+                                              "occlusion",
+                                              "camera",
+                                              "directional_light",
+                                              "point_light",
+                                              "spot_light",
+                                              "sphere_light",
+                                              "tube_light",
+                                              "rect_light",
+                                              "irradiance_volume",
+                                              "reflection_probe",
+                                              "captured_by_probes"};
 
 class SceneFileReader {
  public:
@@ -145,6 +158,9 @@ class SceneFileReader {
     else if (f.get("material"))
       f.error_at("material", "a material needs a 'model' or a 'shape' to apply to");
     if (const JsonValue* bake = f.get("occlusion")) attach_occlusion(f, *bake, e);
+    bool captured = true;
+    f.boolean("captured_by_probes", captured);
+    if (!captured) each_drawn_part(e, [](MeshRenderer& r) { r.captured_by_probes = false; });
     components(f, e);
   }
 
@@ -239,11 +255,17 @@ class SceneFileReader {
     }
     if (material < 0) return;
     // The override applies to everything the model placed: the entity's descendants.
+    each_drawn_part(e, [&](MeshRenderer& r) { r.material = material; });
+  }
+
+  // Calls f on the meshes of entity e and of its descendants (what its model placed).
+  template <class F>
+  void each_drawn_part(Entity e, F&& f) {
     world_.each<MeshRenderer>([&](Entity drawn, MeshRenderer& r) {
       for (Entity a = drawn; !a.is_null();
            a = world_.try_get<Transform>(a) ? world_.get<Transform>(a).parent : Entity{})
         if (a == e) {
-          r.material = material;
+          f(r);
           return;
         }
     });

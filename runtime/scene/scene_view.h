@@ -102,6 +102,7 @@ struct DrawItem {
   glm::mat4 world{1.0f};
   glm::mat4 previous_world{1.0f};  // last frame's, for motion vectors
   uint64_t entity = 0;             // Entity::id() of its world entity: matches draws across frames
+  bool captured_by_probes = true;  // MeshRenderer::captured_by_probes
 };
 
 // Vulkan clip space with reversed Z: depth 1 at the near plane, 0 at infinity (infinite far

@@ -190,5 +190,41 @@ TEST(RasterCapture, TimeSlicedSecondBounceStaysCleanAndFollowsTheLight) {
   EXPECT_GT(last, 1.1 * first);
 }
 
+// The reflection room's chrome ball is "captured_by_probes": false (it sits inside the probe's
+// proxy, which does not model it). Every face of the raster capture (16x16, the lamp alone) equals
+// the capture of the room with the ball not drawn at all, and the face the ball is on (-Y: the
+// ball is below the probe) changes when the ball is captured. Fails if the capture drew it anyway.
+TEST(RasterCapture, EntitiesNotCapturedByProbesAreLeftOut) {
+  const char* graph = R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "probes", "type": "gi.reflection_capture", "params": { "capture": "raster", "face_size": 16 } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "probes.gbuffer" } ],
+    "outputs": [ "probes.reflections" ] })";
+  auto faces = [&](World world) {
+    std::vector<Entity> environments;
+    world.each<EnvironmentLight>([&](Entity e, const EnvironmentLight&) { environments.push_back(e); });
+    for (Entity e : environments) world.remove<EnvironmentLight>(e);
+    auto renderer = make_renderer(graph);
+    renderer->render(world, kFrame);
+    expect_clean(*renderer);
+    std::vector<std::vector<float>> out;
+    for (int f = 0; f < 6; ++f)
+      out.push_back(capture_of(*renderer).read_captured_face(renderer->executor().submitter(), 0, f));
+    return out;
+  };
+  const World room = load_world(kRoom);
+  Entity ball;
+  room.each<MeshRenderer>([&](Entity e, const MeshRenderer& r) {
+    if (!r.captured_by_probes) ball = e;
+  });
+  ASSERT_FALSE(ball.is_null()) << "the reflection room no longer leaves its ball out of the captures";
+  World without = load_world(kRoom), captured = load_world(kRoom);
+  without.remove<MeshRenderer>(ball);
+  captured.get<MeshRenderer>(ball).captured_by_probes = true;
+  const auto left_out = faces(load_world(kRoom)), absent = faces(std::move(without)), seen = faces(std::move(captured));
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(left_out[f], absent[f]) << "face " << f;
+  EXPECT_NE(seen[3], absent[3]);
+}
+
 }  // namespace
 }  // namespace lg::test

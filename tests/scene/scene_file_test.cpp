@@ -54,9 +54,9 @@ const char* every_kind = R"({
   "post": {"exposure": -1},
   "entities": [
     {"name": "stage", "transform": {"position": [0, 1, 0], "rotation": [0, 90, 0]}},
-    {"name": "cube", "parent": "stage", "model": "cube.obj", "material": "gold"},
+    {"name": "cube", "parent": "stage", "model": "cube.obj", "material": "gold", "captured_by_probes": false},
     {"name": "gltf", "model": "scene.gltf", "transform": {"scale": 0.5}},
-    {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "material": "red"},
+    {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "material": "red", "captured_by_probes": false},
     {"name": "floor", "shape": {"type": "quad", "size": [10, 10]}},
     {"name": "pill", "shape": {"type": "capsule", "length": 1, "radius": 0.2}},
     {"name": "box", "shape": {"type": "box", "size": [1, 2, 3]}},
@@ -117,13 +117,16 @@ TEST(SceneFile, EveryKindOfEntityLoads) {
   int gold = -1;
   for (size_t i = 0; i < v.materials.size(); ++i)
     if (v.materials[i].name == "gold") gold = static_cast<int>(i);
-  size_t gold_draws = 0;
+  size_t gold_draws = 0, uncaptured = 0;
   for (const auto& d : v.draws) {
+    uncaptured += d.captured_by_probes ? 0 : 1;
     if (d.material != gold) continue;
     ++gold_draws;
     EXPECT_NEAR(d.world[3].y, 1.0f, 1e-6f);  // moved with the stage
+    EXPECT_FALSE(d.captured_by_probes);      // "captured_by_probes" applies to the model's meshes too
   }
   EXPECT_EQ(gold_draws, 2u);  // cube.obj has two materials, so two meshes
+  EXPECT_EQ(uncaptured, 3u);  // and the ball; every other draw is captured
   // The camera is the one the file placed (the glTF file's camera has a higher index).
   EXPECT_NEAR(v.camera.position.z, 6.0f, 1e-5f);
   EXPECT_FLOAT_EQ(v.camera.aperture, 0.01f);
@@ -201,6 +204,21 @@ TEST(SceneFile, SpotLightAnglesAreChecked) {
                         "5:81: error: 'shadows' must be true or false, found a string "
                         "(/entities/3/spot_light/shadows)"}))
       << testing::PrintToString(errors);
+}
+
+// A non-finite probe size is refused at load with its line and column (by the JSON reader: no
+// number in a scene file can be infinite), as is a "captured_by_probes" that is not a boolean.
+TEST(SceneFile, NonFiniteProbeSizeAndBadCaptureFlagAreRefused) {
+  EXPECT_EQ(errors_of(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "a", "reflection_probe": {"extent": [1, 1e999, 1]}}
+  ]})"),
+            (std::vector<std::string>{"2:54: error: number 1e999 is out of range (the largest is about 1.8e308)"}));
+  EXPECT_EQ(
+      errors_of(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "a", "shape": {"type": "bunny"}, "captured_by_probes": "no"}
+  ]})"),
+      (std::vector<std::string>{
+          "2:69: error: 'captured_by_probes' must be true or false, found a string (/entities/0/captured_by_probes)"}));
 }
 
 // A probe's influence and proxy reach SceneView as written; the proxy defaults to the influence.

@@ -65,6 +65,7 @@ uint64_t probe_bake_key(const SceneView& s) {
 uint64_t reflection_capture_key(const SceneView& s) {
   Hasher h;
   add_transport(h, s);
+  for (const DrawItem& d : s.draws) h.add(d.captured_by_probes);
   h.add(uint64_t(s.reflection_probes.size()));
   for (const auto& r : s.reflection_probes) {
     const ReflectionProbe& p = r.probe;

@@ -96,7 +96,7 @@ void RasterCubeCapture::record(PassContext& ctx, std::span<const CubeFace> faces
     for (uint32_t i = 0; i < scene.draws.size(); ++i) {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
-      if (m.alpha_mode == AlphaMode::blend) continue;
+      if (m.alpha_mode == AlphaMode::blend || !d.captured_by_probes) continue;
       writes.resize(shared);
       add_material_textures(gpu_scene, m, writes);
       const Pipeline& pipeline = mesh_pipeline(ctx, format, m.alpha_mode == AlphaMode::mask, m.double_sided);

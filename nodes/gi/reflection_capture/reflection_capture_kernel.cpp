@@ -213,7 +213,9 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
   void capture_traced(PassContext& ctx) {
     const SceneView& scene = ctx.scene();
     const auto start = std::chrono::steady_clock::now();
-    const PathScene traced(scene, environment(ctx));
+    SceneView seen = scene;  // what the probes see: every bounce of their paths misses the rest
+    std::erase_if(seen.draws, [](const DrawItem& d) { return !d.captured_by_probes; });
+    const PathScene traced(seen, environment(ctx));
     const size_t count = scene.reflection_probes.size();
     const uint32_t size = settings_.face_size;
     const FormatInfo& format = format_info(ProbeCubes::kFormat);
