@@ -8,17 +8,12 @@
 #include <tuple>
 
 #include "graph/compiler/cull.h"
+#include "graph/fnv1a.h"
 #include "graph/json_writer.h"
 #include "graph/limits.h"
 
 namespace lg {
 namespace {
-
-uint64_t fnv1a(uint64_t h, std::string_view text) {
-  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
-  return h;
-}
-constexpr uint64_t fnv_basis = 0xcbf29ce484222325ull;
 
 // A size in texels: x rounded down, at least 1 (NaN too). Past uint32's range it is uint32's
 // largest, which the extent limit then reports. No call to floor, which x86-64's baseline
@@ -307,7 +302,7 @@ class Lowerer {
     uint64_t key = 0;
     if (is_static) {
       const JsonValue& params = out_.static_params.emplace_back(n, node_params(r_, n, roots_)).second;
-      key = fnv1a(fnv1a(fnv_basis, s.type), write_json_compact(params));
+      key = fnv1a(write_json_compact(params), fnv1a(s.type));
       for (int li : rn.input_link) {
         if (li < 0) continue;
         if (r_.links[li].history) {
@@ -319,8 +314,8 @@ class Lowerer {
           const LoweredNode& producer = out_.nodes[out_.resources[source[c]].node];
           is_static &= producer.is_static;
           char digits[24];
-          key = fnv1a(key,
-                      std::string_view(digits, std::to_chars(digits, digits + sizeof digits, producer.cache_key).ptr));
+          key = fnv1a(std::string_view(digits, std::to_chars(digits, digits + sizeof digits, producer.cache_key).ptr),
+                      key);
         }
       }
     }
@@ -345,7 +340,7 @@ class Lowerer {
       const PassSpec& spec = s.passes[p];
       LoweredPass pass{.name = joined({id(n), "/", spec.name}),
                        .accesses = std::pmr::vector<LoweredAccess>(out_.arena.get()),
-                       .cache_key = is_static ? fnv1a(key, spec.name) : 0,
+                       .cache_key = is_static ? fnv1a(spec.name, key) : 0,
                        .node = n,
                        .pass = static_cast<int>(p),
                        .queue = spec.queue,

@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 #include <stdexcept>
 
+#include "graph/fnv1a.h"
 #include "runtime/scene/mesh_tangents.h"
 #include "runtime/scene/mesh_tools.h"
 
@@ -61,10 +62,8 @@ WorldMesh make_world_mesh(const SceneView& view) {
 }
 
 uint64_t world_mesh_hash(const WorldMesh& mesh) {
-  uint64_t hash = 0xcbf29ce484222325ull;
-  auto add = [&](const void* data, size_t bytes) {
-    for (size_t i = 0; i < bytes; ++i) hash = (hash ^ static_cast<const uint8_t*>(data)[i]) * 0x100000001b3ull;
-  };
+  uint64_t hash = fnv1a_basis;
+  auto add = [&](const void* data, size_t bytes) { hash = fnv1a(data, bytes, hash); };
   add(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
   add(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
   add(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "graph/fnv1a.h"
 #include "nodes/occlusion/reference/height_field_reference.h"
 #include "nodes/occlusion/reference/scene_reference.h"
 #include "nodes/raytrace/world_mesh.h"
@@ -72,14 +73,13 @@ class Key {
  public:
   template <class T>
   Key& add(const T& value) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-    for (size_t i = 0; i < sizeof(T); ++i) hash_ = (hash_ ^ bytes[i]) * 0x100000001b3ull;
+    hash_ = fnv1a(&value, sizeof(T), hash_);
     return *this;
   }
   uint64_t value() const { return hash_; }
 
  private:
-  uint64_t hash_ = 0xcbf29ce484222325ull;
+  uint64_t hash_ = fnv1a_basis;
 };
 
 std::string cache_path(const Options& o, const char* kind, const SceneView& view, const AoSettings& s,

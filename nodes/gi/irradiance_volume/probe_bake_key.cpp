@@ -4,15 +4,15 @@
 #include <glm/mat4x4.hpp>
 #include <string>
 
+#include "graph/fnv1a.h"
+
 namespace lg {
 namespace {
 
 // FNV-1a over values one by one (never a struct's bytes: padding is not part of a light).
 struct Hasher {
-  uint64_t h = 1469598103934665603ull;
-  void bytes(const void* data, size_t size) {
-    for (size_t i = 0; i < size; ++i) h = (h ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
-  }
+  uint64_t h = fnv1a_basis;
+  void bytes(const void* data, size_t size) { h = fnv1a(data, size, h); }
   void add(float v) { bytes(&v, sizeof v); }
   void add(bool v) { add(v ? 1.0f : 0.0f); }
   void add(uint64_t v) { bytes(&v, sizeof v); }

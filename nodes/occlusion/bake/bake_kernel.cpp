@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "graph/fnv1a.h"
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
@@ -39,10 +40,8 @@ OcclusionSettings occlusion_settings(const PlanNode& node) {
 // What the bake depends on in a frame's view: the asset version (mesh contents) and every draw's
 // mesh and transform, hashed (FNV-1a) so that moving an entity re-bakes as a new mesh does.
 uint64_t geometry_key(const SceneView& scene) {
-  uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const void* data, size_t size) {
-    for (size_t i = 0; i < size; ++i) h = (h ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
-  };
+  uint64_t h = fnv1a_basis;
+  auto mix = [&](const void* data, size_t size) { h = fnv1a(data, size, h); };
   mix(&scene.version, sizeof scene.version);
   for (const DrawItem& d : scene.draws) {
     mix(&d.mesh, sizeof d.mesh);
