@@ -60,7 +60,7 @@ bool channel_list_fills(const std::string& value, const std::string& path) {
 
 }  // namespace
 
-void check_exr_header(const std::string& path) {
+void check_exr_header(const std::string& path, uint64_t max_pixels) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff file_size = in.tellg();
   std::array<unsigned char, 8> start{};
@@ -96,7 +96,20 @@ void check_exr_header(const std::string& path) {
                  std::to_string(file_size) + "-byte file");
     if (const int32_t fixed = fixed_size(*type); fixed >= 0 && size != fixed)
       refuse(*name, *type, "declares " + std::to_string(size) + " bytes where its type has " + std::to_string(fixed));
-    if (*type == "chlist") {
+    if (*name == "dataWindow" && *type == "box2i") {
+      // OpenEXR sizes its line buffers from the data window when it opens the file.
+      std::array<unsigned char, 16> box{};
+      in.read(reinterpret_cast<char*>(box.data()), box.size());
+      const auto at_int = [&](size_t i) {
+        return int64_t(int32_t(uint32_t(box[i]) | uint32_t(box[i + 1]) << 8 | uint32_t(box[i + 2]) << 16 |
+                               uint32_t(box[i + 3]) << 24));
+      };
+      const int64_t width = at_int(8) - at_int(0) + 1, height = at_int(12) - at_int(4) + 1;
+      if (width > 0 && height > 0 && uint64_t(width) * uint64_t(height) > max_pixels)
+        refuse(*name, *type,
+               "is " + std::to_string(width) + "x" + std::to_string(height) + ", larger than the limit of " +
+                   std::to_string(max_pixels) + " pixels");
+    } else if (*type == "chlist") {
       std::string value(static_cast<size_t>(size), '\0');
       in.read(value.data(), size);
       if (!channel_list_fills(value, path))

@@ -8,14 +8,15 @@
 // content agree.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace lg {
 
 // Throws ImageFileError naming `path` and the attribute when one runs past the end of the file or
-// disagrees with its type.
+// disagrees with its type, or when the data window holds more than `max_pixels` pixels.
 // Files that do not start with EXR's magic number, and headers cut short (which OpenEXR reports
 // itself), pass.
-void check_exr_header(const std::string& path);
+void check_exr_header(const std::string& path, uint64_t max_pixels);
 
 }  // namespace lg

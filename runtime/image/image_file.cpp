@@ -33,11 +33,13 @@ struct ImageReader::Input {
 ImageReader::ImageReader(const std::string& path) : path_(path), input_(std::make_unique<Input>()) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw ImageFileError(path + ": error: no such image file");
-  check_exr_header(path);
-  // The reader of the file's extension alone: when it failed, ImageInput::open() went on to try
-  // every other format OpenImageIO knows, which cost tens of milliseconds a file and answered a
-  // corrupt EXR with "could not find a format reader".
-  input_->image = OIIO::ImageInput::create(path);
+  check_exr_header(path, kMaxPixels);
+  // The reader of the file's extension alone, made from the extension (a file name lets
+  // OpenImageIO probe the file and try other formats): when it failed, ImageInput::open() went on
+  // to try every format OpenImageIO knows, which cost tens of milliseconds a file and answered a
+  // corrupt EXR with "could not find a format reader". No extension: OpenImageIO guesses.
+  const std::string ext = lower_extension(path);
+  input_->image = OIIO::ImageInput::create(ext.size() > 1 ? ext.substr(1) : path);
   OIIO::ImageSpec opened;
   if (!input_->image || !input_->image->open(path, opened))
     throw ImageFileError(

@@ -90,7 +90,7 @@ TEST(ImageFile, ExrWhoseAttributeSizeDisagreesWithItsContentIsRefusedByName) {
   };
   const std::string channels = with_size(std::string("channels\0chlist\0", 16), 20);
   EXPECT_EQ(open_error(channels).rfind(channels + ": error: the EXR header's attribute 'channels' (chlist) does not "
-                                                   "end at its declared 20 bytes",
+                                                  "end at its declared 20 bytes",
                                        0),
             0u)
       << open_error(channels);
@@ -101,6 +101,28 @@ TEST(ImageFile, ExrWhoseAttributeSizeDisagreesWithItsContentIsRefusedByName) {
                        0),
             0u)
       << open_error(compression);
+}
+
+// OpenEXR sizes its line buffers from the data window when it opens a file: a 300-byte file
+// declaring 2^30 x 16 pixels made it allocate and clear gigabytes before the reader's own
+// limit was checked.
+TEST(ImageFile, ExrWhoseDataWindowIsOverTheLimitIsRefusedBeforeOpenExrOpensIt) {
+  TempFolder folder;
+  const std::vector<float> rgba(4 * 3 * 4, 0.5f);
+  const std::string good = (folder.path / "good.exr").string();
+  save_image(good, 4, 3, rgba, {.compress = false, .full_float = true});
+  std::string bytes = read_bytes(good);
+  const std::string attribute("dataWindow\0box2i\0", 17);
+  const size_t window = bytes.find(attribute);
+  ASSERT_NE(window, std::string::npos);
+  const size_t x_max = window + attribute.size() + 4 + 8;       // after the size: xMin, yMin, then xMax
+  bytes.replace(x_max, 4, std::string("\xff\xff\xff\x3f", 4));  // 2^30 - 1
+  const std::string bad = folder.write("wide.exr", bytes);
+  EXPECT_EQ(open_error(bad).rfind(bad + ": error: the EXR header's attribute 'dataWindow' (box2i) is 1073741824x3, "
+                                        "larger than the limit of 67108864 pixels",
+                                  0),
+            0u)
+      << open_error(bad);
 }
 
 TEST(ImageFile, ExrWithANameLongerThanAnyExrAllowsIsRefused) {
