@@ -99,8 +99,7 @@ int main(int argc, char** argv) {
   std::printf("%3s %22s %12s %12s\n", "k", "ms (fastest/median)", "mean error", "largest");
   for (const int k : {2, 4}) {
     // The frame is the G-buffer's size; test.image at 1/k of it.
-    test::ExposureHarness h(context,
-                            test::guided_graph(R"({ "id": "node", "type": "post.upsample" })", 1.0 / k),
+    test::ExposureHarness h(context, test::guided_graph(R"({ "id": "node", "type": "post.upsample" })", 1.0 / k),
                             test::smooth_low_image(k, o.width, o.height), FrameSize{o.width, o.height});
     test::show_cornell_box(h, o.width, o.height);
     const bench::Timing t = bench::time_node(h, o.frames);

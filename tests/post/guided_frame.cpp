@@ -26,6 +26,15 @@ void show_cornell_box(ExposureHarness& h, uint32_t frame_width, uint32_t frame_h
   h.scene() = make_scene_view(world, float(frame_width) / float(frame_height));
 }
 
+std::string frame_error(ExposureHarness& h) {
+  try {
+    h.run_frame();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
+}
+
 std::vector<float> gbuffer_depth(ExposureHarness& h) {
   const std::vector<float> texels = h.executor().read_image("gbuf.gbuffer.depth");
   std::vector<float> depth;

@@ -21,6 +21,9 @@ std::string guided_graph(std::string_view node, double image_scale = 1, double g
 // Puts the Cornell box, seen by its camera, into the harness's scene.
 void show_cornell_box(ExposureHarness& h, uint32_t frame_width, uint32_t frame_height);
 
+// The message of what one frame throws; empty if it throws nothing.
+std::string frame_error(ExposureHarness& h);
+
 // The G-buffer's device depth after a frame, one float a pixel (reversed Z: 0 is the sky).
 std::vector<float> gbuffer_depth(ExposureHarness& h);
 

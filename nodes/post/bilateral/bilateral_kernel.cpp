@@ -63,9 +63,10 @@ class BilateralKernel final : public NodeKernel {
                                       sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
                                       storage_image(4, target.view())};
     const bool full = direction[0] == 0 && direction[1] == 0;
-    dispatch_compute(ctx, full ? "nodes/post/bilateral/shaders/bilateral_full.comp"
-                               : "nodes/post/bilateral/shaders/bilateral_line.comp",
-                     writes, target.desc().width, target.desc().height, std::as_bytes(std::span(&push, 1)));
+    dispatch_compute(
+        ctx,
+        full ? "nodes/post/bilateral/shaders/bilateral_full.comp" : "nodes/post/bilateral/shaders/bilateral_line.comp",
+        writes, target.desc().width, target.desc().height, std::as_bytes(std::span(&push, 1)));
   }
 
   bool separable_;
