@@ -15,10 +15,12 @@
 #include "nodes/occlusion/baked/baked_kernel.h"
 #include "nodes/occlusion/gtao/gtao_kernel.h"
 #include "nodes/occlusion/ssao/ssao_kernel.h"
+#include "nodes/post/bilateral/bilateral_kernel.h"
 #include "nodes/post/bloom/bloom_kernel.h"
 #include "nodes/post/dof/dof_kernel.h"
 #include "nodes/post/exposure/exposure_kernel.h"
 #include "nodes/post/tonemap/tonemap_kernel.h"
+#include "nodes/post/upsample/upsample_kernel.h"
 #include "nodes/scene/forward_transparent/forward_transparent_kernel.h"
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
@@ -43,10 +45,12 @@ const KernelRegistry& builtin_kernels() {
     r.add("occlusion.baked", make_baked_kernel);
     r.add("occlusion.gtao", make_gtao_kernel);
     r.add("occlusion.ssao", make_ssao_kernel);
+    r.add("post.bilateral", make_bilateral_kernel);
     r.add("post.bloom", make_bloom_kernel);
     r.add("post.dof", make_dof_kernel);
     r.add("post.exposure", make_exposure_kernel);
     r.add("post.tonemap", make_tonemap_kernel);
+    r.add("post.upsample", make_upsample_kernel);
     r.add("scene.forward_transparent", make_forward_transparent_kernel);
     return r;
   }();

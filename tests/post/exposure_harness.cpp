@@ -18,7 +18,8 @@ namespace lg::test {
 namespace {
 
 constexpr std::string_view kImageSchema = R"({ "type": "test.image", "doc": "The test's image, copied in every frame.",
-  "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "doc": "The image." } ],
+  "params": [ { "name": "scale", "type": "float", "default": 1, "min": 0.25, "max": 1, "doc": "Its size over the frame's." } ],
+  "outputs": [ { "name": "color", "type": "texture2d:hdr", "extent": "frame", "scale": "param:scale", "doc": "The image." } ],
   "passes": [ { "name": "copy", "queue": "compute", "uses": { "out.color": "storage_write" } } ] })";
 
 // Copies the host image through a staging buffer into its output, which the plan leaves in
@@ -78,11 +79,12 @@ Plan compile_graph(const Context& context, std::string_view graph_json, FrameSiz
 
 }  // namespace
 
-ExposureHarness::ExposureHarness(Context& context, std::string_view graph_json, HostImage image)
+ExposureHarness::ExposureHarness(Context& context, std::string_view graph_json, HostImage image,
+                                 std::optional<FrameSize> frame)
     : image_(std::make_shared<HostImage>(std::move(image))), kernels_(builtin_kernels()), gpu_scene_(context) {
   kernels_.add("test.image", [image = image_](const PlanNode&) { return std::make_unique<ImageKernel>(image); });
-  executor_ = std::make_unique<Executor>(context, kernels_,
-                                         compile_graph(context, graph_json, {image_->width, image_->height}));
+  executor_ = std::make_unique<Executor>(
+      context, kernels_, compile_graph(context, graph_json, frame.value_or(FrameSize{image_->width, image_->height})));
 }
 
 FrameStats ExposureHarness::run_frame() {

@@ -1,15 +1,18 @@
 // Running post.exposure (and post.tonemap after it) on an image the test holds: a test-only
 // node, test.image, copies that image into its output every frame, so a graph of built-in
 // post nodes can be fed a real HDR file or a synthetic image and run frame after frame. Shared
-// by the exposure tests and its benchmark.
+// by the exposure tests and its benchmark, and by the bilateral and upsample tests, which put a
+// world in scene() for scene.gbuffer to draw.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "graph/compiler.h"
 #include "runtime/exec/executor.h"
 #include "runtime/exec/frame_stats.h"
 #include "runtime/exec/gpu_scene.h"
@@ -26,8 +29,10 @@ struct HostImage {
 // "src.color") compiled without aliasing (every resource stays readable) and run by an executor.
 class ExposureHarness {
  public:
-  // `graph_json`: a graph file's text that may use "test.image"; the frame is `image`'s size.
-  ExposureHarness(Context& context, std::string_view graph_json, HostImage image);
+  // `graph_json`: a graph file's text that may use "test.image"; the frame is `image`'s size
+  // unless `frame` says (test.image's "scale" param then sizes the image against it).
+  ExposureHarness(Context& context, std::string_view graph_json, HostImage image,
+                  std::optional<FrameSize> frame = std::nullopt);
 
   HostImage& image() { return *image_; }  // change it between frames
   SceneView& scene() { return scene_; }   // frame_seconds, camera_cut

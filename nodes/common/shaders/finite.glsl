@@ -4,9 +4,16 @@
 #ifndef LG_FINITE_GLSL
 #define LG_FINITE_GLSL
 
+bool all_finite(vec4 c) {
+  return !any(equal(floatBitsToUint(c) & 0x7f800000u, uvec4(0x7f800000u)));
+}
+
 vec3 finite_or_zero(vec3 c) {
-  bvec3 bad = equal(floatBitsToUint(c) & 0x7f800000u, uvec3(0x7f800000u));
-  return any(bad) ? vec3(0.0) : c;
+  return all_finite(vec4(c, 0.0)) ? c : vec3(0.0);
+}
+
+vec4 finite_or_zero(vec4 c) {
+  return all_finite(c) ? c : vec4(0.0);
 }
 
 #endif

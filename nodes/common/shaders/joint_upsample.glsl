@@ -9,7 +9,7 @@
 // the same four texels, so a caller reads them once (upsample_taps) and then each pixel of the
 // block (upsample_pixel, upsample_block_end): on lavapipe the texel fetches are the cost, and
 // this reads 2 + 12 / k^2 a pixel (5 at k = 2) instead of 14. For any pass that computes smooth light at a
-// fraction of the resolution (the irradiance volume lookup, GTAO; post.upsample).
+// fraction of the resolution (the irradiance volume lookup, GTAO, post.upsample).
 #ifndef LG_JOINT_UPSAMPLE_GLSL
 #define LG_JOINT_UPSAMPLE_GLSL
 
@@ -59,6 +59,12 @@ UpsampleGuide upsample_guide(sampler2D depth_tex, sampler2D normal_tex, ivec2 lo
   return guide;
 }
 
+// Tap t's bilinear weight (t = 0..3 as the guide's) for the pixel at fraction `f`.
+float upsample_bilinear(int t, vec2 f) {
+  vec2 b = mix(1.0 - f, f, vec2(t & 1, t >> 1));
+  return b.x * b.y;
+}
+
 // The weights of the four taps (summing to 1) for the pixel at fraction `f` (in [0, 1)) of the
 // way from tap 0 toward tap 3, with G-buffer depth `depth` (> 0) and normal n (unnormalized, as
 // the guide's); all 0 where every tap is sky. Callers that upsample several images at once
@@ -80,8 +86,7 @@ vec4 upsample_weights(UpsampleGuide guide, float depth, vec3 n, vec2 f) {
       best_rank = rank;
       best = t;
     }
-    vec2 b = mix(1.0 - f, f, vec2(t & 1, t >> 1));
-    weights[t] = b.x * b.y * alike;
+    weights[t] = upsample_bilinear(t, f) * alike;
     total += weights[t];
   }
   // Below 1e-3 the bilinear neighbours are all unlike the pixel and their blend is noise.
