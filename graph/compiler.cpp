@@ -5,6 +5,7 @@
 #include "graph/compiler/assemble.h"
 #include "graph/compiler/cull.h"
 #include "graph/compiler/lifetimes.h"
+#include "graph/compiler/requirements.h"
 #include "graph/compiler/resolve.h"
 #include "graph/compiler/schedule.h"
 #include "graph/compiler/specialize.h"
@@ -50,6 +51,11 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   dump("specialize", [&] { return dump_node_states(resolved, states); });
   states = timer.run("cull", [&] { return cull(resolved, std::move(states)); });
   dump("cull", [&] { return dump_node_states(resolved, states); });
+  timer.run("requirements", [&] {
+    check_requirements(resolved, states, options.scene, diagnostics);
+    return 0;
+  });
+  if (diagnostics.has_errors()) return result;
 
   auto lowered = timer.run(
       "lower", [&] { return lower(resolved, *order_nodes, states, options.frame, options.roots, diagnostics); });

@@ -108,6 +108,16 @@ struct BypassRule {
   std::string reason;
 };
 
+// Inputs an active node cannot run without in some configurations: when `when` holds (if given)
+// and the scene has `scene_has` (if given), every group of `linked` needs one of its inputs fed
+// after specialization; the compiler refuses the graph otherwise, naming the node and inputs.
+struct LinkRequirement {
+  std::optional<Condition> when;
+  std::optional<SceneFeature> scene_has;
+  std::vector<std::vector<int>> linked;  // each group: any one of these inputs
+  std::string reason;                    // why, for the message
+};
+
 struct NodeSchema {
   std::string type;      // "post.bloom"
   std::string category;  // "post"
@@ -117,6 +127,7 @@ struct NodeSchema {
   std::vector<ParamSpec> params;
   std::vector<PassSpec> passes;
   std::vector<BypassRule> bypass;
+  std::vector<LinkRequirement> requires_linked;
   bool is_static = false;  // result depends only on params and static inputs: cached across frames
   bool is_output = false;  // a sink: its inputs are results of the frame
 

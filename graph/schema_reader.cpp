@@ -15,7 +15,7 @@ class SchemaReader {
 
   void read(const JsonValue& root) {
     if (!expect_object(root, "")) return;
-    check_keys(root, "", {"type", "doc", "static", "output", "inputs", "outputs", "resources", "params", "passes", "bypass"});
+    check_keys(root, "", {"type", "doc", "static", "output", "inputs", "outputs", "resources", "params", "passes", "bypass", "requires"});
     s_.type = string_at(root, "", "type", true);
     s_.category = s_.type.substr(0, s_.type.find('.'));
     s_.doc = string_at(root, "", "doc", true);
@@ -27,6 +27,7 @@ class SchemaReader {
     each(root, "resources", [&](const JsonValue& v, const std::string& p) { s_.resources.push_back(port(v, p, false)); });
     each(root, "passes", [&](const JsonValue& v, const std::string& p) { pass(v, p); });
     each(root, "bypass", [&](const JsonValue& v, const std::string& p) { bypass(v, p); });
+    each(root, "requires", [&](const JsonValue& v, const std::string& p) { requirement(v, p); });
     if (s_.passes.empty() && !s_.is_output) d_.error(root.pos(), "/passes", "a node needs at least one pass");
   }
 
@@ -253,36 +254,74 @@ class SchemaReader {
     s_.passes.push_back(std::move(spec));
   }
 
+  // A bypass's or a requirement's "when": {"scene_lacks": FEATURE} or {"param": NAME, "equals" or
+  // "at_most": VALUE}, either with "unless_linked": an input's name or a list of them.
+  Condition condition(const JsonValue& when, const std::string& wp) {
+    Condition c;
+    if (const JsonValue* lacks = when.find("scene_lacks")) {
+      auto f = lacks->is_string() ? parse_scene_feature(lacks->as_string()) : std::nullopt;
+      if (!f) d_.error(lacks->pos(), wp, "unknown scene feature");
+      else c = {Condition::Kind::scene_lacks, *f, -1, {}};
+    } else if (const JsonValue* param = when.find("param")) {
+      c.param = param->is_string() ? s_.find_param(param->as_string()) : -1;
+      if (c.param < 0) d_.error(param->pos(), wp, "no such param");
+      if (const JsonValue* eq = when.find("equals")) c = {Condition::Kind::param_equals, SceneFeature::count, c.param, *eq};
+      else if (const JsonValue* le = when.find("at_most")) c = {Condition::Kind::param_at_most, SceneFeature::count, c.param, *le};
+      else d_.error(when.pos(), wp, "expected \"equals\" or \"at_most\"");
+    } else {
+      d_.error(when.pos(), wp, "expected {\"scene_lacks\": FEATURE} or {\"param\": NAME, \"equals\"|\"at_most\": VALUE}");
+    }
+    if (const JsonValue* unless = when.find("unless_linked")) {
+      for (const JsonValue& name : one_or_many(*unless)) {
+        const int input = name.is_string() ? s_.find_input(name.as_string()) : -1;
+        if (input < 0) d_.error(name.pos(), wp, "\"unless_linked\" names no input");
+        else c.unless_linked.push_back(input);
+      }
+    }
+    return c;
+  }
+
+  static std::span<const JsonValue> one_or_many(const JsonValue& v) {
+    return v.is_array() ? std::span<const JsonValue>(v.items()) : std::span<const JsonValue>(&v, 1);
+  }
+
+  // {"when": CONDITION (optional), "scene_has": FEATURE (optional), "linked": [INPUT or [INPUT, ...],
+  // ...], "reason": TEXT}: each entry of "linked" must be fed, a list by any one of its inputs.
+  void requirement(const JsonValue& v, const std::string& p) {
+    check_keys(v, p, {"when", "scene_has", "linked", "reason"});
+    LinkRequirement req;
+    if (const JsonValue* when = v.find("when")) {
+      if (!when->is_object()) d_.error(when->pos(), json_pointer_append(p, "when"), "expected an object");
+      else req.when = condition(*when, json_pointer_append(p, "when"));
+    }
+    if (const JsonValue* has = v.find("scene_has")) {
+      req.scene_has = has->is_string() ? parse_scene_feature(has->as_string()) : std::nullopt;
+      if (!req.scene_has) d_.error(has->pos(), json_pointer_append(p, "scene_has"), "unknown scene feature");
+    }
+    const JsonValue* linked = v.find("linked");
+    const std::string lp = json_pointer_append(p, "linked");
+    if (!linked || !linked->is_array() || linked->items().empty()) {
+      d_.error(linked ? linked->pos() : v.pos(), lp, "expected a list of input names (a list in it: any one of them)");
+    } else {
+      for (const JsonValue& group : linked->items()) {
+        std::vector<int>& inputs = req.linked.emplace_back();
+        for (const JsonValue& name : one_or_many(group)) {
+          const int input = name.is_string() ? s_.find_input(name.as_string()) : -1;
+          if (input < 0) d_.error(name.pos(), lp, "names no input");
+          else inputs.push_back(input);
+        }
+      }
+    }
+    req.reason = string_at(v, p, "reason", true);
+    s_.requires_linked.push_back(std::move(req));
+  }
+
   void bypass(const JsonValue& v, const std::string& p) {
     check_keys(v, p, {"when", "forward", "reason"});
     BypassRule rule;
     const JsonValue* when = v.find("when");
-    std::string wp = json_pointer_append(p, "when");
-    if (!when || !when->is_object()) {
-      d_.error(v.pos(), p, "missing \"when\"");
-    } else if (const JsonValue* lacks = when->find("scene_lacks")) {
-      auto f = lacks->is_string() ? parse_scene_feature(lacks->as_string()) : std::nullopt;
-      if (!f) d_.error(lacks->pos(), wp, "unknown scene feature");
-      else rule.when = {Condition::Kind::scene_lacks, *f, -1, {}};
-    } else if (const JsonValue* param = when->find("param")) {
-      rule.when.param = param->is_string() ? s_.find_param(param->as_string()) : -1;
-      if (rule.when.param < 0) d_.error(param->pos(), wp, "no such param");
-      if (const JsonValue* eq = when->find("equals")) rule.when = {Condition::Kind::param_equals, SceneFeature::count, rule.when.param, *eq};
-      else if (const JsonValue* le = when->find("at_most")) rule.when = {Condition::Kind::param_at_most, SceneFeature::count, rule.when.param, *le};
-      else d_.error(when->pos(), wp, "expected \"equals\" or \"at_most\"");
-    } else {
-      d_.error(when->pos(), wp, "expected {\"scene_lacks\": FEATURE} or {\"param\": NAME, \"equals\"|\"at_most\": VALUE}");
-    }
-    // "unless_linked": an input's name, or a list of them.
-    if (const JsonValue* unless = when ? when->find("unless_linked") : nullptr) {
-      const std::span<const JsonValue> names =
-          unless->is_array() ? std::span<const JsonValue>(unless->items()) : std::span<const JsonValue>(unless, 1);
-      for (const JsonValue& name : names) {
-        const int input = name.is_string() ? s_.find_input(name.as_string()) : -1;
-        if (input < 0) d_.error(name.pos(), wp, "\"unless_linked\" names no input");
-        else rule.when.unless_linked.push_back(input);
-      }
-    }
+    if (!when || !when->is_object()) d_.error(v.pos(), p, "missing \"when\"");
+    else rule.when = condition(*when, json_pointer_append(p, "when"));
     const JsonValue* forward = v.find("forward");
     if (forward && forward->is_object()) {
       for (const auto& [out, in] : forward->members()) {

@@ -1,11 +1,8 @@
 #include "graph/compiler/specialize.h"
 
 namespace lg {
-namespace {
 
-// Whether input `input` of node `n` gets something: it is linked, and not to a bypassed node
-// whose rule forwards nothing (null) to that output.
-bool fed(const ResolvedGraph& resolved, const NodeStates& states, int n, int input) {
+bool input_fed(const ResolvedGraph& resolved, const NodeStates& states, int n, int input) {
   const int li = resolved.nodes[n].input_link[input];
   if (li < 0) return false;
   const ResolvedLink& l = resolved.links[li];
@@ -16,14 +13,16 @@ bool fed(const ResolvedGraph& resolved, const NodeStates& states, int n, int inp
   return true;
 }
 
-bool holds(const Condition& c, const ResolvedGraph& resolved, const NodeStates& states, int n,
-           const SceneSummary& scene) {
+bool condition_holds(const Condition& c, const ResolvedGraph& resolved, const NodeStates& states, int n,
+                     const SceneSummary& scene) {
   const ResolvedNode& node = resolved.nodes[n];
   for (int input : c.unless_linked)
-    if (fed(resolved, states, n, input)) return false;
+    if (input_fed(resolved, states, n, input)) return false;
   switch (c.kind) {
-    case Condition::Kind::scene_lacks: return !scene.has(c.feature);
-    case Condition::Kind::param_equals: return node.param(c.param) == c.value;
+    case Condition::Kind::scene_lacks:
+      return !scene.has(c.feature);
+    case Condition::Kind::param_equals:
+      return node.param(c.param) == c.value;
     case Condition::Kind::param_at_most:
       return node.param(c.param).is_number() && c.value.is_number() &&
              node.param(c.param).as_number() <= c.value.as_number();
@@ -31,11 +30,13 @@ bool holds(const Condition& c, const ResolvedGraph& resolved, const NodeStates& 
   return false;
 }
 
+namespace {
+
 // The first bypass rule of node `n` that holds, or -1.
 int bypass_rule(const ResolvedGraph& resolved, const NodeStates& states, int n, const SceneSummary& scene) {
   const NodeSchema& s = *resolved.nodes[n].schema;
   for (size_t r = 0; r < s.bypass.size(); ++r)
-    if (holds(s.bypass[r].when, resolved, states, n, scene)) return static_cast<int>(r);
+    if (condition_holds(s.bypass[r].when, resolved, states, n, scene)) return static_cast<int>(r);
   return -1;
 }
 

@@ -10,6 +10,13 @@
 
 namespace lg {
 
+// Whether input `input` of node `n` gets something: it is linked, and not to a bypassed node
+// whose rule forwards nothing (null) to that output.
+bool input_fed(const ResolvedGraph& resolved, const NodeStates& states, int n, int input);
+// Whether a bypass's or a requirement's condition holds for node `n` in `scene`.
+bool condition_holds(const Condition& c, const ResolvedGraph& resolved, const NodeStates& states, int n,
+                     const SceneSummary& scene);
+
 NodeStates specialize(const ResolvedGraph& resolved, const SceneSummary& scene);
 JsonValue dump_node_states(const ResolvedGraph& resolved, const NodeStates& states);
 

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "nodes/gi/path_tracer/reference_file.h"
+#include "runtime/image/image_file.h"
 #include "tests/bench/bench_flags.h"
 #include "tests/lighting/reflection_render.h"
 #include "tests/lighting/reflection_worlds.h"
@@ -46,6 +47,8 @@ struct Options {
   std::string worlds = "room,gallery";
   std::string only;  // measure only the configurations whose label contains this
   std::string probe_params;
+  std::string maps_dir;      // where each configuration's error picture goes; empty: none
+  bool errors_only = false;  // no timing at --time-size
 };
 
 struct Point {
@@ -121,22 +124,14 @@ class Measurer {
     if (label.find(o_.only) == std::string::npos) return;
     const Graph graph = test::reflection_graph(config);
     const test::ReflectionFrame e = test::render_reflections(w_.world, o_.width, o_.height, graph, o_.frames, false);
-    const test::ReflectionFrame t =
-        test::render_reflections(w_.world, o_.time_width, o_.time_height, graph, o_.time_frames, false);
     Point p;
     p.world = w_.name;
     p.config = config;
-    const std::vector<double> ms(t.reflection_gpu_ms.begin() + 1, t.reflection_gpu_ms.end());
-    p.median_ms = median(ms);
-    p.min_ms = *std::min_element(ms.begin(), ms.end());
-    p.frame_ms = median({t.frame_gpu_ms.begin() + 1, t.frame_gpu_ms.end()});
-    p.first_extra_ms = t.frame_wall_ms[0] - median({t.frame_wall_ms.begin() + 1, t.frame_wall_ms.end()});
-    const double cpu = median({t.frame_cpu_ms.begin() + 1, t.frame_cpu_ms.end()});
-    if (config.source == ReflectionSource::environment) environment_cpu_ms_ = cpu;
-    p.cpu_ms = cpu - environment_cpu_ms_;
+    if (!o_.errors_only) time(graph, p);
     p.all = error(e, {});
     p.floor = error(e, {w_.floor_roughness});
     p.ball = error(e, {w_.ball_roughness});
+    if (!o_.maps_dir.empty()) save_picture(e, label);
     std::printf("%-16s %-34s %8.2f %8.2f %8.1f %9.1f %9.0f   %7.4f %7.4f %7.4f\n", p.world.c_str(), label.c_str(),
                 p.median_ms, p.min_ms, p.cpu_ms, p.frame_ms, p.first_extra_ms, p.all.relative, p.floor.relative,
                 p.ball.relative);
@@ -147,6 +142,36 @@ class Measurer {
   std::vector<Point> points;
 
  private:
+  // The reflection passes' and the frame's times at --time-size.
+  void time(const Graph& graph, Point& p) {
+    const test::ReflectionFrame t =
+        test::render_reflections(w_.world, o_.time_width, o_.time_height, graph, o_.time_frames, false);
+    const std::vector<double> ms(t.reflection_gpu_ms.begin() + 1, t.reflection_gpu_ms.end());
+    p.median_ms = median(ms);
+    p.min_ms = *std::min_element(ms.begin(), ms.end());
+    p.frame_ms = median({t.frame_gpu_ms.begin() + 1, t.frame_gpu_ms.end()});
+    p.first_extra_ms = t.frame_wall_ms[0] - median({t.frame_wall_ms.begin() + 1, t.frame_wall_ms.end()});
+    const double cpu = median({t.frame_cpu_ms.begin() + 1, t.frame_cpu_ms.end()});
+    if (p.config.source == ReflectionSource::environment) environment_cpu_ms_ = cpu;
+    p.cpu_ms = cpu - environment_cpu_ms_;
+  }
+
+  // The metal pixels' error picture (specular_error_picture, full colour at the reference's mean)
+  // as MAPS/WORLD-LABEL.png, the label's spaces and '=' made '_'; with SSR, its confidence in grey
+  // as MAPS/WORLD-LABEL-confidence.png.
+  void save_picture(const test::ReflectionFrame& f, const std::string& label) const {
+    std::string name = o_.maps_dir + "/" + w_.name + "-" + label;
+    std::replace_if(
+        name.begin() + o_.maps_dir.size(), name.end(), [](char c) { return c == ' ' || c == '='; }, '_');
+    std::filesystem::create_directories(o_.maps_dir);
+    save_image(name + ".png", 3 * o_.width, o_.height,
+               test::specular_error_picture(reference_, f.lit, f.direct, f.material, {}, 1.0));
+    if (f.ssr.empty()) return;
+    std::vector<float> confidence(f.ssr.size(), 1.0f);
+    for (size_t i = 0; i < f.ssr.size(); i += 4) confidence[i] = confidence[i + 1] = confidence[i + 2] = f.ssr[i + 3];
+    save_image(name + "-confidence.png", o_.width, o_.height, confidence);
+  }
+
   test::SpecularError error(const test::ReflectionFrame& f, test::SurfaceMask mask) const {
     return test::specular_error(reference_, f.lit, f.direct, f.material, mask);
   }
@@ -214,6 +239,7 @@ const char* const usage =
     "usage: lumagraph-bench-reflections [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--time-size WxH]\n"
     "                                   [--frames N] [--time-frames N] [--paths N] [--faces A,B] [--steps A,B]\n"
     "                                   [--scales A,B] [--worlds room,gallery] [--only TEXT] [--probe-params JSON]\n"
+    "                                   [--maps DIR] [--errors-only]\n"
     "  --results-dir DIR   where the CSV files go (default bench-results)\n"
     "  --cache-dir DIR     where the references are kept (default BUILD/reflection-reference-cache)\n"
     "  --size WxH          size the error is measured at (default 320x180)\n"
@@ -226,7 +252,10 @@ const char* const usage =
     "  --scales LIST       lighting.ssr resolution_scale values (default 1)\n"
     "  --worlds LIST       room, gallery or both (default)\n"
     "  --only TEXT         only configurations whose label (\"ssr+probes face=64\") contains TEXT\n"
-    "  --probe-params JSON more gi.reflection_capture params as JSON members, e.g. '\"samples\": 64'\n";
+    "  --probe-params JSON more gi.reflection_capture params as JSON members, e.g. '\"samples\": 64'\n"
+    "  --maps DIR          also write each configuration's error picture there: its specular term, the\n"
+    "                      reference's and the signed difference (red too bright, blue too dark)\n"
+    "  --errors-only       measure the errors alone, without timing at --time-size\n";
 
 int run(int argc, char** argv) {
   Options o;
@@ -244,6 +273,8 @@ int run(int argc, char** argv) {
   flags.text("--worlds", o.worlds);
   flags.text("--only", o.only);
   flags.text("--probe-params", o.probe_params);
+  flags.text("--maps", o.maps_dir);
+  flags.set_switch("--errors-only", o.errors_only, true);
   if (const auto status = flags.parse(argc, argv)) return *status;
   std::filesystem::create_directories(o.results_dir);
   std::ofstream references(o.results_dir + "/reflection_references.csv");

@@ -284,6 +284,46 @@ TEST(CompilerSpecialization, ReflectionCaptureBypassForwardsNullWithoutProbes) {
   expect_nothing_read_before_written(dark);
 }
 
+// gi.reflection_capture's raster capture draws the environment's light into the probes: under an
+// environment it needs 'specular', 'brdf_lut' and 'sh' or 'irradiance' linked. Unlinked, the
+// compiler refuses the graph at the node's line and column, naming the inputs (it used to fail
+// only when the pass ran); 'path_traced', a scene without an environment, or one without probes
+// (the node bypassed) need none. Fails if the rule is not checked, or checked for bypassed nodes.
+TEST(CompilerSpecialization, RasterCaptureUnderAnEnvironmentNeedsTheEnvironmentLinked) {
+  Graph unlinked = test::load_example("examples/reflection-probes.json");
+  std::erase_if(unlinked.links, [](const GraphLink& l) {
+    return l.to.node == "probes" && (l.to.port == "specular" || l.to.port == "sh");
+  });
+  const auto options = [](bool environment, int probes) {
+    CompileOptions o;
+    o.scene = default_scene_summary();
+    o.scene.environment = environment;
+    o.scene.reflection_probes = probes;
+    return o;
+  };
+  const std::string errors = test::compile_errors(unlinked, builtin_registry(), options(true, 1));
+  const GraphNode& probes =
+      *std::find_if(unlinked.nodes.begin(), unlinked.nodes.end(), [](const GraphNode& n) { return n.id == "probes"; });
+  const std::string at = "examples/reflection-probes.json:" + std::to_string(probes.pos.line) + ":" +
+                         std::to_string(probes.pos.column) + ": error: node 'probes' (gi.reflection_capture) needs ";
+  EXPECT_NE(errors.find(at + "its input 'specular' linked to something that runs: capture 'raster' draws the "
+                             "environment's light into the probes"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find(at + "one of its inputs 'sh' or 'irradiance' linked"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("'brdf_lut'"), std::string::npos) << errors;  // still linked
+
+  Graph traced = unlinked;
+  for (GraphNode& n : traced.nodes)
+    if (n.id == "probes") n.params.set("capture", "path_traced");
+  EXPECT_EQ(test::plan_node(test::compile_ok(traced, builtin_registry(), options(true, 1)), "probes")->state,
+            NodeState::Kind::active);
+  EXPECT_EQ(test::plan_node(test::compile_ok(unlinked, builtin_registry(), options(false, 1)), "probes")->state,
+            NodeState::Kind::active);
+  EXPECT_EQ(test::plan_node(test::compile_ok(unlinked, builtin_registry(), options(true, 0)), "probes")->state,
+            NodeState::Kind::bypassed);
+}
+
 // The default graph composites transparent surfaces after the image-based light; a scene with no
 // BLEND material bypasses that node (it forwards ibl's colour, and the plan says why), leaving
 // the passes, resources and barriers the graph had before the node was wired in. Fails without

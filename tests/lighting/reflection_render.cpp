@@ -120,6 +120,8 @@ ReflectionFrame render_reflections(const World& world, uint32_t width, uint32_t 
   out.direct = executor.read_image("light.color");
   out.lit = executor.read_image("ibl.color");
   out.material = executor.read_image("gbuf.gbuffer.material");
+  for (const PlanNode& n : renderer.plan().nodes)
+    if (n.id == "ssr" && n.state == NodeState::Kind::active) out.ssr = executor.read_image("ssr.reflections");
   out.environment = plan_environment(renderer.plan(), renderer.scene_view().has_environment, "reflection render");
   out.validation_messages = renderer.context().take_validation_messages().size();
   return out;

@@ -38,6 +38,7 @@ Graph reflection_graph(const ReflectionConfig& config);
 
 struct ReflectionFrame {
   std::vector<float> direct, lit, material;  // light.color, ibl.color, gbuf.gbuffer.material (RGBA)
+  std::vector<float> ssr;                    // ssr.reflections (a: confidence) where SSR ran, else empty
   std::vector<double> reflection_gpu_ms;     // per frame: the probes' and ssr's passes summed
   std::vector<double> frame_gpu_ms;          // per frame: the whole command buffer
   std::vector<double> frame_wall_ms;         // per frame: render() on the host, captures included

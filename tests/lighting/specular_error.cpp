@@ -1,5 +1,6 @@
 #include "tests/lighting/specular_error.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "runtime/scene/make_scene_view.h"
@@ -26,6 +27,38 @@ SpecularError specular_error(const ReferenceImage& reference, const std::vector<
     }
   }
   if (truth_sum > 0) out.relative = error_sum / truth_sum, out.noise = noise_sum / truth_sum;
+  return out;
+}
+
+std::vector<float> specular_error_picture(const ReferenceImage& reference, const std::vector<float>& lit,
+                                          const std::vector<float>& direct, const std::vector<float>& material,
+                                          SurfaceMask mask, double scale) {
+  const auto& truth = reference.mean_of(ReferenceAov::specular);
+  double truth_sum = 0;
+  size_t pixels = 0;
+  for (size_t i = 0; i < reference.pixel_count(); ++i)
+    if (mask.contains(&material[4 * i])) truth_sum += (truth[i].x + truth[i].y + truth[i].z) / 3.0, ++pixels;
+  const double mean = pixels > 0 && truth_sum > 0 ? truth_sum / double(pixels) : 1.0;
+  const size_t w = reference.width, h = reference.pixel_count() / w;
+  std::vector<float> out(3 * w * h * 4, 0.0f);
+  const auto put = [&](size_t panel, size_t i, float r, float g, float b) {
+    float* o = &out[4 * ((i / w) * 3 * w + panel * w + i % w)];
+    o[0] = r, o[1] = g, o[2] = b;
+  };
+  const auto shown = [&](double x) { return float(std::max(x, 0.0) / mean / (1.0 + std::max(x, 0.0) / mean)); };
+  for (size_t i = 0; i < reference.pixel_count(); ++i) {
+    for (size_t panel = 0; panel < 3; ++panel) out[4 * ((i / w) * 3 * w + panel * w + i % w) + 3] = 1.0f;
+    if (!mask.contains(&material[4 * i])) continue;
+    double ours[3], signed_error = 0;
+    for (int c = 0; c < 3; ++c) {
+      ours[c] = lit[4 * i + c] - direct[4 * i + c];
+      signed_error += (ours[c] - truth[i][c]) / 3.0;
+    }
+    put(0, i, shown(ours[0]), shown(ours[1]), shown(ours[2]));
+    put(1, i, shown(truth[i].x), shown(truth[i].y), shown(truth[i].z));
+    const float e = float(std::clamp(signed_error / (scale * mean), -1.0, 1.0));
+    put(2, i, std::max(e, 0.0f), 0.0f, std::max(-e, 0.0f));
+  }
   return out;
 }
 

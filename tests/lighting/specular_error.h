@@ -30,6 +30,15 @@ struct SpecularError {
 SpecularError specular_error(const ReferenceImage& reference, const std::vector<float>& lit,
                              const std::vector<float>& direct, const std::vector<float>& material, SurfaceMask mask);
 
+// Where the error is, as a picture three frames wide: the frame's specular term (lit less
+// direct) over the mask, the reference's specular AOV over it, and their signed difference (red:
+// too bright, blue: too dark, full at `scale` times the reference's mean over the mask). The first
+// two map the reference's mean to 0.5 by x / (1 + x); pixels outside the mask are black. RGBA,
+// 3 width x height.
+std::vector<float> specular_error_picture(const ReferenceImage& reference, const std::vector<float>& lit,
+                                          const std::vector<float>& direct, const std::vector<float>& material,
+                                          SurfaceMask mask, double scale);
+
 // The path-traced reference of `world` seen by its camera at width x height.
 ReferenceImage trace_specular_reference(const World& world, uint32_t width, uint32_t height, uint32_t paths,
                                         const PathEnvironment& environment);

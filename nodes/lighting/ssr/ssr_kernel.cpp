@@ -87,6 +87,8 @@ class SsrKernel final : public NodeKernel {
     camera_->write_value(camera_constants(camera, full.width, full.height));
     // The executor clears history before the first frame: black, not last frame's light.
     const bool history = ctx.frame_index() > 0 && ctx.has("in.history");
+    last_frame_lit_ = this_frame_lit_;
+    this_frame_lit_ = history || !ctx.has("in.history");  // unlinked: `color` is all there is
     Image& color = ctx.image("in.color");
     const DescriptorWrite writes[] = {
         uniform_buffer(0, camera_->handle()),
@@ -108,7 +110,11 @@ class SsrKernel final : public NodeKernel {
   void resolve(PassContext& ctx) {
     Image& out = ctx.image(full_resolution() ? "out.reflections" : "tmp.resolved");
     Image& raw = ctx.image("tmp.raw");
-    const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history");  // not the cleared one
+    // Last frame's result, unless it is the cleared history of the first frame or its hits
+    // reflected an incomplete image: `color` alone (the direct light) while a lit history was
+    // linked but not yet drawn. Carried at temporal_blend, that first frame would darken the
+    // reflections for tens of frames (0.9^7 = 48% of them after 8 frames at the default).
+    const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history") && last_frame_lit_;
     const DescriptorWrite writes[] = {
         sampled_image(0, raw.view(), ctx.nearest_sampler()),
         sampled_image(1, ctx.image("tmp.pyramid").view({.base_mip = 0, .mip_count = 1}), ctx.nearest_sampler()),
@@ -143,6 +149,9 @@ class SsrKernel final : public NodeKernel {
   bool spatial_reuse_;
   float temporal_blend_;
   int32_t k_;  // 1 / resolution_scale: the G-buffer's resolution over the trace's grid
+  // Whether this frame's and the last frame's hits read the complete lit image (set by the trace,
+  // read by the resolve).
+  bool this_frame_lit_ = false, last_frame_lit_ = false;
   std::optional<HostBuffer> camera_;
 };
 
