@@ -66,7 +66,7 @@ struct RendererOptions {
 struct FrameTiming {
   float seconds = 1.0f / 60.0f;
   bool camera_cut = false;
-  std::optional<glm::vec2> jitter;
+  std::optional<glm::vec2> jitter{};
 };
 
 class Renderer {

@@ -52,20 +52,21 @@ void main() {
   if (any(greaterThanEqual(texel, size))) return;
 
   vec3 sum = vec3(0.0), sum_sq = vec3(0.0), lo = vec3(1e30), hi = vec3(-1e30), center = vec3(0.0);
-  float count = 0.0, closest = -1.0;
+  float count = 0.0, closest = -1.0, farthest = 2.0;
   bool center_usable = false;
   ivec2 closest_texel = texel;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
       ivec2 t = clamp(texel + ivec2(x, y), ivec2(0), size - 1);
       float d = texelFetch(depth, t, 0).r;
+      farthest = min(farthest, d);
       if (d > closest) {
         closest = d;
         closest_texel = t;
       }
       vec3 c = texelFetch(color, t, 0).rgb;
       if (!usable(c)) continue;
-      vec3 q = rgb_to_ycocg(compress(c));
+      vec3 q = rgb_to_ycocg(clamp(c, 0.0, kHalfMax));
       sum += q;
       sum_sq += q * q;
       lo = min(lo, q);
@@ -89,12 +90,14 @@ void main() {
     vec4 past = textureLod(history, previous_uv, 0.0);
     float seen = texelFetch(history, clamp(ivec2(previous_uv * vec2(size)), ivec2(0), size - 1), 0).a;
     float expected = previous_depth(closest_texel, closest);
-    bool same_surface = abs(expected - seen) <= depth_tolerance * max(max(expected, seen), 1e-7);
+    // Within the tolerance, widened by the neighbourhood's own depth range: the jitter moves the
+    // closest depth by up to that much on a still surface (a slope seen at a grazing angle).
+    bool same_surface = abs(expected - seen) <= depth_tolerance * max(max(expected, seen), 1e-7) + (closest - farthest);
     if (same_surface && usable(past.rgb)) {
       vec3 box_lo = max(lo, mean - clip_sigma * sigma), box_hi = min(hi, mean + clip_sigma * sigma);
-      vec3 h = clip_to_box(rgb_to_ycocg(compress(past.rgb)), box_lo, box_hi);
+      vec3 h = clip_to_box(rgb_to_ycocg(clamp(past.rgb, 0.0, kHalfMax)), box_lo, box_hi);
       result = mix(current, h, feedback);
     }
   }
-  imageStore(accumulated, texel, vec4(expand(ycocg_to_rgb(result)), closest));
+  imageStore(accumulated, texel, vec4(clamp(ycocg_to_rgb(result), 0.0, kHalfMax), closest));
 }
