@@ -38,6 +38,28 @@ vec3 clip_to_box(vec3 h, vec3 lo, vec3 hi) {
   return m > 1.0 ? center + v / m : h;
 }
 
+// The history at `uv` through a Catmull-Rom filter, from 9 bilinear taps (Jimenez's arrangement:
+// the middle two weights of each axis share one tap). Bilinear alone blurs the history a little
+// more every frame the camera moves by a fraction of a pixel; at a texel's centre this is that
+// texel exactly. The negative lobes may undershoot: the clip that follows bounds the result.
+vec3 history_catmull_rom(vec2 uv, vec2 size) {
+  vec2 position = uv * size;
+  vec2 center = floor(position - 0.5) + 0.5;
+  vec2 f = position - center;
+  vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+  vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+  vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+  vec2 w3 = f * f * (-0.5 + 0.5 * f);
+  vec2 w12 = w1 + w2;
+  vec2 taps[3] = vec2[]((center - 1.0) / size, (center + w2 / w12) / size, (center + 2.0) / size);
+  vec2 weights[3] = vec2[](w0, w12, w3);
+  vec3 sum = vec3(0.0);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x)
+      sum += textureLod(history, vec2(taps[x].x, taps[y].y), 0.0).rgb * (weights[x].x * weights[y].y);
+  return sum;
+}
+
 // Where this frame's surface at `texel` (depth d > 0) was in last frame's depth: its world
 // position through last frame's camera. The sky (d = 0) stays at 0.
 float previous_depth(ivec2 texel, float d) {
@@ -87,15 +109,15 @@ void main() {
   vec2 previous_uv;
   bool inside = reproject(uv, texelFetch(motion, closest_texel, 0).rg, previous_uv);
   if (use_history != 0u && count > 0.0 && inside) {
-    vec4 past = textureLod(history, previous_uv, 0.0);
+    vec3 past = history_catmull_rom(previous_uv, vec2(size));
     float seen = texelFetch(history, clamp(ivec2(previous_uv * vec2(size)), ivec2(0), size - 1), 0).a;
     float expected = previous_depth(closest_texel, closest);
     // Within the tolerance, widened by the neighbourhood's own depth range: the jitter moves the
     // closest depth by up to that much on a still surface (a slope seen at a grazing angle).
     bool same_surface = abs(expected - seen) <= depth_tolerance * max(max(expected, seen), 1e-7) + (closest - farthest);
-    if (same_surface && usable(past.rgb)) {
+    if (same_surface && usable(past)) {
       vec3 box_lo = max(lo, mean - clip_sigma * sigma), box_hi = min(hi, mean + clip_sigma * sigma);
-      vec3 h = clip_to_box(rgb_to_ycocg(clamp(past.rgb, 0.0, kHalfMax)), box_lo, box_hi);
+      vec3 h = clip_to_box(rgb_to_ycocg(clamp(past, 0.0, kHalfMax)), box_lo, box_hi);
       result = mix(current, h, feedback);
     }
   }
