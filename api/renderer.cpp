@@ -5,6 +5,7 @@
 #include "nodes/builtin_schemas.h"
 #include "runtime/exec/executor_error.h"
 #include "runtime/gpu/plan_resources.h"
+#include "runtime/scene/camera_jitter.h"
 #include "runtime/scene/make_scene_view.h"
 
 namespace lg {
@@ -72,6 +73,7 @@ const FrameStats& Renderer::render(const World& world, FrameSize frame, FrameTim
   SceneView view = make_scene_view(world, float(frame.width) / float(frame.height), has_view_ ? &view_ : nullptr);
   view.frame_seconds = timing.seconds;
   view.camera_cut = timing.camera_cut;
+  if (timing.jitter) view.camera.jitter = jitter_ndc(*timing.jitter, frame.width, frame.height);
   const SceneSummary summary = view.summary();
   const bool compile = !executor_ || graph_changed_ || !summary_ || !(*summary_ == summary) || !(frame_ == frame);
   if (compile) compile_for(summary, frame);

@@ -19,6 +19,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <glm/vec2.hpp>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -58,10 +59,14 @@ struct RendererOptions {
 };
 
 // What temporal nodes need of a frame beyond the world (post.exposure adapts over it): the time
-// since the previous frame and whether the camera cut, which restarts their history.
+// since the previous frame and whether the camera cut, which restarts their history. `jitter`
+// sets the projection's sub-pixel offset in pixels of the frame (a supersampled reference, a
+// host with its own sequence); unset, a graph with post.taa jitters with Halton (2, 3) and
+// other graphs do not jitter (runtime/scene/camera_jitter.h).
 struct FrameTiming {
   float seconds = 1.0f / 60.0f;
   bool camera_cut = false;
+  std::optional<glm::vec2> jitter{};
 };
 
 class Renderer {

@@ -4,6 +4,7 @@
 // plan_format.h prints it as JSON, Graphviz dot and a text table.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -77,6 +78,9 @@ struct Plan {
   // thousands of nodes uses a few dozen.
   std::vector<std::string> slot_names;
   MemoryTotals memory;
+  // The pixel grid the camera is jittered on each frame (a node whose schema has
+  // "camera_jitter" runs, e.g. post.taa: the extent of the input it names); 0 x 0: no jitter.
+  std::array<uint32_t, 2> jitter_grid{0, 0};
 
   const std::string& slot_of(const PlanAccess& a) const { return slot_names[a.slot]; }
   std::span<const PlanAccess> accesses_of(const PlanPass& p) const { return {accesses.data() + p.first_access, p.access_count}; }

@@ -55,6 +55,7 @@ JsonValue plan_to_json(const Plan& plan) {
   root.set("file", plan.file);
   root.set("scene", plan.scene);
   root.set("frame", int_pair(plan.frame.width, plan.frame.height));
+  if (plan.jitter_grid[0] > 0) root.set("jitter_grid", int_pair(plan.jitter_grid[0], plan.jitter_grid[1]));
 
   JsonValue& nodes = root.set("nodes", JsonValue::array());
   for (const auto& n : plan.nodes) {
@@ -187,7 +188,10 @@ std::string plan_to_text(const Plan& plan) {
   std::string out = "plan '" + (plan.name.empty() ? std::string("unnamed") : plan.name) + "'";
   if (!plan.file.empty()) out += " from " + plan.file;
   out += ", scene '" + plan.scene + "', frame " + std::to_string(plan.frame.width) + "x" +
-         std::to_string(plan.frame.height) + "\n\n";
+         std::to_string(plan.frame.height);
+  if (plan.jitter_grid[0] > 0)
+    out += ", camera jittered on " + std::to_string(plan.jitter_grid[0]) + "x" + std::to_string(plan.jitter_grid[1]);
+  out += "\n\n";
 
   out += pad("  #", 5) + pad("pass", 28) + pad("queue", 10) + pad("cache", 8) + pad("barriers", 10) + "writes\n";
   std::vector<int> barrier_count(plan.passes.size(), 0);

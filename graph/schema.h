@@ -130,6 +130,9 @@ struct NodeSchema {
   std::vector<LinkRequirement> requires_linked;
   bool is_static = false;  // result depends only on params and static inputs: cached across frames
   bool is_output = false;  // a sink: its inputs are results of the frame
+  // An input whose pixel grid the camera is jittered on, sub-pixel, while the node runs
+  // (temporal anti-aliasing: runtime/scene/camera_jitter.h); -1: the node needs no jitter.
+  int camera_jitter_input = -1;
 
   int find_input(std::string_view name) const;
   int find_output(std::string_view name) const;

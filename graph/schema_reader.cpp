@@ -15,7 +15,9 @@ class SchemaReader {
 
   void read(const JsonValue& root) {
     if (!expect_object(root, "")) return;
-    check_keys(root, "", {"type", "doc", "static", "output", "inputs", "outputs", "resources", "params", "passes", "bypass", "requires"});
+    check_keys(root, "",
+               {"type", "doc", "static", "output", "camera_jitter", "inputs", "outputs", "resources", "params",
+                "passes", "bypass", "requires"});
     s_.type = string_at(root, "", "type", true);
     s_.category = s_.type.substr(0, s_.type.find('.'));
     s_.doc = string_at(root, "", "doc", true);
@@ -23,6 +25,7 @@ class SchemaReader {
     s_.is_output = bool_at(root, "", "output");
     each(root, "params", [&](const JsonValue& v, const std::string& p) { param(v, p); });
     each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, true)); });
+    camera_jitter(root);
     each(root, "outputs", [&](const JsonValue& v, const std::string& p) { s_.outputs.push_back(port(v, p, false)); });
     each(root, "resources", [&](const JsonValue& v, const std::string& p) { s_.resources.push_back(port(v, p, false)); });
     each(root, "passes", [&](const JsonValue& v, const std::string& p) { pass(v, p); });
@@ -152,6 +155,15 @@ class SchemaReader {
     spec.history = bool_at(v, p, "history");
     if (!is_input) size_rule(v, p, spec.size);
     return spec;
+  }
+
+  // "camera_jitter": "INPUT": the node asks for a jittered camera on that input's pixel grid.
+  void camera_jitter(const JsonValue& root) {
+    const std::string input = string_at(root, "", "camera_jitter", false);
+    if (input.empty()) return;
+    s_.camera_jitter_input = s_.find_input(input);
+    if (s_.camera_jitter_input < 0)
+      d_.error(root.find("camera_jitter")->pos(), "/camera_jitter", "no input named '" + input + "'");
   }
 
   void size_rule(const JsonValue& v, const std::string& p, SizeRule& r) {

@@ -19,6 +19,7 @@
 #include "nodes/post/bloom/bloom_kernel.h"
 #include "nodes/post/dof/dof_kernel.h"
 #include "nodes/post/exposure/exposure_kernel.h"
+#include "nodes/post/taa/taa_kernel.h"
 #include "nodes/post/tonemap/tonemap_kernel.h"
 #include "nodes/post/upsample/upsample_kernel.h"
 #include "nodes/scene/forward_transparent/forward_transparent_kernel.h"
@@ -49,6 +50,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("post.bloom", make_bloom_kernel);
     r.add("post.dof", make_dof_kernel);
     r.add("post.exposure", make_exposure_kernel);
+    r.add("post.taa", make_taa_kernel);
     r.add("post.tonemap", make_tonemap_kernel);
     r.add("post.upsample", make_upsample_kernel);
     r.add("scene.forward_transparent", make_forward_transparent_kernel);

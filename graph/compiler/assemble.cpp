@@ -89,7 +89,13 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
     plan.passes.emplace_back(std::move(lp.name), s.passes[lp.pass].name, lp.cache_key, plan_index[lp.node],
                              static_cast<uint32_t>(plan.accesses.size()), static_cast<uint32_t>(lp.accesses.size()),
                              lp.queue, lp.is_static);
-    for (const auto& a : lp.accesses) plan.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
+    for (const auto& a : lp.accesses) {
+      plan.accesses.emplace_back(a.resource, a.usage, slot_names.of(s, a), a.component);
+      if (s.camera_jitter_input >= 0 && a.target == PassUse::Target::input && a.port == s.camera_jitter_input) {
+        const LoweredResource& grid = lowered.resources[a.resource];
+        plan.jitter_grid = {grid.width, grid.height};
+      }
+    }
   }
   release(lowered.passes);
   lowered.arena.reset();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "runtime/exec/executor_error.h"
 #include "runtime/exec/frame_pass_context.h"
@@ -10,6 +11,7 @@
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/format.h"
 #include "runtime/gpu/plan_barriers.h"
+#include "runtime/scene/camera_jitter.h"
 
 namespace lg {
 namespace {
@@ -112,7 +114,15 @@ void Executor::clear_history(VkCommandBuffer cmd) {
   }
 }
 
-FrameStats Executor::run_frame(const SceneView& scene, GpuScene& gpu_scene) {
+FrameStats Executor::run_frame(const SceneView& host_scene, GpuScene& gpu_scene) {
+  // A copy only for a jittered frame: the host's view (and what it keeps as last frame's
+  // camera) stays unjittered.
+  std::optional<SceneView> jittered;
+  if (plan_.jitter_grid[0] > 0 && !host_scene.camera.jitter) {
+    jittered.emplace(host_scene);
+    jittered->camera.jitter = jitter_ndc(frame_jitter_pixels(frames_), plan_.jitter_grid[0], plan_.jitter_grid[1]);
+  }
+  const SceneView& scene = jittered ? *jittered : host_scene;
   gpu_scene.update(scene);
   const auto start = std::chrono::steady_clock::now();
   if (frames_ > 0) swap_history();

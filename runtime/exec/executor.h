@@ -51,7 +51,9 @@ class Executor {
 
   // Updates `gpu_scene` from `scene`, then records, submits and waits for one frame; a wait
   // past the submit timeout throws GpuError. A kernel's failure throws ExecutorError naming
-  // the pass, and the frame does not count (history and caches stay as they were).
+  // the pass, and the frame does not count (history and caches stay as they were). When the
+  // plan has a jitter grid and the scene's camera no jitter of its own, the frame's passes see
+  // the camera jittered by frame_jitter_pixels(frames_run()) on that grid (camera_jitter.h).
   FrameStats run_frame(const SceneView& scene, GpuScene& gpu_scene);
   uint64_t frames_run() const { return frames_; }
   // The kernel of plan node `node` (an index into plan().nodes), for tools that ask a kernel

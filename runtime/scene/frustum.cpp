@@ -2,6 +2,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "runtime/scene/camera_jitter.h"
+
 namespace lg {
 namespace {
 
@@ -27,7 +29,7 @@ Frustum view_frustum(const glm::mat4& m) {
 }
 
 Frustum view_frustum(const CameraView& camera) {
-  return view_frustum(camera.projection * camera.view);
+  return view_frustum(jittered_projection(camera) * camera.view);
 }
 
 bool touches(const Frustum& frustum, const Bounds& box) {

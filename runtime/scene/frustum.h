@@ -25,7 +25,7 @@ struct Frustum {
 
 // The volume that `clip_from_world` maps into -w <= x, y <= w, 0 <= z <= w.
 Frustum view_frustum(const glm::mat4& clip_from_world);
-// The scene camera's (projection * view, as camera_constants() hands the shaders).
+// The scene camera's (its jittered projection * view, as camera_constants() hands the shaders).
 Frustum view_frustum(const CameraView& camera);
 
 // False only when the box lies wholly outside one plane (so near a frustum's corner a box that

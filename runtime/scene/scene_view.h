@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,12 @@ struct CameraView {
   float near_plane = 0.05f;
   float aperture = 0.0f;  // lens diameter in metres; 0 is a pinhole
   float focus_distance = 5.0f;
+  // Sub-pixel offset of this frame's projection in normalized device coordinates, for temporal
+  // anti-aliasing (camera_jitter.h): clip.xy += jitter * clip.w. Unset, the executor jitters
+  // the camera with the Halton sequence when the plan asks for it (a graph with post.taa) and
+  // leaves it still otherwise; set (a reference, a host with its own sequence), it is used as is.
+  // `projection` and `previous_view_projection` never contain it.
+  std::optional<glm::vec2> jitter;
 };
 
 struct DirectionalLightData {

@@ -9,6 +9,7 @@ struct Camera {
   mat4 previous_view_projection;
   vec4 position;  // xyz: the eye in world space
   vec4 viewport;  // width, height, 1 / width, 1 / height of the pass's target
+  vec4 jitter;    // xy: the sub-pixel offset in view_projection, in NDC (post.taa); 0 when none
 };
 
 // The world position seen at pixel `texel` with stored depth `depth` (> 0).

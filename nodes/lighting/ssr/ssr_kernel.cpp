@@ -7,6 +7,7 @@
 
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
+#include "nodes/common/history.h"
 #include "nodes/common/node_params.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
@@ -85,8 +86,8 @@ class SsrKernel final : public NodeKernel {
     const CameraView& camera = ctx.scene().camera;
     const ImageDesc& full = ctx.image("tmp.pyramid").desc();
     camera_->write_value(camera_constants(camera, full.width, full.height));
-    // The executor clears history before the first frame: black, not last frame's light.
-    const bool history = ctx.frame_index() > 0 && ctx.has("in.history");
+    // Not the cleared history of the first frame (black, not last frame's light), nor after a cut.
+    const bool history = history_usable(ctx, "in.history");
     last_frame_lit_ = this_frame_lit_;
     this_frame_lit_ = history || !ctx.has("in.history");  // unlinked: `color` is all there is
     Image& color = ctx.image("in.color");
@@ -110,11 +111,11 @@ class SsrKernel final : public NodeKernel {
   void resolve(PassContext& ctx) {
     Image& out = ctx.image(full_resolution() ? "out.reflections" : "tmp.resolved");
     Image& raw = ctx.image("tmp.raw");
-    // Last frame's result, unless it is the cleared history of the first frame or its hits
+    // Last frame's result, unless it is the cleared history of the first frame, a cut, or its hits
     // reflected an incomplete image: `color` alone (the direct light) while a lit history was
     // linked but not yet drawn. Carried at temporal_blend, that first frame would darken the
     // reflections for tens of frames (0.9^7 = 48% of them after 8 frames at the default).
-    const bool history = ctx.frame_index() > 0 && ctx.has("in.reflection_history") && last_frame_lit_;
+    const bool history = history_usable(ctx, "in.reflection_history") && last_frame_lit_;
     const DescriptorWrite writes[] = {
         sampled_image(0, raw.view(), ctx.nearest_sampler()),
         sampled_image(1, ctx.image("tmp.pyramid").view({.base_mip = 0, .mip_count = 1}), ctx.nearest_sampler()),

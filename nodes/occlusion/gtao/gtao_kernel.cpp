@@ -9,10 +9,12 @@
 #include <vector>
 
 #include "nodes/common/compute.h"
+#include "nodes/common/history.h"
 #include "nodes/common/node_params.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
+#include "runtime/scene/camera_jitter.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -78,7 +80,7 @@ class GtaoKernel final : public NodeKernel {
     if (!constants_) constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     const CameraView& camera = ctx.scene().camera;
     const float w = float(target.desc().width), h = float(target.desc().height);
-    const glm::mat4& p = camera.projection;
+    const glm::mat4 p = jittered_projection(camera);  // as the G-buffer's depth was rasterized
     Constants c{};
     c.view_from_world = camera.view;
     c.world_from_view = glm::inverse(camera.view);
@@ -89,8 +91,8 @@ class GtaoKernel final : public NodeKernel {
     const float stretch = 1.0f + 0.5f * std::min(1.0f, radius_ / (4.0f * std::max(thickness_, 1e-4f)));
     c.search = glm::vec4(radius_, 0.5f * h * std::abs(p[1][1]), stretch, 0.25f * std::max(w, h));
     c.counts[2] = uint32_t(ctx.frame_index());
-    // The executor clears history before the first frame: that would read as full occlusion.
-    c.counts[3] = ctx.frame_index() > 0 && ctx.has("in.history") ? 1u : 0u;
+    // Not the cleared history of the first frame (it would read as full occlusion), nor after a cut.
+    c.counts[3] = history_usable(ctx, "in.history") ? 1u : 0u;
     c.blend = glm::vec4(temporal_blend_, camera.near_plane, float(k_), 0.0f);
     constants_->write_value(c);
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "nodes/common/compute.h"
+#include "nodes/common/history.h"
 #include "nodes/common/node_params.h"
 #include "runtime/gpu/buffer.h"
 #include "runtime/gpu/direct_barriers.h"
@@ -74,7 +75,7 @@ class ExposureKernel final : public NodeKernel {
     push.seconds = usable_seconds(ctx.scene().frame_seconds);
     // The executor clears history before the first frame (and a resize makes a new one): 0 EV
     // there is no measurement, so the first frame takes the metered value at once.
-    push.restart = !history || ctx.frame_index() == 0 || ctx.scene().camera_cut ? 1u : 0u;
+    push.restart = history_usable(ctx, "in.history") ? 0u : 1u;
     // Unlinked history: the colour stands in at its binding, and the shader does not read it.
     const VkImageView previous = ctx.image(history ? "in.history" : "in.color").view();
     const DescriptorWrite writes[] = {storage_buffer(0, histogram_.handle()),

@@ -12,6 +12,7 @@
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/common/shaders/joint_upsample.glsl"
+#include "nodes/common/shaders/reprojection.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -77,8 +78,8 @@ void main() {
   }
   if ((flags & 1u) != 0u && temporal_blend > 0.0) {
     vec2 uv = (vec2(texel) + 0.5) / vec2(full_size);
-    vec2 previous = uv - texelFetch(motion_tex, texel, 0).rg;
-    if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThanEqual(previous, vec2(1.0)))) {
+    vec2 previous;
+    if (reproject(uv, texelFetch(motion_tex, texel, 0).rg, previous)) {
       vec4 past = clamp(premultiplied(textureLod(history, previous, 0.0)), lo, hi);
       result = mix(result, past, temporal_blend);
     }

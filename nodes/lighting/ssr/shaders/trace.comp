@@ -17,6 +17,7 @@
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/common/shaders/joint_upsample.glsl"
+#include "nodes/common/shaders/reprojection.glsl"
 #include "nodes/env/common/shaders/ggx_sampling.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -122,8 +123,8 @@ float edge_confidence(vec2 uv) {
 vec3 hit_radiance(ivec2 hit) {
   vec3 c = texelFetch(color_tex, hit, 0).rgb;
   if ((flags & 1u) != 0u) {
-    vec2 previous = (vec2(hit) + 0.5) * camera.viewport.zw - texelFetch(motion_tex, hit, 0).rg;
-    if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThanEqual(previous, vec2(1.0))))
+    vec2 previous;
+    if (reproject((vec2(hit) + 0.5) * camera.viewport.zw, texelFetch(motion_tex, hit, 0).rg, previous))
       c = textureLod(history_tex, previous, 0.0).rgb;
   }
   return min(finite_or_zero(c), vec3(65504.0));  // the largest half float: no Inf in the output

@@ -4,6 +4,7 @@
 // does not bleed across silhouettes), then temporal accumulation: last frame's result is
 // fetched where the motion vector says this surface was, clamped to this frame's neighbourhood
 // (history rejection: a disoccluded or changed pixel cannot keep stale values) and blended.
+#include "nodes/common/shaders/reprojection.glsl"
 #include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
 
 // One invocation a 2x2 quad of pixels, 8x8 invocations a 16x16 tile: the quad's four 3x3
@@ -46,8 +47,8 @@ void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4]) {
     // The history is at full resolution: read where this texel's G-buffer pixel was.
     ivec2 pixel = grid_pixel(texel);
     vec2 uv = (vec2(pixel) + 0.5) * viewport.zw;
-    vec2 previous_uv = uv - texelFetch(motion, pixel, 0).rg;
-    if (all(greaterThanEqual(previous_uv, vec2(0.0))) && all(lessThanEqual(previous_uv, vec2(1.0)))) {
+    vec2 previous_uv;
+    if (reproject(uv, texelFetch(motion, pixel, 0).rg, previous_uv)) {
       float past = clamp(textureLod(history, previous_uv, 0.0).r, lo, hi);
       result = mix(current, past, blend.x);
     }

@@ -25,6 +25,8 @@ void main() {
   out_material = clamp(d.material.xy * m.metal_rough.gb, 0.0, 1.0);
   vec2 uv_now = clip_now.xy / clip_now.w * 0.5;
   vec2 uv_before = clip_before.xy / max(clip_before.w, 1e-6) * 0.5;
-  out_motion = uv_now - uv_before;
+  // clip_now is jittered (post.taa), clip_before never is: the jitter's uv offset comes out, so
+  // reprojection follows the scene only. With no jitter it subtracts 0, bit for bit the same.
+  out_motion = uv_now - uv_before - camera.jitter.xy * 0.5;
   out_emissive = vec4(m.emission, 0.0);
 }
