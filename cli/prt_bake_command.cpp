@@ -67,8 +67,8 @@ int prt_bake_command(const Args& args, const std::string& input, const WorldLoad
     // Transfer is independent of the lights and the environment: the scene's geometry and
     // materials alone.
     scene.emplace(make_scene_view(load_world(input, load_options), 1.0f), PathEnvironment::none());
-    file.header = make_prt_header(scene->surfaces().mesh(), input, options.settings, options.chunk_index,
-                                  options.chunk_count);
+    file.header =
+        make_prt_header(scene->surfaces().mesh(), input, options.settings, options.chunk_index, options.chunk_count);
   } catch (const SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_invalid;
@@ -78,9 +78,8 @@ int prt_bake_command(const Args& args, const std::string& input, const WorldLoad
   }
   const PrtFileHeader& h = file.header;
   if (h.vertices > kPrtMaxVertices) {
-    std::fprintf(stderr, "lumagraph bake: %s: error: %llu vertices, more than a PRT bake holds (%llu)\n",
-                 input.c_str(), static_cast<unsigned long long>(h.vertices),
-                 static_cast<unsigned long long>(kPrtMaxVertices));
+    std::fprintf(stderr, "lumagraph bake: %s: error: %llu vertices, more than a PRT bake holds (%llu)\n", input.c_str(),
+                 static_cast<unsigned long long>(h.vertices), static_cast<unsigned long long>(kPrtMaxVertices));
     return exit_invalid;
   }
   ProgressLine progress("bake", "vertices", h.range.size());
@@ -109,7 +108,8 @@ int prt_merge_command(const std::vector<std::string>& parts, const std::string& 
     return exit_invalid;
   }
   if (int status = write_prt(out, merged); status != exit_ok) return status;
-  std::printf("merged %zu parts: %llu vertices\n", parts.size(), static_cast<unsigned long long>(merged.header.vertices));
+  std::printf("merged %zu parts: %llu vertices\n", parts.size(),
+              static_cast<unsigned long long>(merged.header.vertices));
   return exit_ok;
 }
 

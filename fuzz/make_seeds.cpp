@@ -1,7 +1,8 @@
 // Writes small seed files for the binary formats that neither examples/ nor the tests keep on
 // disk: occlusion bakes of every mode and PRT bakes of every transfer (whole and a chunk), a
-// probe bake of two volumes (whole and a chunk), a reference part file and an EXR environment. scripts/fuzz runs it into the
-// seed corpora; usage: lumagraph-fuzz-seeds OUT_DIR (one folder per harness is made in it).
+// probe bake of two volumes (whole and a chunk), a reference part file and an EXR environment.
+// scripts/fuzz runs it into the seed corpora; usage: lumagraph-fuzz-seeds OUT_DIR (one folder
+// per harness is made in it).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,7 +64,8 @@ void write_bakes(const fs::path& dir) {
 void write_prt_bakes(const fs::path& dir) {
   const PathScene scene(small_scene(), PathEnvironment::none());
   for (TransferKind kind : {TransferKind::unshadowed, TransferKind::shadowed, TransferKind::interreflected}) {
-    const PrtSettings settings{.kind = kind, .order = 2, .rays = 4, .bounces = kind == TransferKind::interreflected ? 1u : 0u};
+    const PrtSettings settings{
+        .kind = kind, .order = 2, .rays = 4, .bounces = kind == TransferKind::interreflected ? 1u : 0u};
     for (uint32_t count : {1u, 2u}) {
       PrtFile file;
       file.header = make_prt_header(scene.surfaces().mesh(), "small.json", settings, 0, count);

@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 
 struct Options {
   std::string results_dir = "bench-results";
-  uint32_t width = 160, height = 90;               // against the reference
+  uint32_t width = 160, height = 90;                // against the reference
   uint32_t frame_width = 1280, frame_height = 720;  // timed
   uint32_t spp = 256, rays = 256, bounces = 2, frames = 8;
 };
@@ -46,17 +46,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 Graph prt_graph(const fs::path& dir, const std::string& bake, int order, double spin) {
   Diagnostics d("prt-bench.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+  std::optional<Graph> graph =
+      parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
       { "id": "env", "type": "env.load", "params": { "path": "studio.hdr", "face_size": 64 } },
       { "id": "sh", "type": "env.sh_project", "params": { "order": 4 } },
-      { "id": "prt", "type": "gi.prt", "params": { "bake": ")" + bake + R"(", "order": )" +
-                                                    std::to_string(order) + R"(, "spin": )" + std::to_string(spin) +
-                                                    R"( } } ],
+      { "id": "prt", "type": "gi.prt", "params": { "bake": ")" +
+                           bake + R"(", "order": )" + std::to_string(order) + R"(, "spin": )" + std::to_string(spin) +
+                           R"( } } ],
     "links": [ { "from": "env.cube", "to": "sh.env" }, { "from": "gbuf.gbuffer", "to": "prt.gbuffer" },
                { "from": "sh.sh", "to": "prt.sh" } ],
     "outputs": [ "prt.irradiance" ] })",
-                                                d);
+                       d);
   if (!graph) throw std::runtime_error(d.to_string());
   graph->file = (dir / "prt-bench.json").string();
   return std::move(*graph);
@@ -90,8 +91,8 @@ int run(const Options& o) {
 
   std::ofstream csv(dir / "prt_points.csv");
   csv << "world,order,vertices,bake_s,frame_ms,relative_rms,reference_noise,beyond_noise,truncation_rms\n";
-  std::printf("%-12s %5s %8s %8s %9s %8s %9s %8s %10s\n", "world", "order", "vertices", "bake s", "frame ms",
-              "rel RMS", "ref noise", "beyond", "truncation");
+  std::printf("%-12s %5s %8s %8s %9s %8s %9s %8s %10s\n", "world", "order", "vertices", "bake s", "frame ms", "rel RMS",
+              "ref noise", "beyond", "truncation");
   for (const std::string name : {"two-spheres", "cornell-box", "gallery"}) {
     const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
     SceneView view = make_scene_view(world, float(o.width) / o.height);
@@ -134,8 +135,8 @@ int run(const Options& o) {
       const double truncation = sh_irradiance_truncation_rms(env, order);
       std::printf("%-12s %5d %8zu %8.2f %9.2f %8.4f %9.4f %8.4f %10.4f\n", name.c_str(), order, vertices, bake_s[order],
                   ms, c.relative_rms, c.reference_noise, c.beyond_noise, truncation);
-      csv << name << ',' << order << ',' << vertices << ',' << bake_s[order] << ',' << ms << ',' << c.relative_rms << ','
-          << c.reference_noise << ',' << c.beyond_noise << ',' << truncation << '\n';
+      csv << name << ',' << order << ',' << vertices << ',' << bake_s[order] << ',' << ms << ',' << c.relative_rms
+          << ',' << c.reference_noise << ',' << c.beyond_noise << ',' << truncation << '\n';
     }
   }
   std::printf("wrote %s\n", (dir / "prt_points.csv").c_str());

@@ -66,17 +66,18 @@ const Setup& setup() {
 
 Graph prt_graph(const std::string& bake, int order, bool clamp_negative) {
   Diagnostics d("prt-test.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+  std::optional<Graph> graph =
+      parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
       { "id": "env", "type": "env.load", "params": { "path": "studio.hdr", "face_size": 32 } },
       { "id": "sh", "type": "env.sh_project", "params": { "order": 4 } },
-      { "id": "prt", "type": "gi.prt", "params": { "bake": ")" + bake + R"(", "order": )" +
-                                                    std::to_string(order) + R"(, "clamp_negative": )" +
-                                                    (clamp_negative ? "true" : "false") + R"( } } ],
+      { "id": "prt", "type": "gi.prt", "params": { "bake": ")" +
+                           bake + R"(", "order": )" + std::to_string(order) + R"(, "clamp_negative": )" +
+                           (clamp_negative ? "true" : "false") + R"( } } ],
     "links": [ { "from": "env.cube", "to": "sh.env" }, { "from": "gbuf.gbuffer", "to": "prt.gbuffer" },
                { "from": "sh.sh", "to": "prt.sh" } ],
     "outputs": [ "prt.irradiance" ] })",
-                                                d);
+                       d);
   if (!graph) throw std::runtime_error(d.to_string());
   graph->file = (setup().dir / "prt-test.json").string();  // paths resolve in the test's folder
   return std::move(*graph);
@@ -113,8 +114,8 @@ std::vector<float> render_lit_by(Renderer& renderer, const std::vector<glm::vec3
 // (sum_k |a_kc frame_k| + |combination|) plus 1e-6 W/m^2 for the float sums. The node's clamp at
 // 0 is off (a basis function alone lights negatively).
 TEST(Prt, FramesAreLinearInTheEnvironmentsSh) {
-  const std::string bake =
-      setup().bake("linearity", {.kind = TransferKind::interreflected, .order = 4, .rays = 32, .bounces = 2, .seed = 4});
+  const std::string bake = setup().bake(
+      "linearity", {.kind = TransferKind::interreflected, .order = 4, .rays = 32, .bounces = 2, .seed = 4});
   auto renderer = make_renderer(prt_graph(bake, 4, false));
   renderer->render(setup().world, kFrame);
   std::mt19937 rng(21);
@@ -192,8 +193,9 @@ TEST(Prt, MatchesThePathTracerWithinTheTruncationError) {
     const PrtComparison c = compare_with_reference(scene, traced, prt);
     ASSERT_GT(c.values, size_t(kFrame.width) * kFrame.height / 4);
     const double truncation = sh_irradiance_truncation_rms(env, order);
-    std::printf("order %d: relative RMS %.4f (%.4f beyond the reference's noise of %.4f) over %zu values; truncation %.4f\n",
-                order, c.relative_rms, c.beyond_noise, c.reference_noise, c.values, truncation);
+    std::printf(
+        "order %d: relative RMS %.4f (%.4f beyond the reference's noise of %.4f) over %zu values; truncation %.4f\n",
+        order, c.relative_rms, c.beyond_noise, c.reference_noise, c.values, truncation);
     if (order == 2) order_2_error = c.beyond_noise;
     if (order == 3) EXPECT_LT(c.beyond_noise, order_2_error);  // a band more, closer
     if (order >= 3) EXPECT_LE(c.beyond_noise, truncation + 0.01) << "order " << order;

@@ -53,13 +53,15 @@ std::vector<double> band_fit(int l) {
     int pivot = col;
     for (int r = col + 1; r < n; ++r)
       if (std::abs(normal[r * n + col]) > std::abs(normal[pivot * n + col])) pivot = r;
-    for (int c = 0; c < n; ++c) std::swap(normal[col * n + c], normal[pivot * n + c]), std::swap(inverse[col * n + c], inverse[pivot * n + c]);
+    for (int c = 0; c < n; ++c)
+      std::swap(normal[col * n + c], normal[pivot * n + c]), std::swap(inverse[col * n + c], inverse[pivot * n + c]);
     const double scale = 1.0 / normal[col * n + col];
     for (int c = 0; c < n; ++c) normal[col * n + c] *= scale, inverse[col * n + c] *= scale;
     for (int r = 0; r < n; ++r) {
       if (r == col) continue;
       const double f = normal[r * n + col];
-      for (int c = 0; c < n; ++c) normal[r * n + c] -= f * normal[col * n + c], inverse[r * n + c] -= f * inverse[col * n + c];
+      for (int c = 0; c < n; ++c)
+        normal[r * n + c] -= f * normal[col * n + c], inverse[r * n + c] -= f * inverse[col * n + c];
     }
   }
   std::vector<double> fit(n * kDirections, 0.0);

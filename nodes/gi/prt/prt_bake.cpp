@@ -27,8 +27,8 @@ glm::dvec3 diffuse_color_at(const PathScene& scene, const RayHit& hit, glm::dvec
 }
 
 // One ray of a vertex and, interreflected, the diffuse path it starts; adds to `t`.
-void trace_path(const PathScene& scene, const PrtSettings& s, glm::vec3 origin, glm::dvec3 direction,
-                uint64_t seed, uint64_t ray, Transfer& t) {
+void trace_path(const PathScene& scene, const PrtSettings& s, glm::vec3 origin, glm::dvec3 direction, uint64_t seed,
+                uint64_t ray, Transfer& t) {
   const int count = sh_count(s.order);
   const uint32_t max_bounces = s.kind == TransferKind::interreflected ? s.bounces : 0;
   glm::dvec3 throughput(1.0);
@@ -45,8 +45,8 @@ void trace_path(const PathScene& scene, const PrtSettings& s, glm::vec3 origin, 
     throughput *= diffuse_color_at(scene, *hit, point);
     if (throughput == glm::dvec3(0.0)) return;
     // Reflect into the side the ray arrived from: a cosine lobe about the face's normal there.
-    const glm::dvec3 facing = glm::dot(glm::dvec3(hit->normal), direction) > 0.0 ? -glm::dvec3(hit->normal)
-                                                                                   : glm::dvec3(hit->normal);
+    const glm::dvec3 facing =
+        glm::dot(glm::dvec3(hit->normal), direction) > 0.0 ? -glm::dvec3(hit->normal) : glm::dvec3(hit->normal);
     const glm::dvec2 u(hashed_uniform(seed, ray, 2 * bounce), hashed_uniform(seed, ray, 2 * bounce + 1));
     direction = glm::normalize(make_frame(facing).to_world(cosine_hemisphere(u)));
     origin = offset_ray_origin(glm::vec3(point), glm::vec3(facing));
@@ -122,7 +122,9 @@ PrtData bake_transfer(const PathScene& scene, const PrtSettings& settings, Point
   data.valid.assign(range.size(), 0.0f);
   parallel_for_with_progress(
       range.size(),
-      [&](size_t j) { bake_vertex(scene, settings, range.begin + j, data.transfer.data() + j * floats, data.valid[j]); },
+      [&](size_t j) {
+        bake_vertex(scene, settings, range.begin + j, data.transfer.data() + j * floats, data.valid[j]);
+      },
       progress);
   return data;
 }

@@ -37,9 +37,9 @@ inline constexpr uint32_t kPrtMaxBounces = 64;
 
 struct PrtSettings {
   TransferKind kind = TransferKind::interreflected;
-  int order = 3;          // highest SH band: (order + 1)^2 coefficients a channel
-  uint32_t rays = 256;    // per vertex (unshadowed traces none)
-  uint32_t bounces = 2;   // interreflected: diffuse bounces after the vertex's own ray; else 0
+  int order = 3;         // highest SH band: (order + 1)^2 coefficients a channel
+  uint32_t rays = 256;   // per vertex (unshadowed traces none)
+  uint32_t bounces = 2;  // interreflected: diffuse bounces after the vertex's own ray; else 0
   uint64_t seed = 1;
 };
 

@@ -101,10 +101,9 @@ class PrtKernel final : public NodeKernel {
                                   " MiB): bake a lower order or fewer vertices");
     transfer_.emplace(ctx.gpu(), ctx.node().id + " transfer", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     transfer_->write(packed);
-    vertex_irradiance_ = Buffer::dedicated(
-        ctx.gpu(), {.name = ctx.node().id + " vertex irradiance",
-                    .size = std::max<uint64_t>(h.vertices, 1) * 16,
-                    .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT});
+    vertex_irradiance_ = Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " vertex irradiance",
+                                                       .size = std::max<uint64_t>(h.vertices, 1) * 16,
+                                                       .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT});
     std::vector<uint32_t> bases;
     for (const WorldMesh::Part& p : mesh.parts) bases.push_back(p.first_vertex);
     if (!draw_bases_) draw_bases_.emplace(ctx.gpu(), ctx.node().id + " draw bases", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -188,7 +187,7 @@ class PrtKernel final : public NodeKernel {
                      {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     desc.push_constant_bytes = sizeof(uint32_t);
     use_gpu_vertices(desc);
-    desc.vertex_attributes.resize(1);  // the position alone
+    desc.vertex_attributes.resize(1);                                         // the position alone
     desc.cull = cull_backfaces_ ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;  // winding as the G-buffer pass's
     desc.color_formats.push_back(out.desc().format);
     desc.depth_format = depth.desc().format;
