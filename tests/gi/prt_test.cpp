@@ -17,11 +17,13 @@
 #include "nodes/env/sh_project/sh_reference.h"
 #include "nodes/gi/prt/prt_file.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/occlusion/ray_test_scenes.h"
 
 namespace lg {
 namespace {
 
 namespace fs = std::filesystem;
+using test::scene_of;
 
 glm::dmat3 random_rotation_matrix(std::mt19937& rng) {
   std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi), axis(-1.0, 1.0);
@@ -95,18 +97,6 @@ TEST(ShRotation, MatchesRotatingTheEnvironmentMapAndProjectingAgain) {
   }
   std::printf("rotated coefficients against the turned map's: %.3g of the norm\n", std::sqrt(error / norm));
   EXPECT_LT(std::sqrt(error / norm), 1e-3);
-}
-
-SceneView scene_of(std::vector<std::pair<MeshData, glm::mat4>> placed) {
-  SceneView view;
-  for (auto& [mesh, world] : placed) {
-    DrawItem draw;
-    draw.mesh = int(view.meshes.size());
-    draw.world = world;
-    view.meshes.push_back(std::make_shared<const MeshData>(std::move(mesh)));
-    view.draws.push_back(draw);
-  }
-  return view;
 }
 
 // A lone sphere is convex: nothing shadows it, so its shadowed transfer is the unshadowed one,
