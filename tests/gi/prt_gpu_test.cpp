@@ -5,7 +5,7 @@
 //   their combination;
 // - accuracy: against the path tracer's indirect_diffuse AOV (turned into irradiance by the
 //   visible surface's diffuse colour), within the SH truncation error of the order plus 1%;
-// - an SH of extreme values (1e30) gives a finite frame.
+// - an SH of extreme values (1e30) gives a finite frame (in the linearity test's renderer).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -148,17 +148,11 @@ TEST(Prt, FramesAreLinearInTheEnvironmentsSh) {
   }
   std::printf("%zu lit values; the largest difference is %.3f of its bound\n", lit, worst);
   EXPECT_GT(lit, values / 8);  // the spheres fill much of the frame
-  expect_no_validation_messages(*renderer);
-}
-
-// SH coefficients of 1e30 overflow the half-float target: the frame stays finite.
-TEST(Prt, ExtremeShGivesAFiniteFrame) {
-  const std::string bake =
-      setup().bake("extreme", {.kind = TransferKind::shadowed, .order = 2, .rays = 16, .bounces = 0, .seed = 2});
-  auto renderer = make_renderer(prt_graph(bake, 4, true));
-  renderer->render(setup().world, kFrame);
-  const std::vector<float> frame = render_lit_by(*renderer, std::vector<glm::vec3>(25, glm::vec3(1e30f)));
-  for (float v : frame) ASSERT_TRUE(std::isfinite(v));
+  // SH coefficients of 1e30 overflow the half-float target: the frame stays finite. (Here
+  // rather than in a test of its own: a process with a device of its own costs CI seconds.)
+  for (float v : render_lit_by(*renderer, std::vector<glm::vec3>(25, glm::vec3(1e30f)))) {
+    ASSERT_TRUE(std::isfinite(v));
+  }
   expect_no_validation_messages(*renderer);
 }
 
@@ -197,8 +191,12 @@ TEST(Prt, MatchesThePathTracerWithinTheTruncationError) {
         "order %d: relative RMS %.4f (%.4f beyond the reference's noise of %.4f) over %zu values; truncation %.4f\n",
         order, c.relative_rms, c.beyond_noise, c.reference_noise, c.values, truncation);
     if (order == 2) order_2_error = c.beyond_noise;
-    if (order == 3) EXPECT_LT(c.beyond_noise, order_2_error);  // a band more, closer
-    if (order >= 3) EXPECT_LE(c.beyond_noise, truncation + 0.01) << "order " << order;
+    if (order == 3) {
+      EXPECT_LT(c.beyond_noise, order_2_error);  // a band more, closer
+    }
+    if (order >= 3) {
+      EXPECT_LE(c.beyond_noise, truncation + 0.01) << "order " << order;
+    }
   }
 }
 
