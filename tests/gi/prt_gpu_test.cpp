@@ -5,7 +5,8 @@
 //   their combination;
 // - accuracy: against the path tracer's indirect_diffuse AOV (turned into irradiance by the
 //   visible surface's diffuse colour), within the SH truncation error of the order plus 1%;
-// - an SH of extreme values (1e30) gives a finite frame (in the linearity test's renderer).
+// - an SH of extreme values (1e30) gives a finite frame, and a bake of other geometry fails the
+//   frame with a clear error (in the linearity test's renderer).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,10 +48,10 @@ struct Setup {
                   fs::copy_options::overwrite_existing);
     world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/two-spheres.json");
   }
-  // Bakes `settings` once per process into dir/NAME.lgprt.
-  std::string bake(const std::string& name, const PrtSettings& settings) const {
+  // Bakes `settings` for `of` (the two spheres by default) into dir/NAME.lgprt.
+  std::string bake(const std::string& name, const PrtSettings& settings, const World* of = nullptr) const {
     const std::string path = (dir / (name + ".lgprt")).string();
-    const PathScene scene(make_scene_view(world, kAspect), PathEnvironment::none());
+    const PathScene scene(make_scene_view(of ? *of : world, kAspect), PathEnvironment::none());
     PrtFile file;
     file.header = make_prt_header(scene.surfaces().mesh(), "two-spheres.json", settings, 0, 1);
     file.data = bake_transfer(scene, settings, file.header.range);
@@ -154,6 +155,18 @@ TEST(Prt, FramesAreLinearInTheEnvironmentsSh) {
     ASSERT_TRUE(std::isfinite(v));
   }
   expect_no_validation_messages(*renderer);
+  // A bake of other geometry fails the frame, naming the file and what differs.
+  const World other = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  renderer->set_graph(prt_graph(
+      setup().bake("other", {.kind = TransferKind::shadowed, .order = 2, .rays = 4, .bounces = 0}, &other), 4, false));
+  try {
+    renderer->render(setup().world, kFrame);
+    ADD_FAILURE() << "a bake of the Cornell box lit the two spheres";
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("other.lgprt: was baked from other geometry"), std::string::npos) << message;
+    EXPECT_NE(message.find("bake it again"), std::string::npos) << message;
+  }
 }
 
 // Interreflected transfer (1,024 rays, 3 bounces) against the path tracer (256 paths a pixel, 8
