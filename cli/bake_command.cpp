@@ -1,7 +1,7 @@
 // `lumagraph bake`: ambient occlusion and bent normals of a mesh or scene baked with Embree per
 // vertex, per lightmap texel or in a volume, whole or one chunk at a time, and `lumagraph bake
 // merge` to assemble the chunks (docs/bake-format.md, docs/baking.md). `--mode probes` goes to
-// probe_bake_command.cpp.
+// probe_bake_command.cpp, `--mode prt` to prt_bake_command.cpp.
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -12,7 +12,9 @@
 #include "cli/commands.h"
 #include "cli/probe_bake_command.h"
 #include "cli/progress_line.h"
+#include "cli/prt_bake_command.h"
 #include "nodes/gi/probes/probe_file.h"
+#include "nodes/gi/prt/prt_file.h"
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
 #include "nodes/occlusion/bake/bake_run.h"
@@ -25,6 +27,7 @@ namespace {
 
 constexpr const char* help = R"(usage: lumagraph bake MESH_OR_SCENE --out PATH [options]
        lumagraph bake SCENE --mode probes --out PATH.lgprobes [probe options]
+       lumagraph bake MESH_OR_SCENE --mode prt --out PATH.lgprt [transfer options]
        lumagraph bake merge PART... --out PATH
 
 Bakes ambient visibility k_A (cosine-weighted, stratified Monte Carlo with Embree on all cores)
@@ -59,9 +62,18 @@ PATH.0.vti, PATH.1.vti... beside it. Its options: --rays N (per probe, 1 to 1048
                         default graph), as `lumagraph reference`
   --env FILE            environment (.hdr, .exr) for every env.load node of the graph
 
+--mode prt bakes the diffuse transfer vectors of every vertex for gi.prt (docs/prt.md) into
+PATH.lgprt. Its options: --rays N (per vertex, 1 to 1048576, default 256), --seed, --chunk,
+--asset-root as above, and
+  --transfer unshadowed|shadowed|interreflected
+                        the cosine lobe alone, cut by the scene's shadows, or with the light the
+                        scene reflects onto the vertex too (default interreflected)
+  --order N             highest SH band, 2 to 4 (default 3)
+  --bounces B           interreflected: diffuse bounces, 1 to 64 (default 2)
+
 `bake merge PART... --out PATH` checks that the parts are all the chunks of one bake, each
-once, and writes the whole bake, byte-identical to a single run with the same options (occlusion
-or probe bakes alike).
+once, and writes the whole bake, byte-identical to a single run with the same options (occlusion,
+probe and PRT bakes alike).
 
 exit status: 0 baked, 1 usage error, 2 invalid input (mesh, scene or part files), 3 writing failed
 )";
@@ -69,7 +81,7 @@ exit status: 0 baked, 1 usage error, 2 invalid input (mesh, scene or part files)
 ArgSpec bake_arg_spec() {
   return {{"--help"},
           {"--mode", "--rays", "--bounces", "--max-distance", "--falloff", "--resolution", "--seed", "--chunk", "--out",
-           "--asset-root", "--graph", "--env"},
+           "--asset-root", "--graph", "--env", "--order", "--transfer"},
           {"--asset-root"}};
 }
 
@@ -86,11 +98,13 @@ struct BakeOptions {
 std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
   if (auto mode = args.value("--mode")) {
     auto parsed = parse_bake_mode(*mode);
-    if (!parsed) return "--mode expects vertex, texel, volume or probes; got '" + *mode + "'";
+    if (!parsed) return "--mode expects vertex, texel, volume, probes or prt; got '" + *mode + "'";
     o.mode = *parsed;
   }
   for (const char* probes_only : {"--bounces", "--graph", "--env"})
     if (args.value(probes_only)) return std::string(probes_only) + " applies to --mode probes only";
+  for (const char* prt_only : {"--order", "--transfer"})
+    if (args.value(prt_only)) return std::string(prt_only) + " applies to --mode prt only";
   uint64_t rays = uint64_t(o.occlusion.rays);
   if (auto bad = read_count(args, "--rays", max_rays_per_point, rays)) return bad;
   o.occlusion.rays = int(rays);
@@ -132,6 +146,7 @@ std::optional<std::string> read_bake_options(const Args& args, BakeOptions& o) {
 int merge_command(const std::vector<std::string>& parts, const std::string& out) {
   if (parts.empty()) return usage_error("bake", "merge needs the part files to merge");
   if (is_probe_file(parts[0])) return probe_merge_command(parts, out);
+  if (is_prt_file(parts[0])) return prt_merge_command(parts, out);
   try {
     std::vector<BakeFile> files;
     for (const std::string& path : parts) files.push_back(read_bake_file(path));
@@ -182,6 +197,7 @@ int bake_command(const std::vector<std::string>& argv) {
   const std::string& input = args->positional[0];
   if (args->value("--mode") == "probes")
     return probe_bake_command(*args, input, world_load_options(*args, input), *out);
+  if (args->value("--mode") == "prt") return prt_bake_command(*args, input, world_load_options(*args, input), *out);
   BakeOptions options;
   if (auto bad = read_bake_options(*args, options)) return usage_error("bake", *bad);
 

@@ -26,6 +26,8 @@ std::optional<std::string> read_probe_options(const Args& args, ProbeOptions& o)
   for (const char* occlusion_only : {"--max-distance", "--falloff", "--resolution"})
     if (args.value(occlusion_only))
       return std::string(occlusion_only) + " applies to occlusion bakes, not --mode probes";
+  for (const char* prt_only : {"--order", "--transfer"})
+    if (args.value(prt_only)) return std::string(prt_only) + " applies to --mode prt only";
   uint64_t rays = o.settings.rays, bounces = o.settings.bounces;
   if (auto bad = read_count(args, "--rays", max_probe_rays, rays)) return bad;
   if (auto bad = read_count(args, "--bounces", max_probe_bounces, bounces)) return bad;

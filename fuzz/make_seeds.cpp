@@ -1,7 +1,8 @@
 // Writes small seed files for the binary formats that neither examples/ nor the tests keep on
-// disk: occlusion bakes of every mode (whole and a chunk), a probe bake of two volumes (whole
-// and a chunk), a reference part file and an EXR environment. scripts/fuzz runs it into the
-// seed corpora; usage: lumagraph-fuzz-seeds OUT_DIR (one folder per harness is made in it).
+// disk: occlusion bakes of every mode and PRT bakes of every transfer (whole and a chunk), a
+// probe bake of two volumes (whole and a chunk), a reference part file and an EXR environment.
+// scripts/fuzz runs it into the seed corpora; usage: lumagraph-fuzz-seeds OUT_DIR (one folder
+// per harness is made in it).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include "nodes/gi/path_tracer/reference_file.h"
 #include "nodes/gi/probes/probe_file.h"
+#include "nodes/gi/prt/prt_file.h"
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/raytrace/ray_scene.h"
 #include "runtime/image/image_file.h"
@@ -55,6 +57,23 @@ void write_bakes(const fs::path& dir) {
           (dir / (std::string(bake_mode_name(domain.mode())) + "-" + std::to_string(count) + ".lgbake")).string(),
           file);
     }
+}
+
+// PRT bakes of the same scene (the bake harness reads them too): each transfer kind, whole
+// and a chunk.
+void write_prt_bakes(const fs::path& dir) {
+  const PathScene scene(small_scene(), PathEnvironment::none());
+  for (TransferKind kind : {TransferKind::unshadowed, TransferKind::shadowed, TransferKind::interreflected}) {
+    const PrtSettings settings{
+        .kind = kind, .order = 2, .rays = 4, .bounces = kind == TransferKind::interreflected ? 1u : 0u};
+    for (uint32_t count : {1u, 2u}) {
+      PrtFile file;
+      file.header = make_prt_header(scene.surfaces().mesh(), "small.json", settings, 0, count);
+      file.data = bake_transfer(scene, settings, file.header.range);
+      write_prt_file((dir / (std::string(transfer_kind_name(kind)) + "-" + std::to_string(count) + ".lgprt")).string(),
+                     file);
+    }
+  }
 }
 
 void write_probes(const fs::path& dir) {
@@ -112,6 +131,7 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[1];
   const std::pair<const char*, void (*)(const fs::path&)> writers[] = {{"bake", lg::write_bakes},
+                                                                       {"bake", lg::write_prt_bakes},
                                                                        {"probes", lg::write_probes},
                                                                        {"reference_part", lg::write_reference_parts},
                                                                        {"env_image", lg::write_environments}};
