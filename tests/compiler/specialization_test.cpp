@@ -164,7 +164,9 @@ TEST(CompilerSpecialization, LocalShadowsCostNothingWithoutPointOrSpotShadows) {
     Plan plain = test::compile_ok(test::load_example(path), builtin_registry(), o);
     EXPECT_EQ(pass_at(plain, "light/local_shadows"), -1);
     const int atlas = resource_at(plain, "light/local_shadow_atlas");
-    if (atlas >= 0) EXPECT_EQ(plain.resources[atlas].placement.block, -1);
+    if (atlas >= 0) {
+      EXPECT_EQ(plain.resources[atlas].placement.block, -1);
+    }
     o.scene = spot;
     Plan lit = test::compile_ok(test::load_example(path), builtin_registry(), o);
     if (pass_at(lit, "light/direct") < 0) continue;  // a graph without deferred lighting
