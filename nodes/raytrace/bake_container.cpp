@@ -29,6 +29,14 @@ std::string hex64(uint64_t v) {
   return text;
 }
 
+void set_chunk_json(JsonValue& header, uint32_t index, uint32_t count, uint64_t begin, uint64_t end) {
+  JsonValue& chunk = header.set("chunk", JsonValue::object());
+  chunk.set("index", uint64_t(index));
+  chunk.set("count", uint64_t(count));
+  chunk.set("begin", begin);
+  chunk.set("end", end);
+}
+
 std::string encode_bake_container(std::string_view magic, JsonValue header,
                                   std::span<const BakeArray<const std::vector<float>>> arrays) {
   JsonValue& list = header.set("arrays", JsonValue::array());

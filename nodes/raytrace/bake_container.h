@@ -36,6 +36,10 @@ struct BakeArray {
 std::string encode_bake_container(std::string_view magic, JsonValue header,
                                   std::span<const BakeArray<const std::vector<float>>> arrays);
 
+// Adds the "chunk" object every bake header carries: which of `count` chunks this file is, and
+// the range of points it holds.
+void set_chunk_json(JsonValue& header, uint32_t index, uint32_t count, uint64_t begin, uint64_t end);
+
 // Reading: typed header fields with errors that name the file and the key.
 class HeaderReader {
  public:

@@ -89,11 +89,7 @@ JsonValue probe_identity_json(const ProbeFileHeader& h) {
 
 JsonValue probe_header_json(const ProbeFileHeader& h) {
   JsonValue j = probe_identity_json(h);
-  JsonValue& chunk = j.set("chunk", JsonValue::object());
-  chunk.set("index", uint64_t(h.chunk_index));
-  chunk.set("count", uint64_t(h.chunk_count));
-  chunk.set("begin", h.range.begin);
-  chunk.set("end", h.range.end);
+  set_chunk_json(j, h.chunk_index, h.chunk_count, h.range.begin, h.range.end);
   return j;
 }
 

@@ -118,11 +118,8 @@ PrtFileHeader make_prt_header(const WorldMesh& mesh, const std::string& input, c
 
 std::string encode_prt_file(const PrtFile& file) {
   JsonValue header = prt_identity_json(file.header);
-  JsonValue& chunk = header.set("chunk", JsonValue::object());
-  chunk.set("index", uint64_t(file.header.chunk_index));
-  chunk.set("count", uint64_t(file.header.chunk_count));
-  chunk.set("begin", file.header.range.begin);
-  chunk.set("end", file.header.range.end);
+  const auto& h = file.header;
+  set_chunk_json(header, h.chunk_index, h.chunk_count, h.range.begin, h.range.end);
   return encode_bake_container(magic, std::move(header), arrays_of(file));
 }
 

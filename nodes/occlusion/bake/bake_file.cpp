@@ -153,11 +153,8 @@ BakeHeader make_bake_header(const BakeDomain& domain, const WorldMesh& mesh, con
 
 std::string encode_bake_file(const BakeFile& file) {
   JsonValue header = bake_identity_json(file.header);
-  JsonValue& chunk = header.set("chunk", JsonValue::object());
-  chunk.set("index", uint64_t(file.header.chunk_index));
-  chunk.set("count", uint64_t(file.header.chunk_count));
-  chunk.set("begin", file.header.range.begin);
-  chunk.set("end", file.header.range.end);
+  const auto& h = file.header;
+  set_chunk_json(header, h.chunk_index, h.chunk_count, h.range.begin, h.range.end);
   return encode_bake_container(magic, std::move(header), arrays_of(file));
 }
 
