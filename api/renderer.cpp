@@ -1,5 +1,9 @@
 #include "api/renderer.h"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include "graph/graph_io.h"
 #include "nodes/builtin_kernels.h"
 #include "nodes/builtin_schemas.h"
@@ -64,6 +68,11 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
   if (executor_) executor->adopt_cached_results(*executor_);
   if (!gpu_scene_) gpu_scene_ = std::make_unique<GpuScene>(*context_);
   executor_ = std::move(executor);
+#if defined(__GLIBC__)
+  // The old executor's memory, and what the driver freed with it, goes back to the system:
+  // glibc keeps freed heap pages resident, and the soak saw them add up (docs/reliability.md).
+  malloc_trim(0);
+#endif
   summary_ = summary;
   frame_ = frame;
   graph_changed_ = false;

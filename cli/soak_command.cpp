@@ -2,6 +2,7 @@
 // changed graph file every N frames and a change of world every M, and writes resident and
 // device memory per frame as CSV. It fails when either grows by more than 1% after the warm-up,
 // when the output holds a non-finite value or when validation reports anything.
+#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,8 +32,9 @@ records memory: every --reload-every frames the graph file is rewritten with a n
 hot-reloaded (compiled again, static results carried over), every --world-every frames the world
 changes (between the default world and --scene, or a rebuilt default world without it). Each
 frame's output is read back and checked for non-finite values. Writes one CSV row per frame:
-frame, resident memory (MiB), device memory (MiB), GPU time (ms), and whether the frame
-reloaded or changed world. The reloaded copy of the graph lives in a temporary folder, so a
+frame, resident memory (MiB), device memory (MiB), GPU time (ms), whether the frame reloaded or
+changed world, and the C heap's bytes in use and held from the system (MiB; glibc's mallinfo2),
+which tell a leak (in use grows) from the allocator keeping freed memory (only held grows). The reloaded copy of the graph lives in a temporary folder, so a
 graph's relative file params must be absolute or under --asset-root.
 
 options:
@@ -57,6 +59,16 @@ uint64_t resident_bytes() {
   uint64_t pages = 0, resident = 0;
   statm >> pages >> resident;
   return resident * uint64_t(sysconf(_SC_PAGESIZE));
+}
+
+struct HeapBytes {
+  double in_use_mib = 0, held_mib = 0;
+};
+
+HeapBytes heap_bytes() {
+  const struct mallinfo2 info = mallinfo2();
+  const double mib = 1 << 20;
+  return {double(info.uordblks + info.hblkhd) / mib, double(info.arena + info.hblkhd) / mib};
 }
 
 size_t non_finite_values(const std::vector<float>& rgba) {
@@ -132,7 +144,7 @@ int soak_command(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "lumagraph soak: cannot write %s\n", csv_path.c_str());
     return exit_failed;
   }
-  std::fprintf(csv, "frame,resident_mib,device_mib,gpu_ms,reloaded,world_changed\n");
+  std::fprintf(csv, "frame,resident_mib,device_mib,gpu_ms,reloaded,world_changed,heap_in_use_mib,heap_held_mib\n");
   size_t validation_messages = 0, non_finite = 0;
   Peak warm, after;
   int status = exit_ok;
@@ -161,8 +173,9 @@ int soak_command(const std::vector<std::string>& argv) {
       const double resident = double(resident_bytes()) / (1 << 20);
       const double device = double(renderer.context().device_memory_used()) / (1 << 20);
       (f < warmup ? warm : after).add(resident, device);
-      std::fprintf(csv, "%llu,%.3f,%.3f,%.3f,%d,%d\n", (unsigned long long)f, resident, device, stats.gpu_ms,
-                   reload ? 1 : 0, change_world ? 1 : 0);
+      const HeapBytes heap = heap_bytes();
+      std::fprintf(csv, "%llu,%.3f,%.3f,%.3f,%d,%d,%.3f,%.3f\n", (unsigned long long)f, resident, device,
+                   stats.gpu_ms, reload ? 1 : 0, change_world ? 1 : 0, heap.in_use_mib, heap.held_mib);
       if (isatty(STDERR_FILENO) && f % 50 == 0)
         std::fprintf(stderr, "\rframe %llu/%llu  resident %.1f MiB  device %.1f MiB", (unsigned long long)f,
                      (unsigned long long)frames, resident, device);
