@@ -15,7 +15,7 @@ constexpr std::array<std::string_view, static_cast<size_t>(SceneFeature::count)>
     "area_lights",        "shadow_casting_lights", "local_shadow_casting_lights",
     "environment_light",  "irradiance_volumes",    "reflection_probes",
     "glossy_materials",   "thin_lens_camera",      "baked_occlusion",
-    "blend_materials",    "emissive_materials"};
+    "blend_materials",    "emissive_materials",    "planar_reflectors"};
 
 // One field of the summary file: where it lives and how it is read.
 struct Field {
@@ -69,6 +69,7 @@ const std::vector<Field>& fields() {
       {"environment", "present", bool_field(&SceneSummary::environment)},
       {"probes", "irradiance_volumes", count_field(&SceneSummary::irradiance_volumes)},
       {"probes", "reflection_probes", count_field(&SceneSummary::reflection_probes)},
+      {"probes", "planar_reflectors", count_field(&SceneSummary::planar_reflectors)},
       {"materials", "glossy", bool_field(&SceneSummary::glossy_materials)},
       {"materials", "blend", bool_field(&SceneSummary::blend_materials)},
       {"materials", "emissive", bool_field(&SceneSummary::emissive_materials)},
@@ -123,6 +124,8 @@ std::string scene_lacks_reason(SceneFeature f) {
       return "nothing in the scene is drawn with a BLEND (transparent) material";
     case SceneFeature::emissive_materials:
       return "nothing in the scene is drawn with an emissive material";
+    case SceneFeature::planar_reflectors:
+      return "the scene has no planar reflectors";
     case SceneFeature::count:
       break;
   }
@@ -165,6 +168,8 @@ bool SceneSummary::has(SceneFeature f) const {
       return blend_materials;
     case SceneFeature::emissive_materials:
       return emissive_materials;
+    case SceneFeature::planar_reflectors:
+      return planar_reflectors > 0;
     case SceneFeature::count:
       break;
   }

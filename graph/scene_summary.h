@@ -31,6 +31,7 @@ enum class SceneFeature : uint8_t {
   baked_occlusion,     // a drawn mesh carries occlusion baked offline (a scene file's "occlusion")
   blend_materials,     // something is drawn with a glTF alphaMode BLEND (transparent) material
   emissive_materials,  // something is drawn with a material that emits light (emissive factor above 0)
+  planar_reflectors,   // a drawn flat mesh marked to reflect as a mirror plane (gi.planar_reflection)
   count
 };
 
@@ -51,6 +52,7 @@ struct SceneSummary {
   bool environment = true;
   int irradiance_volumes = 0;
   int reflection_probes = 0;
+  int planar_reflectors = 0;  // distinct planes
   bool glossy_materials = true;
   bool baked_occlusion = false;
   bool blend_materials = false;

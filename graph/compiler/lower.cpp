@@ -270,12 +270,16 @@ class Lowerer {
   }
 
   // A bypassed node that forwards an unlinked input leaves its consumers with nothing; one that
-  // forwards nothing (null) leaves optional inputs unlinked.
+  // forwards nothing (null), or an optional input of its own that gets nothing, leaves optional
+  // inputs unlinked.
   void check_fed(int n, int input, int link) {
     if (link < 0 || r_.links[link].history || !source_of(link).empty()) [[likely]]
       return;
     const ResolvedLink& l = r_.links[link];
-    if (r_.nodes[n].schema->inputs[input].optional && forwarded_input(r_, s_, l.from_node, l.from_port) < 0) return;
+    const int forwarded = forwarded_input(r_, s_, l.from_node, l.from_port);
+    if (r_.nodes[n].schema->inputs[input].optional &&
+        (forwarded < 0 || r_.nodes[l.from_node].schema->inputs[forwarded].optional))
+      return;
     not_fed(n, input, link);
   }
 

@@ -8,6 +8,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <optional>
 #include <string>
 
 #include "runtime/scene/entity.h"
@@ -43,6 +45,9 @@ struct MeshRenderer {
   // Whether reflection probes' captures see the mesh: off for objects inside a probe's proxy
   // that the proxy does not model (docs/reflection-probes.md).
   bool captured_by_probes = true;
+  // The mesh's plane in its own space (n, w: n . p + w = 0) where the entity is a planar
+  // reflector (gi.planar_reflection, docs/planar-reflections.md); nullopt for the rest.
+  std::optional<glm::vec4> reflector_plane{};
 };
 
 struct DirectionalLight {

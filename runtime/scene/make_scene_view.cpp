@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "runtime/scene/mesh_plane.h"
 #include "runtime/scene/projection.h"
 
 namespace lg {
@@ -118,6 +119,19 @@ void add_draws(const World& world, const SceneView* previous, SceneView& view) {
   });
 }
 
+// Draws of one floor split into pieces share their plane: it is mirrored once.
+void add_reflector_planes(const World& world, SceneView& view) {
+  world.each<MeshRenderer>([&](Entity e, const MeshRenderer& r) {
+    if (!r.reflector_plane) return;
+    const glm::vec4 plane = transform_plane(*r.reflector_plane, world.world_matrix(e));
+    const auto same = [&](const glm::vec4& q) {
+      return glm::dot(glm::vec3(plane), glm::vec3(q)) > 0.99999f && std::abs(plane.w - q.w) < 1e-4f;
+    };
+    if (std::none_of(view.planar_reflectors.begin(), view.planar_reflectors.end(), same))
+      view.planar_reflectors.push_back(plane);
+  });
+}
+
 }  // namespace
 
 SceneView make_scene_view(const World& world, float aspect_ratio, const SceneView* previous) {
@@ -132,6 +146,7 @@ SceneView make_scene_view(const World& world, float aspect_ratio, const SceneVie
   view.textures = world.textures();
   view.materials = world.materials();
   add_draws(world, previous, view);
+  add_reflector_planes(world, view);
   add_lights(world, view);
   if (Entity env = first_with<EnvironmentLight>(world); !env.is_null()) {
     view.has_environment = true;

@@ -17,6 +17,7 @@
 #include "runtime/scene/json_fields.h"
 #include "runtime/scene/mesh_generators.h"
 #include "runtime/scene/mesh_import.h"
+#include "runtime/scene/mesh_plane.h"
 #include "runtime/scene/scene_error.h"
 
 namespace lg {
@@ -40,7 +41,8 @@ const std::vector<std::string> entity_keys = {"name",
                                               "rect_light",
                                               "irradiance_volume",
                                               "reflection_probe",
-                                              "captured_by_probes"};
+                                              "captured_by_probes",
+                                              "planar_reflector"};
 
 class SceneFileReader {
  public:
@@ -161,7 +163,31 @@ class SceneFileReader {
     bool captured = true;
     f.boolean("captured_by_probes", captured);
     if (!captured) each_drawn_part(e, [](MeshRenderer& r) { r.captured_by_probes = false; });
+    bool reflector = false;
+    f.boolean("planar_reflector", reflector);
+    if (reflector) planar_reflector(f, e);
     components(f, e);
+  }
+
+  // Every mesh the entity draws must be flat: its plane is what the reflection mirrors in.
+  void planar_reflector(const JsonFields& f, Entity e) {
+    bool drawn = false;
+    each_drawn_part(e, [&](MeshRenderer& r) {
+      drawn = true;
+      if (r.mesh < 0) return;  // its shape or model was already reported
+      const MeshData& mesh = *world_.meshes().at(size_t(r.mesh));
+      const std::optional<MeshPlane> plane = mesh_plane(mesh);
+      if (!plane)
+        return f.error_at("planar_reflector", "a planar reflector's mesh must be flat and face one way; '" +
+                                                  mesh.name + "' has no side to reflect from");
+      if (!plane->flat())
+        return f.error_at("planar_reflector",
+                          "a planar reflector's mesh must be flat; '" + mesh.name + "' has vertices " +
+                              format_number(plane->max_distance) + " m off its plane (at most " +
+                              format_number(plane->allowed_distance) + " m): use a 'quad' shape or a flat model");
+      r.reflector_plane = plane->plane;
+    });
+    if (!drawn) f.error_at("planar_reflector", "'planar_reflector' needs a 'model' or a 'shape' to reflect with");
   }
 
   Entity parent_entity(const JsonFields& f, const JsonValue& v) {

@@ -39,6 +39,7 @@ SceneSummary SceneView::summary() const {
   s.environment = has_environment;
   s.irradiance_volumes = int(irradiance_volumes.size());
   s.reflection_probes = int(reflection_probes.size());
+  s.planar_reflectors = int(planar_reflectors.size());
   // Only the materials something is drawn with.
   s.glossy_materials = false;
   for (const auto& d : draws) {

@@ -213,6 +213,9 @@ struct SceneView {
   EnvironmentData environment;
   std::vector<IrradianceVolumeData> irradiance_volumes;
   std::vector<ReflectionProbeData> reflection_probes;
+  // The planes the planar reflectors lie in (MeshRenderer::reflector_plane in the world), each
+  // once: xyz the unit normal they face, w: n . p + w = 0.
+  std::vector<glm::vec4> planar_reflectors;
   float exposure = 0.0f;  // EV from the world's PostProcessSettings
   // Frame timing for temporal nodes (post.exposure's adaptation): seconds since the previous
   // frame, and a camera cut (history no longer describes this view: temporal state restarts).
@@ -226,7 +229,7 @@ struct SceneView {
   // The draw's mesh; throws std::invalid_argument when its index is out of range or its slot null.
   const MeshData& mesh_of(const DrawItem& draw) const;
 
-  // What the compiler specializes on: counts of each light kind, probes, glossy materials
+  // What the compiler specializes on: counts of each light kind, probes, reflector planes, glossy materials
   // (any drawn with roughness below 0.9 or any metal; a draw without a material counts as the
   // default PbrMaterial), whether any drawn mesh carries baked occlusion, the camera's aperture
   // and focus.

@@ -44,6 +44,8 @@ const std::pair<const char*, const char*> must_precede[] = {
     {"ssr/hiz", "ssr/trace"},
     {"light/direct", "ssr/trace"},  // the reflections reflect this frame's direct light
     {"ssr/trace", "ibl/shade"},
+    {"probes/lookup", "planar/reflect"},  // the planes pass the probes' reflections through
+    {"planar/reflect", "ibl/shade"},
     {"ibl/shade", "dof/coc"},
     {"dof/coc", "dof/gather"},
     {"dof/gather", "dof/composite"},
@@ -86,15 +88,16 @@ TEST(CompilerExamples, EveryExampleCompilesWithEveryScene) {
 
       // Nothing is culled in the examples; only depth of field may be bypassed, without a lens,
       // the irradiance volume without volumes, the transparent surfaces' pass without BLEND
-      // materials, screen-space reflections without glossy materials and the reflection probes'
-      // capture without probes.
+      // materials, screen-space reflections without glossy materials, the reflection probes'
+      // capture without probes and the planar reflections without reflectors.
       for (const auto& n : plan.nodes) {
         EXPECT_NE(n.state, NodeState::Kind::culled) << n.id << ": " << n.reason;
         bool lens = options.scene.aperture > 0, volumes = options.scene.irradiance_volumes > 0;
         bool bypassed = (n.type == "post.dof" && !lens) || (n.type == "gi.irradiance_volume" && !volumes) ||
                         (n.type == "scene.forward_transparent" && !options.scene.blend_materials) ||
                         (n.type == "lighting.ssr" && !options.scene.glossy_materials) ||
-                        (n.type == "gi.reflection_capture" && options.scene.reflection_probes == 0);
+                        (n.type == "gi.reflection_capture" && options.scene.reflection_probes == 0) ||
+                        (n.type == "gi.planar_reflection" && options.scene.planar_reflectors == 0);
         auto expected = bypassed ? NodeState::Kind::bypassed : NodeState::Kind::active;
         EXPECT_EQ(n.state, expected) << n.id << ": " << n.reason;
       }
@@ -205,6 +208,19 @@ TEST(CompilerExamples, ScreenSpaceReflectionsAreBypassedWithoutGlossyMaterials) 
   EXPECT_EQ(ssr->state, NodeState::Kind::bypassed);
   EXPECT_EQ(ssr->reason, "the scene has no glossy materials");
   for (const auto& p : plan.passes) EXPECT_FALSE(p.name.starts_with("ssr/")) << p.name;
+}
+
+TEST(CompilerExamples, PlanarReflectionIsBypassedWithoutReflectors) {
+  CompileOptions mirror;
+  mirror.scene.planar_reflectors = 1;
+  Plan with = test::compile_ok(test::load_example("examples/planar-reflections.json"), builtin_registry(), mirror);
+  EXPECT_EQ(test::plan_node(with, "planar")->state, NodeState::Kind::active);
+  expect_before(with, "planar/reflect", "ibl/shade");
+  Plan without = test::compile_example("examples/planar-reflections.json");  // the default scene has none
+  const PlanNode* planar = test::plan_node(without, "planar");
+  ASSERT_NE(planar, nullptr);
+  EXPECT_EQ(planar->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(planar->reason, "the scene has no planar reflectors");
 }
 
 TEST(CompilerExamples, TheTextPlanNamesEveryPassInOrder) {

@@ -418,6 +418,47 @@ TEST(SceneFile, ExampleWorldsLoad) {
   EXPECT_GE(loaded, 1u);
 }
 
+// A planar reflector's mesh must be flat and have a side to reflect from (how flat: MeshPlane's
+// tests); its plane reaches the scene view in world space, once for every piece of one floor.
+TEST(SceneFile, PlanarReflectorsMustBeFlat) {
+  std::vector<std::string> errors = errors_of(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "planar_reflector": true},
+    {"name": "bare", "planar_reflector": true},
+    {"name": "quad", "shape": {"type": "quad", "size": [1, 1]}, "planar_reflector": "yes"}
+  ]})");
+  EXPECT_EQ(errors, (std::vector<std::string>{
+                        // A closed mesh faces every way: its triangles' normals cancel.
+                        "2:86: error: a planar reflector's mesh must be flat and face one way; 'sphere' has no "
+                        "side to reflect from (/entities/0/planar_reflector)",
+                        "3:42: error: 'planar_reflector' needs a 'model' or a 'shape' to reflect with "
+                        "(/entities/1/planar_reflector)",
+                        "4:85: error: 'planar_reflector' must be true or false, found a string "
+                        "(/entities/2/planar_reflector)"}));
+}
+
+TEST(SceneFile, PlanarReflectorPlanesAreInWorldSpaceAndShared) {
+  World w = parse_scene_file(R"({"format": "lumagraph-world/1", "entities": [
+    {"name": "left", "shape": {"type": "quad", "size": [1, 1]}, "transform": {"position": [-1, 0.25, 0]},
+     "planar_reflector": true},
+    {"name": "right", "shape": {"type": "quad", "size": [1, 1]}, "transform": {"position": [1, 0.25, 0]},
+     "planar_reflector": true},
+    {"name": "wall", "shape": {"type": "quad", "size": [2, 2]},
+     "transform": {"position": [0, 1, -3], "rotation": [90, 0, 0]}, "planar_reflector": true},
+    {"name": "plain", "shape": {"type": "quad", "size": [1, 1]}, "transform": {"position": [0, 2, 0]}}
+  ]})",
+                             fake_path());
+  const SceneView v = make_scene_view(w, 1.0f);
+  ASSERT_EQ(v.planar_reflectors.size(), 2u);  // the two floor quads are one plane
+  EXPECT_EQ(v.summary().planar_reflectors, 2);
+  EXPECT_TRUE(v.summary().has(SceneFeature::planar_reflectors));
+  // The floor faces +Y at y = 0.25: n . p + w = 0 with w = -0.25.
+  EXPECT_NEAR(glm::distance(glm::vec3(v.planar_reflectors[0]), glm::vec3(0, 1, 0)), 0.0f, 1e-6f);
+  EXPECT_NEAR(v.planar_reflectors[0].w, -0.25f, 1e-6f);
+  // The wall, +Y turned 90 degrees about X, faces +Z at z = -3.
+  EXPECT_NEAR(glm::distance(glm::vec3(v.planar_reflectors[1]), glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+  EXPECT_NEAR(v.planar_reflectors[1].w, 3.0f, 1e-5f);
+}
+
 TEST(SceneFile, GalleryHasEveryLightKind) {
   World w = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/gallery.json");
   SceneSummary s = make_scene_view(w, 16.0f / 9.0f).summary();

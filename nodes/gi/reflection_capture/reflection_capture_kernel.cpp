@@ -1,7 +1,7 @@
 // gi.reflection_capture's kernel. The "lookup" pass first makes sure the cubes are current, then
 // one dispatch looks them up per pixel (shaders/reflection_lookup.comp).
 //
-// capture "raster" (raster_cube_capture.h): with faces_per_frame 0, when
+// capture "raster" (raster_capture.h): with faces_per_frame 0, when
 // reflection_capture_key() of the frame's scene differs from the last capture's, every face of
 // every probe is drawn on the GPU and every probe prefiltered; with faces_per_frame N, the whole
 // capture is drawn on the first frame (and when the number of probes changes), then N faces a
@@ -34,7 +34,7 @@
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/reflection_capture/captured_cube_source.h"
 #include "nodes/gi/reflection_capture/probe_cubes.h"
-#include "nodes/gi/reflection_capture/raster_cube_capture.h"
+#include "nodes/gi/reflection_capture/raster_capture.h"
 #include "nodes/gi/reflection_capture/reflection_cube_capture.h"
 #include "nodes/gi/reflection_capture/reflection_probe_buffer.h"
 #include "runtime/gpu/buffer.h"
@@ -126,36 +126,11 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
                      out.desc().height, std::as_bytes(std::span(&push_, 1)), kTileSize, constants_);
   }
 
-  // What the raster capture's shading binds: the graph's environment where the scene has one
-  // (refused when its inputs are not linked), otherwise placeholders its flags skip.
-  ForwardResources forward_resources(PassContext& ctx, ForwardSettings& settings) {
-    const bool environment = ctx.scene().has_environment;
-    const bool sh = ctx.has("in.sh");
-    if (environment && (!ctx.has("in.specular") || !ctx.has("in.brdf_lut") || (!sh && !ctx.has("in.irradiance"))))
-      throw std::runtime_error("gi.reflection_capture '" + ctx.node().id +
-                               "': capture 'raster' under an environment needs its inputs 'specular', 'brdf_lut' "
-                               "and 'sh' or 'irradiance' linked (or capture 'path_traced')");
-    settings = {(environment ? 1u : 0u) | (sh ? 2u : 0u), intensity_};
-    const VkImageView placeholder_2d = ctx.image("in.gbuffer", 0).view();
-    const VkImageView placeholder_cube = cubes_.cube_view(0);
-    if (!sh_placeholder_) {
-      sh_placeholder_.emplace(ctx.gpu(), ctx.node().id + " no SH", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-      sh_placeholder_->write(std::vector<float>(4, 0.0f));
-    }
-    return {.sh = sh ? ctx.buffer("in.sh").handle() : sh_placeholder_->handle(),
-            .irradiance = ctx.has("in.irradiance") ? ctx.image("in.irradiance").view() : placeholder_cube,
-            .specular = environment ? ctx.image("in.specular").view() : placeholder_cube,
-            .brdf_lut = environment ? ctx.image("in.brdf_lut").view() : ctx.image("in.gbuffer", 1).view(),
-            .placeholder_2d = placeholder_2d,
-            .linear = ctx.linear_sampler(),
-            .nearest = ctx.nearest_sampler()};
-  }
-
   // Draws `faces`, reading the probes' own cubes as specular map when `probe_specular`.
   void draw_faces(PassContext& ctx, std::span<const CubeFace> faces, bool probe_specular) {
     if (!raster_capture_) raster_capture_.emplace(ctx.gpu(), ctx.node().id);
     ForwardSettings settings{};
-    const ForwardResources resources = forward_resources(ctx, settings);
+    const ForwardResources resources = inputs_.bind(ctx, intensity_, settings);
     std::vector<VkImageView> specular;
     if (probe_specular)
       for (uint32_t p = 0; p < cubes_.captured().size(); ++p) specular.push_back(cubes_.cube_view(p));
@@ -264,11 +239,12 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
   Push push_{};
   uint64_t captured_key_ = 0;
   uint32_t next_face_ = 0;  // the time-sliced capture's next slot (6 probe + face)
-  std::optional<HostBuffer> camera_, probe_buffer_, staging_, sh_placeholder_;
+  std::optional<HostBuffer> camera_, probe_buffer_, staging_;
+  CaptureInputs inputs_;
   std::optional<PathEnvironment> environment_;
   bool environment_has_ = false;
   ProbeCubes cubes_;
-  std::optional<RasterCubeCapture> raster_capture_;
+  std::optional<RasterCapture> raster_capture_;
 };
 
 }  // namespace

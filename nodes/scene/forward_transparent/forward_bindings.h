@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <glm/vec4.hpp>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,8 +19,10 @@ namespace lg {
 
 // forward_shading.glsl's Settings (std140, binding 20).
 struct ForwardSettings {
-  uint32_t flags;  // 1: image-based light, 2: its diffuse from SH
+  uint32_t flags;  // 1: image-based light, 2: its diffuse from SH, 4: distance to the camera in alpha
   float intensity;
+  float unused[2] = {};
+  glm::vec4 clip_plane{0.0f, 0.0f, 0.0f, 1.0f};  // (0, 0, 0, 1): nothing clipped
 };
 
 // The environment's inputs (bindings 6 to 9) and any 2D image to sample, bound where the shaders

@@ -4,8 +4,10 @@
 #define LG_FORWARD_SETTINGS_GLSL
 
 layout(std140, binding = 20) uniform Settings {
-  uint flags;  // 1: image-based light, 2: its diffuse from SH (else the irradiance map)
+  uint flags;  // 1: image-based light, 2: its diffuse from SH (else the irradiance map), 4: the
+               // captures write the distance to the camera in alpha (a planar reflection's blur)
   float intensity;
+  vec4 clip_plane;  // the captures draw only where dot(clip_plane, (p, 1)) >= 0: a mirror's front
 };
 
 #endif
