@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -30,6 +31,8 @@ options:
   --env FILE          environment (.hdr, .exr) for every env.load node of the graph
   --size WxH          frame size in pixels (default 1280x720)
   --frames N          frames to render (default 1); temporal nodes settle over frames
+  --frame-seconds S   the time between frames, in seconds (default 1/60): how far
+                      post.exposure adapts from one frame to the next
   --out FILE          image to write: .png (default out.png), .exr or .hdr
   --dump DIR          write every node output port of the last frame: textures as EXR,
                       SH and scalars as JSON (turns memory aliasing off so all survive)
@@ -49,7 +52,8 @@ constexpr int exit_runtime = 3;
 
 ArgSpec render_arg_spec() {
   return {{"--help", "--validate", "--no-alias", "--no-pipeline-cache"},
-          {"--scene", "--env", "--size", "--frames", "--out", "--dump", "--stats", "--device", "--asset-root"},
+          {"--scene", "--env", "--size", "--frames", "--frame-seconds", "--out", "--dump", "--stats", "--device",
+           "--asset-root"},
           {"--asset-root"}};
 }
 
@@ -80,6 +84,17 @@ int render_command(const std::vector<std::string>& argv) {
     char tail = 0;
     if (std::sscanf(n->c_str(), "%u%c", &frames, &tail) != 1 || frames == 0 || frames > 100000)
       return usage_error("render", "--frames expects a count from 1 to 100000; got '" + *n + "'");
+  }
+  FrameTiming timing;
+  if (auto text = args->value("--frame-seconds")) {
+    char tail = 0;
+    double seconds = 0;
+    // At most an hour: more is a typo, and float(seconds) stays finite and above 0.
+    if (std::sscanf(text->c_str(), "%lf%c", &seconds, &tail) != 1 || !std::isfinite(seconds) || !(float(seconds) > 0) ||
+        seconds > 3600)
+      return usage_error("render",
+                         "--frame-seconds expects a time in seconds above 0 and at most 3600; got '" + *text + "'");
+    timing.seconds = float(seconds);
   }
   const std::string out = args->value("--out").value_or("out.png");
 
@@ -116,7 +131,7 @@ int render_command(const std::vector<std::string>& argv) {
     const bool progress = frames > 1 && isatty(STDERR_FILENO);
     FrameStats stats;
     for (unsigned f = 0; f < frames; ++f) {
-      stats = renderer.render(world, frame);
+      stats = renderer.render(world, frame, timing);
       print_validation("render", renderer.context(), validation_messages);
       print_warnings();
       if (progress) std::fprintf(stderr, "\rframe %u/%u  %.1f ms GPU", f + 1, frames, stats.gpu_ms);

@@ -27,6 +27,7 @@ struct ParamSpec {
   std::vector<std::string> values;      // enum choices
   std::vector<double> choices;          // float and int params: where given, the only values allowed
   std::vector<std::string> extensions;  // path params: accepted file extensions
+  int less_than = -1;                   // float and int params: a param whose value this one must stay below
   std::string unit, doc;
 };
 

@@ -24,6 +24,9 @@ class SchemaReader {
     s_.is_static = bool_at(root, "", "static");
     s_.is_output = bool_at(root, "", "output");
     each(root, "params", [&](const JsonValue& v, const std::string& p) { param(v, p); });
+    if (const JsonValue* params = root.find("params"); params && params->is_array())
+      for (size_t k = 0; k < params->items().size(); ++k)
+        ordering(params->items()[k], json_pointer_append("/params", k));
     each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, true)); });
     camera_jitter(root);
     each(root, "outputs", [&](const JsonValue& v, const std::string& p) { s_.outputs.push_back(port(v, p, false)); });
@@ -100,7 +103,7 @@ class SchemaReader {
   }
 
   void param(const JsonValue& v, const std::string& p) {
-    check_keys(v, p, {"name", "type", "default", "min", "max", "values", "extensions", "unit", "doc"});
+    check_keys(v, p, {"name", "type", "default", "min", "max", "values", "extensions", "less_than", "unit", "doc"});
     ParamSpec spec;
     spec.name = string_at(v, p, "name", true);
     std::string type = string_at(v, p, "type", true);
@@ -140,6 +143,31 @@ class SchemaReader {
     if (const JsonValue* def = v.find("default")) spec.default_value = *def;
     else d_.error(v.pos(), p, "missing \"default\"");
     s_.params.push_back(std::move(spec));
+  }
+
+  static bool numeric_scalar(const ParamSpec& spec) {
+    return spec.type == ParamType::float_ || spec.type == ParamType::int_;
+  }
+
+  // "less_than": NAME, once every param is read (the other may come later): both params numbers,
+  // and the defaults in that order, so a graph that sets neither is valid.
+  void ordering(const JsonValue& v, const std::string& p) {
+    const JsonValue* other = v.is_object() ? v.find("less_than") : nullptr;
+    if (!other) return;
+    const std::string lp = json_pointer_append(p, "less_than");
+    const JsonValue* name = v.find("name");
+    const int self = name && name->is_string() ? s_.find_param(name->as_string()) : -1;
+    const int index = other->is_string() ? s_.find_param(other->as_string()) : -1;
+    if (self < 0 || index < 0 || index == self || !numeric_scalar(s_.params[size_t(self)]) ||
+        !numeric_scalar(s_.params[size_t(index)])) {
+      d_.error(other->pos(), lp, "expected the name of another float or int param, on a float or int param");
+      return;
+    }
+    ParamSpec& spec = s_.params[size_t(self)];
+    const JsonValue &mine = spec.default_value, &theirs = s_.params[size_t(index)].default_value;
+    if (mine.is_number() && theirs.is_number() && !(mine.as_number() < theirs.as_number()))
+      d_.error(other->pos(), lp, "the default must be below '" + other->as_string() + "''s default");
+    spec.less_than = index;
   }
 
   PortSpec port(const JsonValue& v, const std::string& p, bool is_input) {

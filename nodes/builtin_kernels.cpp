@@ -21,6 +21,7 @@
 #include "nodes/post/bloom/bloom_kernel.h"
 #include "nodes/post/dof/dof_kernel.h"
 #include "nodes/post/exposure/exposure_kernel.h"
+#include "nodes/post/flare/flare_kernel.h"
 #include "nodes/post/taa/taa_kernel.h"
 #include "nodes/post/tonemap/tonemap_kernel.h"
 #include "nodes/post/upsample/upsample_kernel.h"
@@ -54,6 +55,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("post.bloom", make_bloom_kernel);
     r.add("post.dof", make_dof_kernel);
     r.add("post.exposure", make_exposure_kernel);
+    r.add("post.flare", make_flare_kernel);
     r.add("post.taa", make_taa_kernel);
     r.add("post.tonemap", make_tonemap_kernel);
     r.add("post.upsample", make_upsample_kernel);

@@ -91,6 +91,32 @@ std::string check_param_value(const ParamSpec& spec, const JsonValue& v) {
   return "a valid value";
 }
 
+namespace {
+
+// Params a schema orders ("less_than"): where the graph sets either, the two values (each valid,
+// or its own error said so) must be in order. The error lands on a value the graph wrote.
+void check_param_order(const NodeSchema& s, const GraphNode& gn, int n, Diagnostics& diagnostics) {
+  for (const ParamSpec& spec : s.params) {
+    if (spec.less_than < 0) continue;
+    const ParamSpec& other = s.params[size_t(spec.less_than)];
+    const JsonValue* mine = gn.params.find(spec.name);
+    const JsonValue* theirs = gn.params.find(other.name);
+    if (!mine && !theirs) continue;  // the defaults are in order: the schema reader checks
+    const JsonValue& a = mine ? *mine : spec.default_value;
+    const JsonValue& b = theirs ? *theirs : other.default_value;
+    if (!check_param_value(spec, a).empty() || !check_param_value(other, b).empty()) continue;
+    if (a.as_number() < b.as_number()) continue;
+    auto value = [](const ParamSpec& p, const JsonValue& v, bool written) {
+      return p.name + " " + format_number(v.as_number()) + (written ? "" : " (its default)");
+    };
+    diagnostics.error((mine ? mine : theirs)->pos(), node_pointer(n) + "/params/" + (mine ? spec.name : other.name),
+                      "param '" + spec.name + "' of node '" + gn.id + "' (" + s.type + ") must be below its param '" +
+                          other.name + "': " + value(spec, a, mine) + " is not below " + value(other, b, theirs));
+  }
+}
+
+}  // namespace
+
 std::optional<CachedVector<int>> validate(const ResolvedGraph& resolved, const AssetRoots& roots,
                                           Diagnostics& diagnostics) {
   const Graph& g = *resolved.graph;
@@ -130,6 +156,7 @@ std::optional<CachedVector<int>> validate(const ResolvedGraph& resolved, const A
           diagnostics.error(written->pos(), pointer(), "param '" + spec.name + "' of node '" + gn.id + "': " + why);
       }
     }
+    check_param_order(s, gn, n, diagnostics);
     for (size_t i = 0; i < s.inputs.size(); ++i)
       if (!s.inputs[i].optional && rn.input_link[i] == -1)
         diagnostics.error(gn.pos, node_pointer(n),

@@ -117,11 +117,26 @@ TEST(CompilerSpecialization, BloomAtIntensityZeroIsBypassed) {
     EXPECT_EQ(bloom->reason, "intensity is 0: bloom would add nothing");
     EXPECT_EQ(pass_at(plan, "bloom/downsample"), -1);
     EXPECT_EQ(resource_at(plan, "bloom/chain"), -1);
-    // tonemap reads what bloom would have read: dof's output, or ibl's when dof is bypassed too.
+    // flare reads what bloom would have read: dof's output, or ibl's when dof is bypassed too.
     const char* upstream = *scene ? "dof.color" : "ibl.color";
-    EXPECT_EQ(test::resource_name(plan, test::resource_in_slot(plan, "tonemap/map", "in.color")), upstream);
+    EXPECT_EQ(test::resource_name(plan, test::resource_in_slot(plan, "flare/bright", "in.color")), upstream);
+    EXPECT_EQ(test::resource_name(plan, test::resource_in_slot(plan, "flare/composite", "in.color")), upstream);
     expect_nothing_read_before_written(plan);
   }
+}
+
+TEST(CompilerSpecialization, FlareAtIntensityZeroIsBypassed) {
+  Graph g = test::load_example("examples/post.json");
+  test::node_named(g, "flare").params.set("intensity", 0);
+  Plan plan = test::compile_ok(g, builtin_registry());
+  const PlanNode* flare = test::plan_node(plan, "flare");
+  ASSERT_NE(flare, nullptr);
+  EXPECT_EQ(flare->state, NodeState::Kind::bypassed);
+  EXPECT_EQ(flare->reason, "intensity is 0: the flare would add nothing");
+  for (const char* pass : {"flare/bright", "flare/features", "flare/normalise", "flare/composite"})
+    EXPECT_EQ(pass_at(plan, pass), -1) << pass;
+  EXPECT_EQ(test::resource_name(plan, test::resource_in_slot(plan, "tonemap/map", "in.color")), "bloom.color");
+  expect_nothing_read_before_written(plan);
 }
 
 TEST(CompilerSpecialization, NoShadowCastersDropsTheShadowPass) {

@@ -154,5 +154,37 @@ TEST(CompilerValidate, AGraphThatAsksForNothingIsAnError) {
   EXPECT_NE(v.errors.find("the graph asks for nothing"), std::string::npos) << v.errors;
 }
 
+// A schema's "less_than" names another number param, and its defaults must be in that order;
+// the graph-side refusal is in tests/parse/malformed_graph_test.cpp.
+TEST(CompilerValidate, SchemaParamOrderRulesAreChecked) {
+  auto schema = [](const std::string& low, const std::string& high) {
+    return R"({ "type": "test.ordered", "doc": "d", "passes": [ { "name": "p", "queue": "compute", "uses": {} } ], "params": [
+      { "name": "low", "type": "float", "default": )" +
+           low + R"(, "less_than": "high", "doc": "d" },
+      { "name": "high", "type": "float", "default": )" +
+           high + R"(, "doc": "d" },
+      { "name": "mode", "type": "enum", "default": "a", "values": ["a"], "doc": "d" } ] })";
+  };
+  Registry registry;
+  Diagnostics ok;
+  ASSERT_TRUE(registry.add_schema(schema("1", "2"), ok)) << ok.to_string();
+  const NodeSchema& s = *registry.find("test.ordered");
+  EXPECT_EQ(s.params[0].less_than, 1);
+  EXPECT_EQ(s.params[1].less_than, -1);
+
+  Diagnostics unordered;
+  EXPECT_FALSE(Registry().add_schema(schema("2", "2"), unordered));
+  EXPECT_NE(unordered.to_string().find("the default must be below 'high''s default"), std::string::npos)
+      << unordered.to_string();
+  for (const char* other : {"\"nothing\"", "\"low\"", "\"mode\"", "3"}) {
+    std::string text = schema("1", "2");
+    text.replace(text.find("\"high\", \"doc\""), 6, other);
+    Diagnostics d;
+    EXPECT_FALSE(Registry().add_schema(text, d)) << other;
+    EXPECT_NE(d.to_string().find("expected the name of another float or int param"), std::string::npos)
+        << other << ": " << d.to_string();
+  }
+}
+
 }  // namespace
 }  // namespace lg

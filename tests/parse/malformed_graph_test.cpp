@@ -92,6 +92,23 @@ std::string load_path(const std::string& path) {
   return load_graph(R"(    { "id": "env", "type": "env.load", "params": { "path": ")" + path + R"(" } },)");
 }
 
+// A G-buffer lit and metered by post.exposure 'x' with `params` (an object's members) on line 6,
+// where the params object's members start at column 55.
+std::string exposure_graph(const std::string& params) {
+  return R"({
+  "format": "lumagraph/1",
+  "nodes": [
+    { "id": "g", "type": "scene.gbuffer" },
+    { "id": "l", "type": "lighting.deferred" },
+    { "id": "x", "type": "post.exposure", "params": { )" +
+         params + R"( } }
+  ],
+  "links": [ { "from": "g.gbuffer", "to": "l.gbuffer" }, { "from": "l.color", "to": "x.color" } ],
+  "outputs": ["x.exposure"]
+}
+)";
+}
+
 std::vector<Case> cases() {
   const std::string array_of_zeros = [] {
     std::string s;
@@ -232,6 +249,14 @@ std::vector<Case> cases() {
       {"enum value not in the list", base_with(6, R"(    { "id": "t", "type": "post.tonemap", "params": { "curve": "filmic" } })"),
        R"(param 'curve' of node 't' (post.tonemap) must be one of "aces_fitted", "neutral", "clamp")", 6, 63,
        "/nodes/2/params/curve"},
+      // post.exposure's schema orders low_percent below high_percent ("less_than"): the error is
+      // at the value the graph wrote, low_percent's when both are, with both values.
+      {"params out of their schema's order", exposure_graph(R"("low_percent": 96, "high_percent": 95)"),
+       "param 'low_percent' of node 'x' (post.exposure) must be below its param 'high_percent': low_percent 96 is "
+       "not below high_percent 95", 6, 70, "/nodes/2/params/low_percent"},
+      {"a param out of order with another's default", exposure_graph(R"("high_percent": 40)"),
+       "must be below its param 'high_percent': low_percent 50 (its default) is not below high_percent 40", 6, 71,
+       "/nodes/2/params/high_percent"},
       // env.sh_project's params object: a param's value is at 66 for "order", 74 for
       // "window_target", 67 for "window" and 76 for "convolve_cosine".
       {"int param above its range", R"({

@@ -4,6 +4,7 @@
 // crash. (A node without a kernel is the executor's error; tests/runtime/exec_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "graph/json_reader.h"
@@ -131,13 +132,45 @@ TEST(RenderCli, ACorruptPipelineCacheFileIsIgnoredWithAWarning) {
 
 TEST(RenderCli, BadOptionsAreUsageErrors) {
   for (std::vector<std::string> args : {std::vector<std::string>{"render", "--frames", "0"},
+                                        {"render", "--frame-seconds", "-1"},
+                                        {"render", "--frame-seconds", "nan"},
+                                        {"render", "--frame-seconds", "1e-60"},  // 0 as a float
+                                        {"render", "--frame-seconds", "0.5s"},
                                         {"render", "--size", "12x"},
                                         {"render", "--colour"},
                                         {"render", "a.json", "b.json"}}) {
     Outcome r = lumagraph(args);
     EXPECT_EQ(r.status, 1) << args[1] << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "lumagraph render:")) << r.err;
+    if (args[1] == "--frame-seconds")
+      EXPECT_TRUE(contains(r.err, "--frame-seconds expects a time in seconds above 0") &&
+                  contains(r.err, "got '" + args[2] + "'"))
+          << r.err;
   }
+}
+
+// --frame-seconds is the step post.exposure adapts by. Exposure node 'a' reads node 'b''s last
+// exposure as its history; 'b' meters 5 EV brighter ('compensation'), so on the second frame
+// 'a' falls from b's value towards its own at speed_down (3 EV/s) for one frame time:
+// b - a = 3 x 0.25 s. The dump holds the two values as half floats: each within 2^-11 of itself.
+TEST(RenderCli, FrameSecondsIsTheTimeExposureAdaptsOver) {
+  TempDir dir;
+  write_text(dir.file("g.json"), R"({ "format": "lumagraph/1", "nodes": [
+    { "id": "gbuf", "type": "scene.gbuffer" }, { "id": "light", "type": "lighting.deferred" },
+    { "id": "a", "type": "post.exposure" },
+    { "id": "b", "type": "post.exposure", "params": { "compensation": 5 } },
+    { "id": "tonemap", "type": "post.tonemap" }, { "id": "out", "type": "output.display" } ],
+  "links": [ { "from": "gbuf.gbuffer", "to": "light.gbuffer" }, { "from": "light.color", "to": "a.color" },
+    { "from": "light.color", "to": "b.color" }, { "from": "b.exposure", "to": "a.history" },
+    { "from": "b.exposure", "to": "b.history" }, { "from": "light.color", "to": "tonemap.color" },
+    { "from": "a.exposure", "to": "tonemap.auto_exposure" }, { "from": "tonemap.color", "to": "out.color" } ],
+  "outputs": ["b.exposure"] })");
+  Outcome r = lumagraph({"render", dir.file("g.json"), "--size", "32x18", "--frames", "2", "--frame-seconds", "0.25",
+                         "--out", dir.file("x.png"), "--dump", dir.file("dump")});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double a = load_image(dir.file("dump/a.exposure.exr")).rgba.at(0);
+  const double b = load_image(dir.file("dump/b.exposure.exr")).rgba.at(0);
+  EXPECT_NEAR(b - a, 0.75, (std::abs(a) + std::abs(b)) * std::exp2(-11)) << "a " << a << ", b " << b;
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // Moves `intensity` of each pixel's blooming radiance into the blurred chain (the chain's
 // levels averaged), so the frame's total radiance is unchanged: out = c + k (bloom - bright(c)).
+#include "nodes/common/shaders/bright_part.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D scene_color;
@@ -12,12 +15,6 @@ layout(push_constant) uniform Push {
   float levels;
 };
 
-vec3 bright_part(vec3 c) {
-  if (threshold <= 0.0) return c;
-  float luminance = dot(c, vec3(0.2126, 0.7152, 0.0722));
-  return luminance > threshold ? c * ((luminance - threshold) / luminance) : vec3(0.0);
-}
-
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(result);
@@ -26,5 +23,5 @@ void main() {
   if (any(isnan(c)) || any(isinf(c))) c = vec3(0.0);
   vec2 uv = (vec2(texel) + 0.5) / vec2(size);
   vec3 bloom = textureLod(chain, uv, 0.0).rgb / levels;
-  imageStore(result, texel, vec4(max(c + intensity * (bloom - bright_part(c)), vec3(0.0)), 1.0));
+  imageStore(result, texel, vec4(max(c + intensity * (bloom - bright_part(c, threshold)), vec3(0.0)), 1.0));
 }

@@ -1,7 +1,10 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // One level of the bloom chain from the level above (or from the scene at level 0): a 4x4
 // box as four bilinear taps. Level 0 also applies the threshold: only the part of each texel's
 // radiance above it blooms (all of it when the threshold is 0).
+#include "nodes/common/shaders/bright_part.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D source;
@@ -10,12 +13,6 @@ layout(push_constant) uniform Push {
   float threshold;  // luminance; 0 for none
   uint first;       // 1 when reading the scene
 };
-
-vec3 bright_part(vec3 c) {
-  if (threshold <= 0.0) return c;
-  float luminance = dot(c, vec3(0.2126, 0.7152, 0.0722));
-  return luminance > threshold ? c * ((luminance - threshold) / luminance) : vec3(0.0);
-}
 
 // NaN and Inf would spread over the whole chain: they count as black.
 vec3 finite(vec3 c) {
@@ -32,7 +29,7 @@ void main() {
   for (int y = -1; y <= 1; y += 2)
     for (int x = -1; x <= 1; x += 2) {
       vec3 c = finite(textureLod(source, uv + vec2(x, y) * step_uv, 0.0).rgb);
-      sum += first != 0u ? bright_part(c) : c;
+      sum += first != 0u ? bright_part(c, threshold) : c;
     }
   imageStore(target, texel, vec4(sum * 0.25, 1.0));
 }
