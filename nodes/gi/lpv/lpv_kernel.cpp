@@ -1,0 +1,306 @@
+#include "nodes/gi/lpv/lpv_kernel.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
+#include "nodes/common/node_shaders.h"
+#include "nodes/gi/lpv/lpv_grid.h"
+#include "nodes/gi/lpv/lpv_model.h"
+#include "nodes/lighting/deferred/light_buffers.h"
+#include "nodes/lighting/deferred/shadow_projection.h"
+#include "nodes/scene/gbuffer/draw_constants.h"
+#include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/buffer.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/pipeline.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kFixedRange = 1073741824.0;  // 2^30: the most any fixed-point sum may reach
+constexpr double kLobePeak = 1.02332671;      // the largest coefficient of sh_l1_cosine_lobe
+
+struct Constants {  // shaders/lpv_common.glsl
+  glm::vec4 origin_cell;
+  glm::ivec4 counts;
+  glm::vec4 light;
+  glm::vec4 scales;  // x, y: fixed-point scales; z: 1 when a light was injected (the coverage)
+};
+
+struct RsmLight {  // shaders/lpv_rsm.frag
+  glm::vec4 direction, irradiance;
+};
+
+struct RsmPush {  // lighting.deferred's shadow_draw.glsl
+  glm::mat4 shadow_from_world;
+  uint32_t draw_index;
+  uint32_t pad[3];
+};
+
+// lpv_model.h's face table as shaders/lpv_propagate.comp reads it: 30 bases, then 30 lobes.
+std::vector<glm::vec4> face_table() {
+  std::vector<glm::vec4> out(2 * 6 * kLpvFacesPerDirection);
+  for (int d = 0; d < 6; ++d)
+    for (int f = 0; f < kLpvFacesPerDirection; ++f) {
+      const LpvFace& face = lpv_faces()[d][f];
+      const int i = d * kLpvFacesPerDirection + f;
+      out[i] = glm::vec4(
+          glm::dvec4(face.towards_basis[0], face.towards_basis[1], face.towards_basis[2], face.towards_basis[3]));
+      out[30 + i] =
+          glm::vec4(glm::dvec4(face.emitted_lobe[0], face.emitted_lobe[1], face.emitted_lobe[2], face.emitted_lobe[3]));
+    }
+  return out;
+}
+
+// The main directional light: the first that casts shadows, else the first; -1 when none.
+int main_directional_light(const SceneView& scene) {
+  const int caster = shadow_caster(scene);
+  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
+}
+
+class LpvKernel final : public NodeKernel {
+ public:
+  explicit LpvKernel(const PlanNode& node)
+      : cells_(int(param_number(node, "grid"))),
+        iterations_(int(param_number(node, "iterations"))),
+        occlusion_(param_bool(node, "occlusion")) {
+    const glm::vec3 lo = param_float3(node, "box_min"), hi = param_float3(node, "box_max");
+    if (lo != hi) {
+      if (!glm::all(glm::lessThan(lo, hi)))
+        throw std::invalid_argument(node.id + ": box_min must be below box_max on every axis");
+      box_ = Bounds{lo, hi};
+    }
+  }
+
+  void record(PassContext& ctx) override {
+    const std::string& pass = ctx.pass().pass;
+    if (pass == "rsm")
+      record_rsm(ctx);
+    else if (pass == "volume")
+      record_volume(ctx);
+    else
+      throw std::logic_error("gi.lpv has no pass '" + pass + "'");
+  }
+
+ private:
+  // Once a frame, at its first pass: the light, the grid and the constants, all from this
+  // frame's scene (lights and objects may move every frame).
+  void prepare(PassContext& ctx) {
+    if (prepared_frame_ == ctx.frame_index() && constants_) return;
+    prepared_frame_ = ctx.frame_index();
+    const SceneView& scene = ctx.scene();
+    if (bounds_version_ != scene.version || !scene_bounds_) {
+      scene_bounds_ = scene_bounds(scene);
+      bounds_version_ = scene.version;
+    }
+    grid_ = fit_lpv_grid(box_ ? *box_ : *scene_bounds_, cells_);
+    allocate(ctx);
+
+    const int light = main_directional_light(scene);
+    const uint32_t rsm_size = ctx.image("tmp.rsm_position").desc().width;
+    Constants c{};
+    c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
+    c.counts = glm::ivec4(grid_.counts, int(rsm_size));
+    RsmLight l{glm::vec4(0, -1, 0, 0), glm::vec4(0.0f)};
+    double scale = 1.0;
+    light_present_ = false;
+    if (light >= 0) {
+      const DirectionalLightData& d = scene.directional_lights[light];
+      // shadow_from_world's square: the bounding sphere's diameter across the beam.
+      const double radius = std::max(0.5 * glm::length(scene_bounds_->max - scene_bounds_->min), 1e-3);
+      const double texel_area = std::pow(2.0 * radius / rsm_size, 2.0);
+      const glm::vec3 e = glm::max(d.irradiance, glm::vec3(0.0f));
+      const double peak = std::max({e.r, e.g, e.b});
+      // A texel's intensity coefficient is at most peak x area / pi x kLobePeak (diffuse colour
+      // at most 1); the whole map's at most rsm_size^2 times that.
+      const double largest_sum = double(rsm_size) * rsm_size * peak * texel_area / kPi * kLobePeak;
+      light_present_ = std::isfinite(largest_sum) && largest_sum > 0.0;
+      if (light_present_) scale = kFixedRange / largest_sum;
+      c.light = glm::vec4(glm::normalize(d.direction), float(texel_area));
+      l = {glm::vec4(glm::normalize(d.direction), 0.0f), glm::vec4(e, 0.0f)};
+      shadow_from_world_ = shadow_from_world(*scene_bounds_, d.direction);
+    }
+    // Every surfel's blocking is at most 1 x kLobePeak (lpv_inject.comp).
+    c.scales = glm::vec4(float(scale), float(kFixedRange / (double(rsm_size) * rsm_size * kLobePeak)),
+                         light_present_ ? 1.0f : 0.0f, 0.0f);
+    if (!constants_) {
+      constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      rsm_light_.emplace(ctx.gpu(), ctx.node().id + " rsm light", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      faces_.emplace(ctx.gpu(), ctx.node().id + " faces", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      faces_->write(face_table());
+    }
+    constants_->write_value(c);
+    rsm_light_->write_value(l);
+    draws_->write(draw_constants(scene));
+  }
+
+  // The grids, sized when the cell count changes (the box of a moving world may change it).
+  void allocate(PassContext& ctx) {
+    const uint64_t cells = grid_.cell_count();
+    if (cells == allocated_cells_) return;
+    auto buffer = [&](const char* name, uint64_t bytes_per_cell) {
+      return Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name, .size = cells * bytes_per_cell});
+    };
+    light_fixed_ = buffer("injected light", 48);
+    occlusion_fixed_ = buffer("injected occlusion", 16);
+    light_[0] = buffer("light a", 48);
+    light_[1] = buffer("light b", 48);
+    sum_ = buffer("light sum", 48);
+    occlusion_grid_ = buffer("occlusion", 16);
+    allocated_cells_ = cells;
+  }
+
+  void record_rsm(PassContext& ctx) {
+    prepare(ctx);
+    Image& position = ctx.image("tmp.rsm_position");
+    Image& normal = ctx.image("tmp.rsm_normal");
+    Image& flux = ctx.image("tmp.rsm_flux");
+    Image& depth = ctx.image("tmp.rsm_depth");
+    const uint32_t size = position.desc().width;
+    const std::array<VkRenderingAttachmentInfo, 3> colors = {
+        cleared_attachment(position.view()), cleared_attachment(normal.view()), cleared_attachment(flux.view())};
+    VkRenderingAttachmentInfo depth_attachment = cleared_attachment(depth.view(), {.depthStencil = {0.0f, 0}});
+    const VkRenderingInfo rendering = rendering_info(size, size, colors, &depth_attachment);
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBeginRendering(cmd, &rendering);
+    if (light_present_) {
+      const Pipeline& pipeline = rsm_pipeline(ctx, position.desc().format, depth.desc().format);
+      set_viewport(cmd, size, size);
+      const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle()), uniform_buffer(1, rsm_light_->handle())};
+      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+      const SceneView& scene = ctx.scene();
+      for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+        push_constants(cmd, pipeline, RsmPush{shadow_from_world_, i, {}});
+        draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
+      }
+    }
+    vkCmdEndRendering(cmd);
+  }
+
+  // Both sides of every face, as lighting.deferred's shadow map: a wall modelled as one plane
+  // reflects on the side the light reaches.
+  static const Pipeline& rsm_pipeline(PassContext& ctx, VkFormat color_format, VkFormat depth_format) {
+    GraphicsPipelineDesc desc;
+    desc.name = ctx.pass().name;
+    desc.vertex_shader = node_shader("nodes/gi/lpv/shaders/lpv_rsm.vert");
+    desc.fragment_shader = node_shader("nodes/gi/lpv/shaders/lpv_rsm.frag");
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+    desc.push_constant_bytes = sizeof(RsmPush);
+    // Exactly the attributes lpv_rsm.vert reads.
+    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
+                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
+                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertex, color)}};
+    desc.color_formats = {color_format, color_format, color_format};
+    desc.depth_format = depth_format;
+    desc.depth_test = desc.depth_write = true;
+    return ctx.pipelines().graphics(desc);
+  }
+
+  // Injection, propagation and the lookup, in the node's own buffers (which the plan does not
+  // see, so it could not order separate passes by them).
+  void record_volume(PassContext& ctx) {
+    prepare(ctx);
+    inject(ctx);
+    propagate(ctx);
+    lookup(ctx);
+  }
+
+  void inject(PassContext& ctx) {
+    VkCommandBuffer cmd = ctx.cmd();
+    // Last frame's resolve read the fixed-point sums; clear them for this frame's atomics.
+    memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+                   {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    vkCmdFillBuffer(cmd, light_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, occlusion_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
+    memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                   {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    const uint32_t size = ctx.image("tmp.rsm_position").desc().width;
+    const DescriptorWrite inject[] = {uniform_buffer(0, constants_->handle()),
+                                      sampled_image(1, ctx.image("tmp.rsm_position").view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("tmp.rsm_normal").view(), ctx.nearest_sampler()),
+                                      sampled_image(3, ctx.image("tmp.rsm_flux").view(), ctx.nearest_sampler()),
+                                      storage_buffer(4, light_fixed_.handle()),
+                                      storage_buffer(5, occlusion_fixed_.handle())};
+    if (light_present_) dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_inject.comp", inject, size, size);
+    compute_to_compute_barrier(cmd);
+    const DescriptorWrite resolve[] = {uniform_buffer(0, constants_->handle()),
+                                       storage_buffer(1, light_fixed_.handle()),
+                                       storage_buffer(2, occlusion_fixed_.handle()),
+                                       storage_buffer(3, light_[0].handle()),
+                                       storage_buffer(4, sum_.handle()),
+                                       storage_buffer(5, occlusion_grid_.handle())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_resolve.comp", resolve);
+  }
+
+  void propagate(PassContext& ctx) {
+    for (int i = 0; i < iterations_; ++i) {
+      compute_to_compute_barrier(ctx.cmd());
+      const uint32_t occlude = occlusion_ && i > 0 ? 1u : 0u;
+      const DescriptorWrite writes[] = {
+          uniform_buffer(0, constants_->handle()),         storage_buffer(1, light_[i % 2].handle()),
+          storage_buffer(2, light_[(i + 1) % 2].handle()), storage_buffer(3, sum_.handle()),
+          storage_buffer(4, occlusion_grid_.handle()),     uniform_buffer(5, faces_->handle())};
+      dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_propagate.comp", writes, std::as_bytes(std::span(&occlude, 1)));
+    }
+  }
+
+  void lookup(PassContext& ctx) {
+    Image& out = ctx.image("out.irradiance");
+    const uint32_t w = out.desc().width, h = out.desc().height;
+    camera_->write_value(camera_constants(ctx.scene().camera, w, h));
+    compute_to_compute_barrier(ctx.cmd());  // the sum's last writes
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
+                                      uniform_buffer(1, camera_->handle()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_buffer(4, sum_.handle()),
+                                      storage_image(5, out.view())};
+    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, w, h);
+  }
+
+  // One invocation per cell: x across the grid, y down its rows of every slice (lpv_common.glsl).
+  void dispatch_cells(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
+                      std::span<const std::byte> push = {}) {
+    dispatch_compute(ctx, shader, writes, uint32_t(grid_.counts.x), uint32_t(grid_.counts.y * grid_.counts.z), push);
+  }
+
+  const int cells_, iterations_;
+  const bool occlusion_;
+  std::optional<Bounds> box_, scene_bounds_;
+  std::optional<uint64_t> bounds_version_, prepared_frame_;
+  LpvGrid grid_;
+  glm::mat4 shadow_from_world_{1.0f};
+  bool light_present_ = false;
+  uint64_t allocated_cells_ = 0;
+  std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
+  Buffer light_fixed_, occlusion_fixed_, sum_, occlusion_grid_;
+  std::array<Buffer, 2> light_;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_lpv_kernel(const PlanNode& node) {
+  return std::make_unique<LpvKernel>(node);
+}
+
+}  // namespace lg
