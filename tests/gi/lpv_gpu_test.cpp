@@ -62,7 +62,7 @@ void expect_no_validation_messages(Renderer& renderer) {
 // the differences over the reference's mean (lumagraph-bench-probes' relative_rms). Predicting no
 // indirect light gives sqrt(mean E^2) / mean E >= 1 on the same pixels: the node must come under
 // it, by more than the reference's own noise (256 paths a pixel). Grid 8 (cells of 26 cm) with 8
-// iterations: measured 0.72 against 1.23 (noise 0.14). Finer grids do worse here: light spreads
+// iterations: measured 0.87 against 1.23 (noise 0.14). Finer grids do worse here: light spreads
 // diffusively through the grid and fades within about five cells (docs/lpv.md), so a 32-cell
 // grid's 6.6 cm cells leave most of the box dark (1.29, worse than no indirect light).
 TEST(Lpv, BeatsNoIndirectLightOnTheCornellBox) {

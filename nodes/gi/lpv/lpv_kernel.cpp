@@ -165,6 +165,16 @@ class LpvKernel final : public NodeKernel {
     light_[1] = buffer("light b", 48);
     sum_ = buffer("light sum", 48);
     occlusion_grid_ = buffer("occlusion", 16);
+    const char* channels[3] = {"red", "green", "blue"};
+    for (int c = 0; c < 3; ++c)
+      sum_images_[c] = Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " light sum " + channels[c],
+                                                    .kind = ImageKind::image3d,
+                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                    .width = uint32_t(grid_.counts.x),
+                                                    .height = uint32_t(grid_.counts.y),
+                                                    .depth = uint32_t(grid_.counts.z),
+                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
+    sum_images_new_ = true;
     allocated_cells_ = cells;
   }
 
@@ -264,17 +274,30 @@ class LpvKernel final : public NodeKernel {
     }
   }
 
+  // The sum into the 3D images (kept in the GENERAL layout), then per pixel.
   void lookup(PassContext& ctx) {
+    VkCommandBuffer cmd = ctx.cmd();
+    if (sum_images_new_)
+      for (const Image& image : sum_images_)
+        image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    sum_images_new_ = false;
+    compute_to_compute_barrier(cmd);  // the sum's last writes; last frame's reads of the images
+    const DescriptorWrite store[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, sum_.handle()),
+                                     storage_image(2, sum_images_[0].view()), storage_image(3, sum_images_[1].view()),
+                                     storage_image(4, sum_images_[2].view())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_store.comp", store);
+    compute_to_compute_barrier(cmd);
+
     Image& out = ctx.image("out.irradiance");
     const uint32_t w = out.desc().width, h = out.desc().height;
     camera_->write_value(camera_constants(ctx.scene().camera, w, h));
-    compute_to_compute_barrier(ctx.cmd());  // the sum's last writes
-    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
-                                      uniform_buffer(1, camera_->handle()),
-                                      sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
-                                      sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-                                      storage_buffer(4, sum_.handle()),
-                                      storage_image(5, out.view())};
+    std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle()),
+                                           uniform_buffer(1, camera_->handle()),
+                                           sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                           sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler())};
+    for (uint32_t c = 0; c < 3; ++c)
+      writes.push_back(sampled_image(4 + c, sum_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
+    writes.push_back(storage_image(7, out.view()));
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, w, h);
   }
 
@@ -295,6 +318,8 @@ class LpvKernel final : public NodeKernel {
   std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
   Buffer light_fixed_, occlusion_fixed_, sum_, occlusion_grid_;
   std::array<Buffer, 2> light_;
+  std::array<Image, 3> sum_images_;  // the sum per channel, filtered by the lookup
+  bool sum_images_new_ = false;      // not yet in the GENERAL layout
 };
 
 }  // namespace
