@@ -79,7 +79,8 @@ class LpvKernel final : public NodeKernel {
   explicit LpvKernel(const PlanNode& node)
       : cells_(int(param_number(node, "grid"))),
         iterations_(int(param_number(node, "iterations"))),
-        occlusion_(param_bool(node, "occlusion")) {
+        occlusion_(param_bool(node, "occlusion")),
+        k_(resolution_divisor(node)) {
     const glm::vec3 lo = param_float3(node, "box_min"), hi = param_float3(node, "box_max");
     if (lo != hi) {
       if (!glm::all(glm::lessThan(lo, hi)))
@@ -94,6 +95,8 @@ class LpvKernel final : public NodeKernel {
       record_rsm(ctx);
     else if (pass == "volume")
       record_volume(ctx);
+    else if (pass == "upsample")
+      upsample(ctx);
     else
       throw std::logic_error("gi.lpv has no pass '" + pass + "'");
   }
@@ -288,17 +291,32 @@ class LpvKernel final : public NodeKernel {
     dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_store.comp", store);
     compute_to_compute_barrier(cmd);
 
-    Image& out = ctx.image("out.irradiance");
-    const uint32_t w = out.desc().width, h = out.desc().height;
-    camera_->write_value(camera_constants(ctx.scene().camera, w, h));
+    // At the G-buffer's size: the lookup reconstructs positions at its pixels.
+    Image& depth = ctx.image("in.gbuffer", 0);
+    camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
+    Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle()),
                                            uniform_buffer(1, camera_->handle()),
-                                           sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                           sampled_image(2, depth.view(), ctx.nearest_sampler()),
                                            sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler())};
     for (uint32_t c = 0; c < 3; ++c)
       writes.push_back(sampled_image(4 + c, sum_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
-    writes.push_back(storage_image(7, out.view()));
-    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, w, h);
+    writes.push_back(storage_image(7, target.view()));
+    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
+  }
+
+  // At resolution_scale below 1, the lookup's smaller image to full resolution, guided by depth
+  // and normals (gi.irradiance_volume's upsample); at 1 the lookup wrote the output itself.
+  void upsample(PassContext& ctx) {
+    if (k_ == 1) return;
+    Image& low = ctx.image("tmp.lowres");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(3, ctx.image("out.irradiance").view())};
+    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/upsample.comp", writes, low.desc().width,
+                     low.desc().height, std::as_bytes(std::span(&k_, 1)));
   }
 
   // One invocation per cell: x across the grid, y down its rows of every slice (lpv_common.glsl).
@@ -309,6 +327,7 @@ class LpvKernel final : public NodeKernel {
 
   const int cells_, iterations_;
   const bool occlusion_;
+  const int32_t k_;  // the G-buffer's resolution over the lookup's: 1 / resolution_scale
   std::optional<Bounds> box_, scene_bounds_;
   std::optional<uint64_t> bounds_version_, prepared_frame_;
   LpvGrid grid_;
