@@ -27,6 +27,7 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
+#include "runtime/scene/frustum.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -66,6 +67,20 @@ std::vector<glm::vec4> face_table() {
           glm::vec4(glm::dvec4(face.emitted_lobe[0], face.emitted_lobe[1], face.emitted_lobe[2], face.emitted_lobe[3]));
     }
   return out;
+}
+
+// The box around every draw this frame, from each mesh's own box moved by its draw's transform:
+// a few corners a draw, so it is cheap enough to follow moving objects every frame (the scene's
+// version changes with its meshes, not with where they stand). A scene without draws gets a unit
+// box, as scene_bounds() gives.
+Bounds draws_bounds(const SceneView& scene, std::span<const Bounds> mesh_boxes) {
+  Bounds b;
+  for (const DrawItem& d : scene.draws) {
+    if (d.mesh < 0 || size_t(d.mesh) >= mesh_boxes.size()) continue;
+    const Bounds box = transform_bounds(mesh_boxes[d.mesh], d.world);
+    if (!box.empty()) b.add(box.min), b.add(box.max);
+  }
+  return b.empty() ? Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)} : b;
 }
 
 // The main directional light: the first that casts shadows, else the first; -1 when none.
@@ -108,10 +123,7 @@ class LpvKernel final : public NodeKernel {
     if (prepared_frame_ == ctx.frame_index() && constants_) return;
     prepared_frame_ = ctx.frame_index();
     const SceneView& scene = ctx.scene();
-    if (bounds_version_ != scene.version || !scene_bounds_) {
-      scene_bounds_ = scene_bounds(scene);
-      bounds_version_ = scene.version;
-    }
+    scene_bounds_ = draws_bounds(scene, ctx.gpu_scene().mesh_bounds());
     grid_ = fit_lpv_grid(box_ ? *box_ : *scene_bounds_, cells_);
     allocate(ctx);
 
@@ -329,7 +341,7 @@ class LpvKernel final : public NodeKernel {
   const bool occlusion_;
   const int32_t k_;  // the G-buffer's resolution over the lookup's: 1 / resolution_scale
   std::optional<Bounds> box_, scene_bounds_;
-  std::optional<uint64_t> bounds_version_, prepared_frame_;
+  std::optional<uint64_t> prepared_frame_;
   LpvGrid grid_;
   glm::mat4 shadow_from_world_{1.0f};
   bool light_present_ = false;
