@@ -7,6 +7,7 @@
 #include "nodes/env/sky/sky_kernel.h"
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
+#include "nodes/gi/lpv/lpv_kernel.h"
 #include "nodes/gi/planar_reflection/planar_reflection_kernel.h"
 #include "nodes/gi/prt/prt_kernel.h"
 #include "nodes/gi/reflection_capture/reflection_capture_kernel.h"
@@ -41,6 +42,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("env.sky", make_sky_kernel);
     r.add("env.specular_prefilter", make_specular_prefilter_kernel);
     r.add("gi.irradiance_volume", make_irradiance_volume_kernel);
+    r.add("gi.lpv", make_lpv_kernel);
     r.add("gi.planar_reflection", make_planar_reflection_kernel);
     r.add("gi.prt", make_prt_kernel);
     r.add("gi.reflection_capture", make_reflection_capture_kernel);

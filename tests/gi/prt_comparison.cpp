@@ -13,7 +13,7 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
                                      const std::vector<float>& frame) {
   const PathTransport transport(scene, 1);
   const CameraPixels camera(scene.view().camera, reference.width, reference.height);
-  double square = 0, noise = 0;
+  double square = 0, noise = 0, absolute_square = 0, absolute_noise = 0, truth_sum = 0;
   PrtComparison out;
   for (uint32_t y = 0; y < reference.height; ++y)
     for (uint32_t x = 0; x < reference.width; ++x) {
@@ -28,6 +28,9 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
         if (!(truth > 0.0)) continue;
         square += std::pow((frame[4 * i + c] - truth) / truth, 2);
         noise += std::pow(error / truth, 2);
+        absolute_square += std::pow(frame[4 * i + c] - truth, 2);
+        absolute_noise += error * error;
+        truth_sum += truth;
         ++out.values;
       }
     }
@@ -35,6 +38,9 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
   out.relative_rms = std::sqrt(square / out.values);
   out.reference_noise = std::sqrt(noise / out.values);
   out.beyond_noise = std::sqrt(std::max(0.0, square - noise) / out.values);
+  const double mean = truth_sum / out.values;
+  out.rms_over_mean = std::sqrt(absolute_square / out.values) / mean;
+  out.noise_over_mean = std::sqrt(absolute_noise / out.values) / mean;
   return out;
 }
 

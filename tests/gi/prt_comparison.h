@@ -3,7 +3,9 @@
 // channel, the relative difference between the node's irradiance and the reference's,
 // E = pi x indirect_diffuse / the visible surface's diffuse colour (what lighting.ibl multiplies
 // the node's output by). The reference's own noise (its standard error, relative) is stated, and
-// the RMS beyond it (mean squares subtracted: independent errors add in squares).
+// the RMS beyond it (mean squares subtracted: independent errors add in squares). Also the RMS of
+// the absolute differences over the reference's mean, as lumagraph-bench-probes measures
+// relative_rms (no single dark pixel dominates it; predicting 0 everywhere gives at least 1).
 #pragma once
 
 #include <cstddef>
@@ -15,7 +17,8 @@ namespace lg::test {
 
 struct PrtComparison {
   double relative_rms = 0, reference_noise = 0, beyond_noise = 0;
-  size_t values = 0;  // pixels x channels compared
+  double rms_over_mean = 0, noise_over_mean = 0;  // the probe benchmark's measure, and the reference's noise in it
+  size_t values = 0;                              // pixels x channels compared
 };
 
 // `frame`: the node's irradiance output read back (RGBA floats, rows top down, the reference's

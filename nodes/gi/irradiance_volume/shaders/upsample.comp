@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// gi.irradiance_volume's upsample at resolution_scale 1/k below 1: one invocation per texel of the
+// gi.irradiance_volume's and gi.lpv's upsample at resolution_scale 1/k below 1: one invocation per texel of the
 // lookup's smaller image writes that texel's block of G-buffer pixels, each blended from the
 // 2 x 2 texels around it guided by depth and normals (joint_upsample.glsl).
 #include "nodes/common/shaders/joint_upsample.glsl"

@@ -1,0 +1,362 @@
+#include "nodes/gi/lpv/lpv_kernel.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
+#include "nodes/common/node_shaders.h"
+#include "nodes/gi/lpv/lpv_grid.h"
+#include "nodes/gi/lpv/lpv_model.h"
+#include "nodes/lighting/deferred/light_buffers.h"
+#include "nodes/lighting/deferred/shadow_projection.h"
+#include "nodes/scene/gbuffer/draw_constants.h"
+#include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/buffer.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/pipeline.h"
+#include "runtime/scene/frustum.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kFixedRange = 1073741824.0;  // 2^30: the most any fixed-point sum may reach
+constexpr double kLobePeak = 1.02332671;      // the largest coefficient of sh_l1_cosine_lobe
+
+struct Constants {  // shaders/lpv_common.glsl
+  glm::vec4 origin_cell;
+  glm::ivec4 counts;
+  glm::vec4 light;
+  glm::vec4 scales;  // x, y: fixed-point scales; z: 1 when a light was injected (the coverage)
+};
+
+struct RsmLight {  // shaders/lpv_rsm.frag
+  glm::vec4 direction, irradiance;
+};
+
+struct RsmPush {  // lighting.deferred's shadow_draw.glsl
+  glm::mat4 shadow_from_world;
+  uint32_t draw_index;
+  uint32_t pad[3];
+};
+
+// lpv_model.h's face table as shaders/lpv_propagate.comp reads it: 30 bases, then 30 lobes.
+std::vector<glm::vec4> face_table() {
+  std::vector<glm::vec4> out(2 * 6 * kLpvFacesPerDirection);
+  for (int d = 0; d < 6; ++d)
+    for (int f = 0; f < kLpvFacesPerDirection; ++f) {
+      const LpvFace& face = lpv_faces()[d][f];
+      const int i = d * kLpvFacesPerDirection + f;
+      out[i] = glm::vec4(
+          glm::dvec4(face.towards_basis[0], face.towards_basis[1], face.towards_basis[2], face.towards_basis[3]));
+      out[30 + i] =
+          glm::vec4(glm::dvec4(face.emitted_lobe[0], face.emitted_lobe[1], face.emitted_lobe[2], face.emitted_lobe[3]));
+    }
+  return out;
+}
+
+// The box around every draw this frame, from each mesh's own box moved by its draw's transform:
+// a few corners a draw, so it is cheap enough to follow moving objects every frame (the scene's
+// version changes with its meshes, not with where they stand). A scene without draws gets a unit
+// box, as scene_bounds() gives.
+Bounds draws_bounds(const SceneView& scene, std::span<const Bounds> mesh_boxes) {
+  Bounds b;
+  for (const DrawItem& d : scene.draws) {
+    if (d.mesh < 0 || size_t(d.mesh) >= mesh_boxes.size()) continue;
+    const Bounds box = transform_bounds(mesh_boxes[d.mesh], d.world);
+    if (!box.empty()) b.add(box.min), b.add(box.max);
+  }
+  return b.empty() ? Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)} : b;
+}
+
+// The main directional light: the first that casts shadows, else the first; -1 when none.
+int main_directional_light(const SceneView& scene) {
+  const int caster = shadow_caster(scene);
+  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
+}
+
+class LpvKernel final : public NodeKernel {
+ public:
+  explicit LpvKernel(const PlanNode& node)
+      : cells_(int(param_number(node, "grid"))),
+        iterations_(int(param_number(node, "iterations"))),
+        occlusion_(param_bool(node, "occlusion")),
+        k_(resolution_divisor(node)) {
+    const glm::vec3 lo = param_float3(node, "box_min"), hi = param_float3(node, "box_max");
+    if (lo != hi) {
+      if (!glm::all(glm::lessThan(lo, hi)))
+        throw std::invalid_argument(node.id + ": box_min must be below box_max on every axis");
+      box_ = Bounds{lo, hi};
+    }
+  }
+
+  void record(PassContext& ctx) override {
+    const std::string& pass = ctx.pass().pass;
+    if (pass == "rsm")
+      record_rsm(ctx);
+    else if (pass == "volume")
+      record_volume(ctx);
+    else if (pass == "upsample")
+      upsample(ctx);
+    else
+      throw std::logic_error("gi.lpv has no pass '" + pass + "'");
+  }
+
+ private:
+  // Once a frame, at its first pass: the light, the grid and the constants, all from this
+  // frame's scene (lights and objects may move every frame).
+  void prepare(PassContext& ctx) {
+    if (prepared_frame_ == ctx.frame_index() && constants_) return;
+    prepared_frame_ = ctx.frame_index();
+    const SceneView& scene = ctx.scene();
+    scene_bounds_ = draws_bounds(scene, ctx.gpu_scene().mesh_bounds());
+    grid_ = fit_lpv_grid(box_ ? *box_ : *scene_bounds_, cells_);
+    allocate(ctx);
+
+    const int light = main_directional_light(scene);
+    const uint32_t rsm_size = ctx.image("tmp.rsm_position").desc().width;
+    Constants c{};
+    c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
+    c.counts = glm::ivec4(grid_.counts, int(rsm_size));
+    RsmLight l{glm::vec4(0, -1, 0, 0), glm::vec4(0.0f)};
+    double scale = 1.0;
+    light_present_ = false;
+    if (light >= 0) {
+      const DirectionalLightData& d = scene.directional_lights[light];
+      // shadow_from_world's square: the bounding sphere's diameter across the beam.
+      const double radius = std::max(0.5 * glm::length(scene_bounds_->max - scene_bounds_->min), 1e-3);
+      const double texel_area = std::pow(2.0 * radius / rsm_size, 2.0);
+      const glm::vec3 e = glm::max(d.irradiance, glm::vec3(0.0f));
+      const double peak = std::max({e.r, e.g, e.b});
+      // A texel's intensity coefficient is at most peak x area / pi x kLobePeak (diffuse colour
+      // at most 1); the whole map's at most rsm_size^2 times that.
+      const double largest_sum = double(rsm_size) * rsm_size * peak * texel_area / kPi * kLobePeak;
+      light_present_ = std::isfinite(largest_sum) && largest_sum > 0.0;
+      if (light_present_) scale = kFixedRange / largest_sum;
+      c.light = glm::vec4(glm::normalize(d.direction), float(texel_area));
+      l = {glm::vec4(glm::normalize(d.direction), 0.0f), glm::vec4(e, 0.0f)};
+      shadow_from_world_ = shadow_from_world(*scene_bounds_, d.direction);
+    }
+    // Every surfel's blocking is at most 1 x kLobePeak (lpv_inject.comp).
+    c.scales = glm::vec4(float(scale), float(kFixedRange / (double(rsm_size) * rsm_size * kLobePeak)),
+                         light_present_ ? 1.0f : 0.0f, 0.0f);
+    if (!constants_) {
+      constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      rsm_light_.emplace(ctx.gpu(), ctx.node().id + " rsm light", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      faces_.emplace(ctx.gpu(), ctx.node().id + " faces", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      faces_->write(face_table());
+    }
+    constants_->write_value(c);
+    rsm_light_->write_value(l);
+    draws_->write(draw_constants(scene));
+  }
+
+  // The grids, sized when the cell count changes (the box of a moving world may change it).
+  void allocate(PassContext& ctx) {
+    const uint64_t cells = grid_.cell_count();
+    if (cells == allocated_cells_) return;
+    auto buffer = [&](const char* name, uint64_t bytes_per_cell) {
+      return Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name, .size = cells * bytes_per_cell});
+    };
+    light_fixed_ = buffer("injected light", 48);
+    occlusion_fixed_ = buffer("injected occlusion", 16);
+    light_[0] = buffer("light a", 48);
+    light_[1] = buffer("light b", 48);
+    sum_ = buffer("light sum", 48);
+    occlusion_grid_ = buffer("occlusion", 16);
+    const char* channels[3] = {"red", "green", "blue"};
+    for (int c = 0; c < 3; ++c)
+      sum_images_[c] = Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " light sum " + channels[c],
+                                                    .kind = ImageKind::image3d,
+                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                    .width = uint32_t(grid_.counts.x),
+                                                    .height = uint32_t(grid_.counts.y),
+                                                    .depth = uint32_t(grid_.counts.z),
+                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
+    sum_images_new_ = true;
+    allocated_cells_ = cells;
+  }
+
+  void record_rsm(PassContext& ctx) {
+    prepare(ctx);
+    Image& position = ctx.image("tmp.rsm_position");
+    Image& normal = ctx.image("tmp.rsm_normal");
+    Image& flux = ctx.image("tmp.rsm_flux");
+    Image& depth = ctx.image("tmp.rsm_depth");
+    const uint32_t size = position.desc().width;
+    const std::array<VkRenderingAttachmentInfo, 3> colors = {
+        cleared_attachment(position.view()), cleared_attachment(normal.view()), cleared_attachment(flux.view())};
+    VkRenderingAttachmentInfo depth_attachment = cleared_attachment(depth.view(), {.depthStencil = {0.0f, 0}});
+    const VkRenderingInfo rendering = rendering_info(size, size, colors, &depth_attachment);
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBeginRendering(cmd, &rendering);
+    if (light_present_) {
+      const Pipeline& pipeline = rsm_pipeline(ctx, position.desc().format, depth.desc().format);
+      set_viewport(cmd, size, size);
+      const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle()), uniform_buffer(1, rsm_light_->handle())};
+      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+      const SceneView& scene = ctx.scene();
+      for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+        push_constants(cmd, pipeline, RsmPush{shadow_from_world_, i, {}});
+        draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
+      }
+    }
+    vkCmdEndRendering(cmd);
+  }
+
+  // Both sides of every face, as lighting.deferred's shadow map: a wall modelled as one plane
+  // reflects on the side the light reaches.
+  static const Pipeline& rsm_pipeline(PassContext& ctx, VkFormat color_format, VkFormat depth_format) {
+    GraphicsPipelineDesc desc;
+    desc.name = ctx.pass().name;
+    desc.vertex_shader = node_shader("nodes/gi/lpv/shaders/lpv_rsm.vert");
+    desc.fragment_shader = node_shader("nodes/gi/lpv/shaders/lpv_rsm.frag");
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+    desc.push_constant_bytes = sizeof(RsmPush);
+    // Exactly the attributes lpv_rsm.vert reads.
+    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
+                              {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, normal)},
+                              {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertex, color)}};
+    desc.color_formats = {color_format, color_format, color_format};
+    desc.depth_format = depth_format;
+    desc.depth_test = desc.depth_write = true;
+    return ctx.pipelines().graphics(desc);
+  }
+
+  // Injection, propagation and the lookup, in the node's own buffers (which the plan does not
+  // see, so it could not order separate passes by them).
+  void record_volume(PassContext& ctx) {
+    prepare(ctx);
+    inject(ctx);
+    propagate(ctx);
+    lookup(ctx);
+  }
+
+  void inject(PassContext& ctx) {
+    VkCommandBuffer cmd = ctx.cmd();
+    // Last frame's resolve read the fixed-point sums; clear them for this frame's atomics.
+    memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+                   {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    vkCmdFillBuffer(cmd, light_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, occlusion_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
+    memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                   {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    const uint32_t size = ctx.image("tmp.rsm_position").desc().width;
+    const DescriptorWrite inject[] = {uniform_buffer(0, constants_->handle()),
+                                      sampled_image(1, ctx.image("tmp.rsm_position").view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("tmp.rsm_normal").view(), ctx.nearest_sampler()),
+                                      sampled_image(3, ctx.image("tmp.rsm_flux").view(), ctx.nearest_sampler()),
+                                      storage_buffer(4, light_fixed_.handle()),
+                                      storage_buffer(5, occlusion_fixed_.handle())};
+    if (light_present_) dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_inject.comp", inject, size, size);
+    compute_to_compute_barrier(cmd);
+    const DescriptorWrite resolve[] = {uniform_buffer(0, constants_->handle()),
+                                       storage_buffer(1, light_fixed_.handle()),
+                                       storage_buffer(2, occlusion_fixed_.handle()),
+                                       storage_buffer(3, light_[0].handle()),
+                                       storage_buffer(4, sum_.handle()),
+                                       storage_buffer(5, occlusion_grid_.handle())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_resolve.comp", resolve);
+  }
+
+  void propagate(PassContext& ctx) {
+    for (int i = 0; i < iterations_; ++i) {
+      compute_to_compute_barrier(ctx.cmd());
+      const uint32_t occlude = occlusion_ && i > 0 ? 1u : 0u;
+      const DescriptorWrite writes[] = {
+          uniform_buffer(0, constants_->handle()),         storage_buffer(1, light_[i % 2].handle()),
+          storage_buffer(2, light_[(i + 1) % 2].handle()), storage_buffer(3, sum_.handle()),
+          storage_buffer(4, occlusion_grid_.handle()),     uniform_buffer(5, faces_->handle())};
+      dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_propagate.comp", writes, std::as_bytes(std::span(&occlude, 1)));
+    }
+  }
+
+  // The sum into the 3D images (kept in the GENERAL layout), then per pixel.
+  void lookup(PassContext& ctx) {
+    VkCommandBuffer cmd = ctx.cmd();
+    if (sum_images_new_)
+      for (const Image& image : sum_images_)
+        image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    sum_images_new_ = false;
+    compute_to_compute_barrier(cmd);  // the sum's last writes; last frame's reads of the images
+    const DescriptorWrite store[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, sum_.handle()),
+                                     storage_image(2, sum_images_[0].view()), storage_image(3, sum_images_[1].view()),
+                                     storage_image(4, sum_images_[2].view())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_store.comp", store);
+    compute_to_compute_barrier(cmd);
+
+    // At the G-buffer's size: the lookup reconstructs positions at its pixels.
+    Image& depth = ctx.image("in.gbuffer", 0);
+    camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
+    Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
+    std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle()),
+                                           uniform_buffer(1, camera_->handle()),
+                                           sampled_image(2, depth.view(), ctx.nearest_sampler()),
+                                           sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler())};
+    for (uint32_t c = 0; c < 3; ++c)
+      writes.push_back(sampled_image(4 + c, sum_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
+    writes.push_back(storage_image(7, target.view()));
+    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
+  }
+
+  // At resolution_scale below 1, the lookup's smaller image to full resolution, guided by depth
+  // and normals (gi.irradiance_volume's upsample); at 1 the lookup wrote the output itself.
+  void upsample(PassContext& ctx) {
+    if (k_ == 1) return;
+    Image& low = ctx.image("tmp.lowres");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(3, ctx.image("out.irradiance").view())};
+    dispatch_compute(ctx, "nodes/gi/irradiance_volume/shaders/upsample.comp", writes, low.desc().width,
+                     low.desc().height, std::as_bytes(std::span(&k_, 1)));
+  }
+
+  // One invocation per cell: x across the grid, y down its rows of every slice (lpv_common.glsl).
+  void dispatch_cells(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
+                      std::span<const std::byte> push = {}) {
+    dispatch_compute(ctx, shader, writes, uint32_t(grid_.counts.x), uint32_t(grid_.counts.y * grid_.counts.z), push);
+  }
+
+  const int cells_, iterations_;
+  const bool occlusion_;
+  const int32_t k_;  // the G-buffer's resolution over the lookup's: 1 / resolution_scale
+  std::optional<Bounds> box_, scene_bounds_;
+  std::optional<uint64_t> prepared_frame_;
+  LpvGrid grid_;
+  glm::mat4 shadow_from_world_{1.0f};
+  bool light_present_ = false;
+  uint64_t allocated_cells_ = 0;
+  std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
+  Buffer light_fixed_, occlusion_fixed_, sum_, occlusion_grid_;
+  std::array<Buffer, 2> light_;
+  std::array<Image, 3> sum_images_;  // the sum per channel, filtered by the lookup
+  bool sum_images_new_ = false;      // not yet in the GENERAL layout
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_lpv_kernel(const PlanNode& node) {
+  return std::make_unique<LpvKernel>(node);
+}
+
+}  // namespace lg

@@ -1,0 +1,193 @@
+// lumagraph-bench-lpv: gi.lpv against the path-traced reference on the Cornell box, the two rooms
+// with a skylight (examples/worlds/two-rooms-sun.json: the two-room world of the probe benchmark
+// with the sun coming through a hole in the west room's ceiling, its lamp left out, so the east
+// room gets no light at all) and the gallery. The node carries one bounce of the main directional
+// light, so the reference is traced with that light alone (no environment, no other lights) and
+// two bounces (the visible surface and one more). Per world, at four grids (8, 16, 32 and 64
+// cells along the longest side, 8 iterations each; and grid 32 without propagation, whose time is
+// that of everything but the propagation) and for "no indirect light": the relative RMS of the
+// node's irradiance against the reference's (the RMS of the differences over the reference's
+// mean, lumagraph-bench-probes' relative_rms; through tests/gi/prt_comparison.h), the
+// reference's noise in the same measure, and the node's GPU time per frame at --frame-size (its
+// three passes; lavapipe; the median and the least of the frames after the first, nothing cached
+// between frames). In the two rooms also the leak: the mean irradiance on the east room's floor
+// over the west room's, a camera in each room (the reference's is 0). Writes lpv_points.csv
+// (columns compatible with docs/bench/probes/probe_points.csv) into --results-dir;
+// scripts/run-lpv-benchmarks plots it.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "api/renderer.h"
+#include "graph/graph_io.h"
+#include "nodes/gi/path_tracer/path_transport.h"
+#include "nodes/raytrace/camera_pixels.h"
+#include "runtime/scene/load_world.h"
+#include "runtime/scene/make_scene_view.h"
+#include "tests/bench/bench_flags.h"
+#include "tests/gi/prt_comparison.h"
+
+namespace lg::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Options {
+  std::string results_dir = "bench-results";
+  uint32_t width = 160, height = 90;                // against the reference
+  uint32_t frame_width = 1280, frame_height = 720;  // timed
+  uint32_t spp = 256, frames = 4;
+};
+
+struct Quality {
+  int grid, iterations;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Graph lpv_graph(const Quality& q) {
+  Diagnostics d("lpv-bench.json");
+  std::optional<Graph> graph =
+      parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "lpv", "type": "gi.lpv", "params": { "grid": )" +
+                           std::to_string(q.grid) + R"(, "iterations": )" + std::to_string(q.iterations) + R"( } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "lpv.gbuffer" } ],
+    "outputs": [ "lpv.irradiance" ] })",
+                       d);
+  if (!graph) throw std::runtime_error(d.to_string());
+  return std::move(*graph);
+}
+
+struct FrameTime {
+  double median_ms, min_ms;
+};
+
+// The node's passes' GPU time over the frames after the first (pipelines JIT-compiled): the
+// median, and the least, which on a machine shared with other work is the nearest to its cost
+// alone.
+FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
+  Renderer renderer;
+  renderer.set_graph(lpv_graph(q));
+  std::vector<double> times;
+  for (uint32_t f = 0; f <= o.frames; ++f) {
+    const FrameStats& stats = renderer.render(world, {o.frame_width, o.frame_height});
+    double ms = 0;
+    for (const PassStats& p : stats.passes)
+      if (p.name.rfind("lpv/", 0) == 0) ms += p.gpu_ms;
+    if (f > 0) times.push_back(ms);
+  }
+  std::sort(times.begin(), times.end());
+  return {times[times.size() / 2], times.front()};
+}
+
+// The leak in the two rooms: the node's mean irradiance (green) on the floor each room's camera
+// sees, east over west.
+double leak_ratio(World world, const Quality& q, const Options& o) {
+  auto floor_mean = [&](glm::vec3 eye, glm::vec3 at) {
+    world.each<Camera, Transform>([&](Entity, Camera&, Transform& t) {
+      t.position = eye;
+      t.rotation = look_rotation(at - eye);
+    });
+    Renderer renderer;
+    renderer.set_graph(lpv_graph(q));
+    renderer.render(world, {o.width, o.height});
+    const std::vector<float> e = renderer.executor().read_image("lpv.irradiance");
+    const SceneView view = make_scene_view(world, float(o.width) / o.height);
+    const PathScene scene(view, PathEnvironment::none());
+    const PathTransport transport(scene, 1);
+    const CameraPixels camera(view.camera, o.width, o.height);
+    double sum = 0;
+    size_t n = 0;
+    for (uint32_t y = 0; y < o.height; ++y)
+      for (uint32_t x = 0; x < o.width; ++x) {
+        const auto s = transport.visible_surface(camera.eye(), camera.ray_direction(x, y), true);
+        if (!s || s->normal.y < 0.9 || s->position.y > 0.05) continue;
+        sum += e[4 * (size_t(y) * o.width + x) + 1], ++n;
+      }
+    return n ? sum / double(n) : std::nan("");
+  };
+  return floor_mean({3.7f, 1.6f, 1.7f}, {0.3f, 0.0f, -1.0f}) / floor_mean({-3.7f, 1.6f, 1.7f}, {-0.3f, 0.0f, -1.0f});
+}
+
+int run(const Options& o) {
+  const fs::path dir = fs::absolute(o.results_dir);
+  fs::create_directories(dir);
+  std::ofstream csv(dir / "lpv_points.csv");
+  csv << "world,method,quality,grid,iterations,frame_ms,relative_rms,reference_noise,beyond_noise,leak,frame_ms_min\n";
+  std::printf("%-13s %-6s %-8s %9s %8s %8s %9s %8s %8s\n", "world", "method", "quality", "frame ms", "min ms",
+              "rel RMS", "ref noise", "beyond", "leak");
+  const std::vector<Quality> qualities = {{8, 8}, {16, 8}, {32, 8}, {64, 8}, {32, 0}};
+  for (const std::string name : {"cornell-box", "two-rooms-sun", "gallery"}) {
+    const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
+    SceneView view = make_scene_view(world, float(o.width) / o.height);
+    view.point_lights.clear(), view.spot_lights.clear(), view.sphere_lights.clear();
+    view.tube_lights.clear(), view.rect_lights.clear();
+    // gi.lpv's main light: the first that casts shadows, else the first.
+    auto caster = std::find_if(view.directional_lights.begin(), view.directional_lights.end(),
+                               [](const DirectionalLightData& d) { return d.casts_shadows; });
+    if (caster == view.directional_lights.end()) caster = view.directional_lights.begin();
+    view.directional_lights = {*caster};
+    const PathScene scene(view, PathEnvironment::none());
+    PathTracerOptions ro;
+    ro.width = o.width, ro.height = o.height, ro.samples_per_pixel = o.spp, ro.max_bounces = 2;
+    const auto start = std::chrono::steady_clock::now();
+    const ReferenceImage reference = trace_reference(scene, ro);
+    std::printf("%s: reference %ux%u, %u paths, 2 bounces in %.1f s\n", name.c_str(), o.width, o.height, o.spp,
+                seconds_since(start));
+    const bool rooms = name == "two-rooms-sun";
+    auto row = [&](const char* method, const std::string& quality, const Quality& q, FrameTime ms,
+                   const test::PrtComparison& c, double leak) {
+      const double beyond =
+          std::sqrt(std::max(0.0, c.rms_over_mean * c.rms_over_mean - c.noise_over_mean * c.noise_over_mean));
+      const std::string leak_text = rooms && std::isfinite(leak) ? std::to_string(leak) : "";
+      std::printf("%-13s %-6s %-8s %9.2f %8.2f %8.4f %9.4f %8.4f %8s\n", name.c_str(), method, quality.c_str(),
+                  ms.median_ms, ms.min_ms, c.rms_over_mean, c.noise_over_mean, beyond, leak_text.c_str());
+      csv << name << ',' << method << ',' << quality << ',' << q.grid << ',' << q.iterations << ',' << ms.median_ms
+          << ',' << c.rms_over_mean << ',' << c.noise_over_mean << ',' << beyond << ',' << leak_text << ',' << ms.min_ms
+          << '\n';
+    };
+    std::vector<float> dark;
+    for (const Quality& q : qualities) {
+      Renderer renderer;
+      renderer.set_graph(lpv_graph(q));
+      renderer.render(world, {o.width, o.height});
+      const std::vector<float> frame = renderer.executor().read_image("lpv.irradiance");
+      if (dark.empty()) {  // no indirect light, on the pixels the node covers
+        dark = frame;
+        for (size_t i = 0; i < dark.size(); ++i)
+          if (i % 4 != 3) dark[i] = 0.0f;
+        row("none", "-", {0, 0}, {0.0, 0.0}, test::compare_with_reference(scene, reference, dark), rooms ? 0.0 : NAN);
+      }
+      const std::string quality = std::to_string(q.grid) + "/" + std::to_string(q.iterations);
+      row("lpv", quality, q, frame_ms(world, q, o), test::compare_with_reference(scene, reference, frame),
+          rooms ? leak_ratio(world, q, o) : NAN);
+    }
+  }
+  std::printf("wrote %s\n", (dir / "lpv_points.csv").c_str());
+  return 0;
+}
+
+}  // namespace
+}  // namespace lg::bench
+
+int main(int argc, char** argv) {
+  lg::bench::Options o;
+  lg::bench::BenchFlags flags(
+      "usage: lumagraph-bench-lpv [--results-dir DIR] [--size WxH] [--frame-size WxH] [--spp N] [--frames N]\n");
+  flags.text("--results-dir", o.results_dir);
+  flags.size("--size", o.width, o.height);
+  flags.size("--frame-size", o.frame_width, o.frame_height);
+  flags.count("--spp", o.spp);
+  flags.count("--frames", o.frames);
+  if (const auto status = flags.parse(argc, argv)) return *status;
+  return lg::bench::run(o);
+}
