@@ -70,16 +70,17 @@ int run(const Options& o) {
   std::ofstream all(dir / "area_specular_points.csv");
   all << "shape,horizon,distance,roughness,n_dot_v,reference,ltc,representative_point,albedo\n";
   for (const Point& p : points)
-    all << shape_name(p.c.shape) << ',' << (p.c.horizon == Horizon::kAbove ? "above" : "across") << ','
-        << p.c.distance << ',' << p.c.roughness << ',' << glm::dot(p.c.n, p.c.v) << ',' << p.s.reference << ','
-        << p.s.ltc << ',' << p.s.representative_point << ',' << p.s.albedo << '\n';
+    all << shape_name(p.c.shape) << ',' << (p.c.horizon == Horizon::kAbove ? "above" : "across") << ',' << p.c.distance
+        << ',' << p.c.roughness << ',' << glm::dot(p.c.n, p.c.v) << ',' << p.s.reference << ',' << p.s.ltc << ','
+        << p.s.representative_point << ',' << p.s.albedo << '\n';
 
   std::ofstream csv(dir / "area_specular_errors.csv");
   csv << "group,points,lit,ltc_relative_rms,ltc_pointwise_rms,ltc_max_pointwise,rp_relative_rms,rp_pointwise_rms,"
          "rp_max_pointwise\n";
-  std::printf("values as fractions of the lobe's albedo; rel RMS: RMS error / mean reference over all points; "
-              "pointwise: (method - reference) / reference over lit points (reference >= %.0e of the albedo)\n",
-              kLitShare);
+  std::printf(
+      "values as fractions of the lobe's albedo; rel RMS: RMS error / mean reference over all points; "
+      "pointwise: (method - reference) / reference over lit points (reference >= %.0e of the albedo)\n",
+      kLitShare);
   std::printf("%-24s %6s %5s %9s %9s %9s %9s %9s %9s\n", "group", "points", "lit", "LTC rel", "LTC pt", "LTC max",
               "RP rel", "RP pt", "RP max");
   write_errors(csv, "all", points);
@@ -103,9 +104,8 @@ int run(const Options& o) {
   for (const auto& range : distances) {
     char name[64];
     std::snprintf(name, sizeof name, "distance %.1f-%.0f", range[0], range[1]);
-    write_errors(csv, name, only(points, [&](const Point& p) {
-                   return p.c.distance >= range[0] && p.c.distance < range[1];
-                 }));
+    write_errors(csv, name,
+                 only(points, [&](const Point& p) { return p.c.distance >= range[0] && p.c.distance < range[1]; }));
   }
   write_errors(csv, "grazing n.v < 0.2", only(points, [&](const Point& p) { return glm::dot(p.c.n, p.c.v) < 0.2; }));
 

@@ -44,11 +44,12 @@ class AreaLightLtcGpuTest : public GpuTest {
     Buffer ltc = Buffer::dedicated(context(), {.name = "ltc", .size = sizeof(table)});
     upload_buffer(submitter(), in, std::as_bytes(std::span(input)));
     upload_buffer(submitter(), ltc, std::as_bytes(std::span(table)));
-    const Pipeline& p = pipelines().compute({"area_ltc",
-                                             find_shader(lighting_test_shaders(), "tests/lighting/shaders/area_ltc.comp"),
-                                             {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                              {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                              {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
+    const Pipeline& p =
+        pipelines().compute({"area_ltc",
+                             find_shader(lighting_test_shaders(), "tests/lighting/shaders/area_ltc.comp"),
+                             {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                              {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                              {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
     submitter().run([&](VkCommandBuffer cmd) {
       const DescriptorWrite writes[] = {storage_buffer(0, in.handle()), storage_buffer(1, out.handle()),
                                         storage_buffer(2, ltc.handle())};
@@ -85,8 +86,8 @@ TEST_F(AreaLightLtcGpuTest, ShaderMatchesTheCppTwin) {
       cpu = ltc_sphere_specular({to_float(c.sphere.center), float(c.sphere.radius), 1.0f}, p, n, v, entry);
     } else if (shape == LightShape::kTube) {
       put(gpu.a, c.tube.end0, c.tube.radius), put(gpu.b, c.tube.end1, 0.0);
-      cpu = ltc_tube_specular({to_float(c.tube.end0), to_float(c.tube.end1), float(c.tube.radius), 1.0f}, p, n, v,
-                              entry);
+      cpu =
+          ltc_tube_specular({to_float(c.tube.end0), to_float(c.tube.end1), float(c.tube.radius), 1.0f}, p, n, v, entry);
     } else {
       put(gpu.a, c.rect.center, c.rect.two_sided ? 1.0 : 0.0), put(gpu.b, c.rect.half_x, 0.0);
       put(gpu.c, c.rect.half_y, 0.0);

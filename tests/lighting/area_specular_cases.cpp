@@ -17,9 +17,12 @@ using glm::dvec3;
 
 const char* shape_name(LightShape shape) {
   switch (shape) {
-    case LightShape::kSphere: return "sphere";
-    case LightShape::kTube: return "tube";
-    case LightShape::kRect: return "rectangle";
+    case LightShape::kSphere:
+      return "sphere";
+    case LightShape::kTube:
+      return "tube";
+    case LightShape::kRect:
+      return "rectangle";
   }
   return "?";
 }

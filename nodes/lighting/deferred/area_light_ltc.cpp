@@ -35,99 +35,133 @@ glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
 
 namespace {
 
-// Sutherland-Hodgman against the plane through the origin with normal m: each edge keeps its
-// start if in front and adds its crossing. Returns the count kept (at most count + 1 for a convex
-// polygon).
-int clip_in_front(const vec3* in, int count, vec3 m, vec3* out) {
-  int kept = 0;
-  for (int i = 0; i < count; ++i) {
-    const vec3 a = in[i], b = in[(i + 1) % count];
-    const float da = glm::dot(m, a), db = glm::dot(m, b);
-    if (da > 0.0f) out[kept++] = a;
-    if ((da > 0.0f) != (db > 0.0f)) out[kept++] = a + (b - a) * (da / (da - db));
-  }
-  return kept;
+// The Lambert formula's term of edge a-b: its angle times the z of its unit normal.
+float edge_term(vec3 a, vec3 b) {
+  const vec3 e0 = glm::normalize(a), e1 = glm::normalize(b);
+  const vec3 c = glm::cross(e0, e1);
+  const float s = glm::length(c);
+  // atan2 keeps the angle exact for short edges, where acos of the dot product loses it.
+  return s > 0.0f ? c.z * std::atan2(s, glm::dot(e0, e1)) / s : 0.0f;
+}
+
+// Where edge a-b crosses the plane through the origin with normal m (da, db: a's and b's
+// distances along m, of opposite signs).
+vec3 crossing(vec3 a, vec3 b, float da, float db) {
+  return a + (b - a) * (da / (da - db));
 }
 
 }  // namespace
 
-float ltc_polygon_integral(const vec3* vertices, int count, vec3 n, const glm::mat3& to_cosine) {
-  // Above the surface's horizon (the lobe is 0 below it; the cosine it is fitted with is not
-  // quite), then into the cosine's space and above its horizon.
-  vec3 above[kLtcMaxVertices], cosine[kLtcMaxVertices];
-  const int n_above = clip_in_front(vertices, count, n, above);
-  for (int i = 0; i < n_above; ++i) above[i] = to_cosine * above[i];
-  const int n_kept = clip_in_front(above, n_above, vec3(0.0f, 0.0f, 1.0f), cosine);
-  // The Lambert polygon formula: (1 / 2 pi) |sum over edges of angle x the z of their unit normal|.
-  float sum = 0.0f;
-  for (int i = 0; i < n_kept; ++i) {
-    const vec3 e0 = glm::normalize(cosine[i]);
-    const vec3 e1 = glm::normalize(cosine[(i + 1) % n_kept]);
-    const vec3 c = glm::cross(e0, e1);
-    const float s = glm::length(c);
-    // atan2 keeps the angle exact for short edges, where acos of the dot product loses it.
-    if (s > 0.0f) sum += c.z * std::atan2(s, glm::dot(e0, e1)) / s;
+void ltc_add_cosine_edge(LtcCosineClip& c, vec3 a, vec3 b) {
+  if (a.z > 0.0f && b.z > 0.0f) {
+    c.sum += edge_term(a, b);
+  } else if (a.z > 0.0f) {
+    c.exit = crossing(a, b, a.z, b.z);
+    c.exited = true;
+    c.sum += edge_term(a, c.exit);
+  } else if (b.z > 0.0f) {
+    c.entry = crossing(a, b, a.z, b.z);
+    c.entered = true;
+    c.sum += edge_term(c.entry, b);
   }
-  return std::fabs(sum) / (2.0f * kAreaLightPi);
 }
 
-int ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, vec3* vertices) {
+void ltc_add_edge(LtcPolygon& poly, vec3 a, vec3 b) {
+  const float da = glm::dot(poly.n, a), db = glm::dot(poly.n, b);
+  if (da > 0.0f && db > 0.0f) {
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
+  } else if (da > 0.0f) {
+    poly.exit = crossing(a, b, da, db);
+    poly.exited = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit);
+  } else if (db > 0.0f) {
+    poly.entry = crossing(a, b, da, db);
+    poly.entered = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
+  }
+}
+
+float ltc_finish(LtcPolygon& poly) {
+  if (poly.exited && poly.entered)
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit, poly.to_cosine * poly.entry);
+  LtcCosineClip& c = poly.cosine;
+  if (c.exited && c.entered) c.sum += edge_term(c.exit, c.entry);
+  return std::fabs(c.sum) / (2.0f * kAreaLightPi);
+}
+
+LtcPolygon ltc_polygon(vec3 n, vec3 v, glm::vec4 entry) {
+  LtcPolygon poly;
+  poly.n = glm::normalize(n);
+  poly.to_cosine = ltc_to_cosine(n, v, entry);
+  return poly;
+}
+
+bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
   const vec3 c = 0.5f * (a + b);
   const float dc = glm::length(c);
-  if (!(dc > 0.0f) || !(radius > 0.0f)) return 0;
+  if (!(dc > 0.0f) || !(radius > 0.0f)) return false;
   const vec3 u = c / dc;
-  vec3 ends[2] = {a, b};
-  float radii[2];
+  o.ends[0] = a, o.ends[1] = b;
   for (int k = 0; k < 2; ++k) {
-    const vec3 e = ends[k];
+    const vec3 e = o.ends[k];
     // Along the ray to the end, onto the plane (an end beside or behind the point is held in front).
     const float depth = std::max(glm::dot(e, u), 1e-3f * dc);
     const float scale = dc / depth;
-    ends[k] = e * scale + u * (dc - glm::dot(e, u) * scale);
-    // Its sphere's cone has tan = r / sqrt(d^2 - r^2) (held finite inside the sphere).
+    o.ends[k] = e * scale + u * (dc - glm::dot(e, u) * scale);
+    // Its sphere's cone has tan = r / sqrt(d^2 - r^2) (held finite inside the sphere); a half
+    // polygon of k segments inscribed in radius R has area k R^2 sin(pi / k) / 2, a half disk's
+    // pi r^2 / 2 when R = r sqrt(pi / (k sin(pi / k))).
     const float d2 = glm::dot(e, e);
-    radii[k] = radius * std::sqrt(d2) * scale / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2));
+    const float segments = float(kLtcArcSegments);
+    o.radii[k] = radius * std::sqrt(d2) * scale / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2)) *
+                 std::sqrt(kAreaLightPi / (segments * std::sin(kAreaLightPi / segments)));
   }
-  const vec3 axis = ends[1] - ends[0];
+  const vec3 axis = o.ends[1] - o.ends[0];
   const float len = glm::length(axis);
-  vec3 along;
   if (len > 1e-6f * dc) {
-    along = axis / len;
+    o.along = axis / len;
   } else {
     // A sphere, or a capsule seen end on: its outline is round; one half polygon's edge lies
     // along the horizon's trace for symmetry.
     const vec3 in_plane = n - u * glm::dot(n, u);
-    along = glm::length(in_plane) > 1e-6f ? glm::normalize(in_plane) : any_perpendicular(u);
+    o.along = glm::length(in_plane) > 1e-6f ? glm::normalize(in_plane) : any_perpendicular(u);
   }
-  const vec3 side = glm::cross(u, along);
-  const float segments = float(kLtcArcSegments);
-  // A half polygon of k segments inscribed in radius R has area k R^2 sin(pi / k) / 2.
-  const float grow = std::sqrt(kAreaLightPi / (segments * std::sin(kAreaLightPi / segments)));
-  int count = 0;
-  for (int half = 0; half < 2; ++half) {
-    // End 0's half circle faces away from end 1 (through -along), end 1's through +along.
-    const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
-    for (int j = 0; j <= kLtcArcSegments; ++j) {
-      const float angle = start + kAreaLightPi * float(j) / segments;
-      vertices[count++] = ends[half] + radii[half] * grow * (std::cos(angle) * along + std::sin(angle) * side);
-    }
-  }
-  return count;
+  o.side = glm::cross(u, o.along);
+  return true;
 }
 
+vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
+  // End 0's half circle faces away from end 1 (through -along), end 1's through +along.
+  const int half = j / (kLtcArcSegments + 1);
+  const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
+  const float angle = start + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);
+  return o.ends[half] + o.radii[half] * (std::cos(angle) * o.along + std::sin(angle) * o.side);
+}
+
+namespace {
+
+float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
+  LtcOutline o;
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0f;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 previous = ltc_outline_vertex(o, kLtcOutlineVertices - 1);
+  for (int j = 0; j < kLtcOutlineVertices; ++j) {
+    const vec3 next = ltc_outline_vertex(o, j);
+    ltc_add_edge(poly, previous, next);
+    previous = next;
+  }
+  return ltc_finish(poly);
+}
+
+}  // namespace
+
 float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
-  vec3 outline[kLtcMaxVertices];
   const vec3 c = light.center - p;
-  const int count = ltc_capsule_outline(c, c, light.radius, n, outline);
-  if (count == 0) return 0.0f;
-  return specular_result(light.radiance, ltc_polygon_integral(outline, count, glm::normalize(n), ltc_to_cosine(n, v, entry)));
+  return specular_result(light.radiance, capsule_integral(c, c, light.radius, n, v, entry));
 }
 
 float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
-  vec3 outline[kLtcMaxVertices];
-  const int count = ltc_capsule_outline(light.end0 - p, light.end1 - p, light.radius, n, outline);
-  if (count == 0) return 0.0f;
-  return specular_result(light.radiance, ltc_polygon_integral(outline, count, glm::normalize(n), ltc_to_cosine(n, v, entry)));
+  return specular_result(light.radiance, capsule_integral(light.end0 - p, light.end1 - p, light.radius, n, v, entry));
 }
 
 float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
@@ -135,9 +169,11 @@ float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, glm::vec
   const vec3 normal = glm::cross(light.half_x, light.half_y);
   // A one-sided light shines on points in front of it only; its plane holds none.
   if (!light.two_sided && !(glm::dot(c, normal) < 0.0f)) return 0.0f;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
   const vec3 corners[4] = {c - light.half_x - light.half_y, c + light.half_x - light.half_y,
                            c + light.half_x + light.half_y, c - light.half_x + light.half_y};
-  return specular_result(light.radiance, ltc_polygon_integral(corners, 4, glm::normalize(n), ltc_to_cosine(n, v, entry)));
+  for (int i = 0; i < 4; ++i) ltc_add_edge(poly, corners[i], corners[(i + 1) % 4]);
+  return specular_result(light.radiance, ltc_finish(poly));
 }
 
 }  // namespace lg

@@ -208,7 +208,8 @@ QuadratureResult cap_integral(dvec3 center, double r, const Frame& f, double max
   return rings_integral(ring_at, f, 0.0, max_angle, std::move(breaks), s);
 }
 
-QuadratureResult sphere_integral(const SphereLightD& light, dvec3 p, dvec3 n, double rel_tol, const SpecularLobe* lobe) {
+QuadratureResult sphere_integral(const SphereLightD& light, dvec3 p, dvec3 n, double rel_tol,
+                                 const SpecularLobe* lobe) {
   dvec3 to_p = p - light.center;
   double dist = glm::length(to_p);
   double r = light.radius;

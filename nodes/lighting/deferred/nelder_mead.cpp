@@ -7,8 +7,7 @@
 namespace lg {
 
 NelderMeadResult minimize_nelder_mead(const std::function<double(const std::vector<double>&)>& f,
-                                      std::vector<double> start, double step, double rel_tol,
-                                      int max_evaluations) {
+                                      std::vector<double> start, double step, double rel_tol, int max_evaluations) {
   const size_t n = start.size();
   std::vector<std::vector<double>> points(n + 1, start);
   for (size_t i = 0; i < n; ++i) points[i + 1][i] += step;

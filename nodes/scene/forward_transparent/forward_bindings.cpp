@@ -11,7 +11,8 @@ namespace {
 // images (the material's textures at material_texture_bindings among them).
 VkDescriptorType binding_type(uint32_t b) {
   if (b == 0 || b == 20) return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  if (b == 1 || b == 6 || (b >= 11 && b <= 13) || (b >= 15 && b <= 18) || b == 22) return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  if (b == 1 || b == 6 || (b >= 11 && b <= 13) || (b >= 15 && b <= 18) || b == 22)
+    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 }
 

@@ -7,7 +7,7 @@
 #include "nodes/lighting/deferred/shaders/area_light_math.glsl"
 
 const int LG_LTC_ARC_SEGMENTS = 4;
-const int LG_LTC_MAX_VERTICES = 16;
+const int LG_LTC_OUTLINE_VERTICES = 2 * (LG_LTC_ARC_SEGMENTS + 1);
 
 vec3 ltc_any_perpendicular(vec3 n) {
   return normalize(cross(n, abs(n.x) < 0.7 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
@@ -27,96 +27,156 @@ mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
   return m_inv * transpose(mat3(t1, t2, n));
 }
 
-int ltc_clip_in_front(vec3 in_[LG_LTC_MAX_VERTICES], int count, vec3 m, out vec3 out_[LG_LTC_MAX_VERTICES]) {
-  int kept = 0;
-  for (int i = 0; i < count; ++i) {
-    vec3 a = in_[i], b = in_[(i + 1) % count];
-    float da = dot(m, a), db = dot(m, b);
-    if (da > 0.0) out_[kept++] = a;
-    if ((da > 0.0) != (db > 0.0)) out_[kept++] = a + (b - a) * (da / (da - db));
-  }
-  return kept;
+float ltc_edge_term(vec3 a, vec3 b) {
+  vec3 e0 = normalize(a), e1 = normalize(b);
+  vec3 c = cross(e0, e1);
+  float s = length(c);
+  return s > 0.0 ? c.z * atan(s, dot(e0, e1)) / s : 0.0;
 }
 
-float ltc_polygon_integral(vec3 vertices[LG_LTC_MAX_VERTICES], int count, vec3 n, mat3 to_cosine) {
-  vec3 above[LG_LTC_MAX_VERTICES], cosine[LG_LTC_MAX_VERTICES];
-  int n_above = ltc_clip_in_front(vertices, count, n, above);
-  for (int i = 0; i < n_above; ++i) above[i] = to_cosine * above[i];
-  int n_kept = ltc_clip_in_front(above, n_above, vec3(0.0, 0.0, 1.0), cosine);
-  float sum = 0.0;
-  for (int i = 0; i < n_kept; ++i) {
-    vec3 e0 = normalize(cosine[i]);
-    vec3 e1 = normalize(cosine[(i + 1) % n_kept]);
-    vec3 c = cross(e0, e1);
-    float s = length(c);
-    if (s > 0.0) sum += c.z * atan(s, dot(e0, e1)) / s;
-  }
-  return abs(sum) / (2.0 * LG_PI);
+vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
+  return a + (b - a) * (da / (da - db));
 }
 
-int ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out vec3 vertices[LG_LTC_MAX_VERTICES]) {
+struct LtcCosineClip {
+  float sum;
+  vec3 exit_;
+  vec3 entry;
+  bool exited;
+  bool entered;
+};
+
+struct LtcPolygon {
+  vec3 n;
+  mat3 to_cosine;
+  vec3 exit_;
+  vec3 entry;
+  bool exited;
+  bool entered;
+  LtcCosineClip cosine;
+};
+
+LtcPolygon ltc_polygon(vec3 n, vec3 v, vec4 entry) {
+  LtcCosineClip c = LtcCosineClip(0.0, vec3(0.0), vec3(0.0), false, false);
+  return LtcPolygon(normalize(n), ltc_to_cosine(n, v, entry), vec3(0.0), vec3(0.0), false, false, c);
+}
+
+void ltc_add_cosine_edge(inout LtcCosineClip c, vec3 a, vec3 b) {
+  if (a.z > 0.0 && b.z > 0.0) {
+    c.sum += ltc_edge_term(a, b);
+  } else if (a.z > 0.0) {
+    c.exit_ = ltc_crossing(a, b, a.z, b.z);
+    c.exited = true;
+    c.sum += ltc_edge_term(a, c.exit_);
+  } else if (b.z > 0.0) {
+    c.entry = ltc_crossing(a, b, a.z, b.z);
+    c.entered = true;
+    c.sum += ltc_edge_term(c.entry, b);
+  }
+}
+
+void ltc_add_edge(inout LtcPolygon poly, vec3 a, vec3 b) {
+  float da = dot(poly.n, a), db = dot(poly.n, b);
+  if (da > 0.0 && db > 0.0) {
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
+  } else if (da > 0.0) {
+    poly.exit_ = ltc_crossing(a, b, da, db);
+    poly.exited = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit_);
+  } else if (db > 0.0) {
+    poly.entry = ltc_crossing(a, b, da, db);
+    poly.entered = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
+  }
+}
+
+float ltc_finish(inout LtcPolygon poly) {
+  if (poly.exited && poly.entered)
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * poly.entry);
+  if (poly.cosine.exited && poly.cosine.entered) poly.cosine.sum += ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  return abs(poly.cosine.sum) / (2.0 * LG_PI);
+}
+
+struct LtcOutline {
+  vec3 end0;
+  vec3 end1;
+  float radius0;
+  float radius1;
+  vec3 along;
+  vec3 side;
+};
+
+bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o) {
+  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0));
   vec3 c = 0.5 * (a + b);
   float dc = length(c);
-  if (!(dc > 0.0) || !(radius > 0.0)) return 0;
+  if (!(dc > 0.0) || !(radius > 0.0)) return false;
   vec3 u = c / dc;
-  vec3 ends[2] = vec3[2](a, b);
-  float radii[2];
-  for (int k = 0; k < 2; ++k) {
-    vec3 e = ends[k];
-    float depth = max(dot(e, u), 1e-3 * dc);
-    float scale = dc / depth;
-    ends[k] = e * scale + u * (dc - dot(e, u) * scale);
-    float d2 = dot(e, e);
-    radii[k] = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2));
-  }
-  vec3 axis = ends[1] - ends[0];
-  float len = length(axis);
-  vec3 along;
-  if (len > 1e-6 * dc) {
-    along = axis / len;
-  } else {
-    vec3 in_plane = n - u * dot(n, u);
-    along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
-  }
-  vec3 side = cross(u, along);
   float segments = float(LG_LTC_ARC_SEGMENTS);
   float grow = sqrt(LG_PI / (segments * sin(LG_PI / segments)));
-  int count = 0;
-  for (int half_ = 0; half_ < 2; ++half_) {
-    float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
-    for (int j = 0; j <= LG_LTC_ARC_SEGMENTS; ++j) {
-      float angle = start + LG_PI * float(j) / segments;
-      vertices[count++] = ends[half_] + radii[half_] * grow * (cos(angle) * along + sin(angle) * side);
-    }
+  float depth = max(dot(a, u), 1e-3 * dc);
+  float scale = dc / depth;
+  o.end0 = a * scale + u * (dc - dot(a, u) * scale);
+  float d2 = dot(a, a);
+  o.radius0 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
+  depth = max(dot(b, u), 1e-3 * dc);
+  scale = dc / depth;
+  o.end1 = b * scale + u * (dc - dot(b, u) * scale);
+  d2 = dot(b, b);
+  o.radius1 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
+  vec3 axis = o.end1 - o.end0;
+  float len = length(axis);
+  if (len > 1e-6 * dc) {
+    o.along = axis / len;
+  } else {
+    vec3 in_plane = n - u * dot(n, u);
+    o.along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
   }
-  return count;
+  o.side = cross(u, o.along);
+  return true;
+}
+
+vec3 ltc_outline_vertex(LtcOutline o, int j) {
+  int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
+  float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
+  float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
+  vec3 offset = cos(angle) * o.along + sin(angle) * o.side;
+  return half_ == 0 ? o.end0 + o.radius0 * offset : o.end1 + o.radius1 * offset;
+}
+
+float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
+  LtcOutline o;
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 previous = ltc_outline_vertex(o, LG_LTC_OUTLINE_VERTICES - 1);
+  for (int j = 0; j < LG_LTC_OUTLINE_VERTICES; ++j) {
+    vec3 next = ltc_outline_vertex(o, j);
+    ltc_add_edge(poly, previous, next);
+    previous = next;
+  }
+  return ltc_finish(poly);
 }
 
 float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
-  vec3 outline[LG_LTC_MAX_VERTICES];
   vec3 c = center - p;
-  int count = ltc_capsule_outline(c, c, radius, n, outline);
-  if (count == 0) return 0.0;
-  return ltc_specular_result(ltc_polygon_integral(outline, count, normalize(n), ltc_to_cosine(n, v, entry)));
+  return ltc_specular_result(ltc_capsule_integral(c, c, radius, n, v, entry));
 }
 
 float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
-  vec3 outline[LG_LTC_MAX_VERTICES];
-  int count = ltc_capsule_outline(end0 - p, end1 - p, radius, n, outline);
-  if (count == 0) return 0.0;
-  return ltc_specular_result(ltc_polygon_integral(outline, count, normalize(n), ltc_to_cosine(n, v, entry)));
+  return ltc_specular_result(ltc_capsule_integral(end0 - p, end1 - p, radius, n, v, entry));
 }
 
 float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, vec4 entry) {
   vec3 c = center - p;
   vec3 normal = cross(hx, hy);
   if (!two_sided && !(dot(c, normal) < 0.0)) return 0.0;
-  vec3 corners[LG_LTC_MAX_VERTICES];
-  corners[0] = c - hx - hy;
-  corners[1] = c + hx - hy;
-  corners[2] = c + hx + hy;
-  corners[3] = c - hx + hy;
-  return ltc_specular_result(ltc_polygon_integral(corners, 4, normalize(n), ltc_to_cosine(n, v, entry)));
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 c0 = c - hx - hy, c1 = c + hx - hy, c2 = c + hx + hy, c3 = c - hx + hy;
+  ltc_add_edge(poly, c0, c1);
+  ltc_add_edge(poly, c1, c2);
+  ltc_add_edge(poly, c2, c3);
+  ltc_add_edge(poly, c3, c0);
+  return ltc_specular_result(ltc_finish(poly));
 }
 
 #endif
