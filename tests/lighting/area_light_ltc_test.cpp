@@ -67,20 +67,26 @@ std::vector<SpecularSample> samples(LightShape shape, Horizon horizon, int count
 // LTC and representative points against the reference on fresh configurations as the benchmark
 // draws them (lights 1.5 to 50 bounding radii away, above and across the horizon, roughness 0.1 to
 // 1, n.v 0.02 to 1), 40 per light shape; relative RMS as area_specular_cases.h defines it. Over
-// 400 points per shape the benchmark measured LTC at 0.22 (sphere), 0.36 (tube) and 0.27
+// 400 points per shape the benchmark measured LTC at 0.16 (sphere), 0.27 (tube) and 0.11
 // (rectangle), representative points at 4.9 to 20 (docs/bench/area-specular). On 40 points one
-// bright point can dominate the RMS (here LTC 0.07, 0.65, 0.05): the bound, 0.8, catches a broken
-// method or table (representative points' own error is 0.6 to 4.8 here, a wrong matrix layout
-// several), and LTC must beat representative points by 5x on every shape.
+// bright point can dominate: here LTC is at 0.06, 0.72 and 0.05, the tube's from one capsule 1.6
+// bounding radii away (18% low; its outline is flattened onto a plane). The bounds, 0.2, 1.0 and
+// 0.2, catch a broken method or table (a wrong matrix layout errs by several), and LTC must beat
+// representative points (0.6 to 4.8 here) by 5x on every shape.
 TEST(AreaLightLtc, MatchesTheGgxLobeOverTheLightBetterThanRepresentativePoints) {
-  for (LightShape shape : {LightShape::kSphere, LightShape::kTube, LightShape::kRect}) {
+  struct Row {
+    LightShape shape;
+    double bound;
+  };
+  for (const Row& row : {Row{LightShape::kSphere, 0.2}, Row{LightShape::kTube, 1.0}, Row{LightShape::kRect, 0.2}}) {
+    const LightShape shape = row.shape;
     std::vector<SpecularSample> all = samples(shape, Horizon::kAbove, 25, 11 + uint64_t(shape));
     for (const SpecularSample& s : samples(shape, Horizon::kCrossing, 15, 21 + uint64_t(shape))) all.push_back(s);
     const SpecularErrors ltc = ltc_errors(all), rp = representative_point_errors(all);
     std::cout << shape_name(shape) << ": LTC relative RMS " << ltc.relative_rms << " (pointwise " << ltc.pointwise_rms
               << " over " << ltc.lit << " lit of " << all.size() << "); representative points " << rp.relative_rms
               << " (pointwise " << rp.pointwise_rms << ")\n";
-    EXPECT_LE(ltc.relative_rms, 0.8) << shape_name(shape);
+    EXPECT_LE(ltc.relative_rms, row.bound) << shape_name(shape);
     EXPECT_LE(5.0 * ltc.relative_rms, rp.relative_rms) << shape_name(shape);
   }
 }

@@ -82,7 +82,7 @@ double fit_error(const Lobe& lobe, double norm, const glm::dmat3& m) {
 
 glm::dmat3 transform(const glm::dmat3& frame, const std::vector<double>& x) {
   // Columns: (a, 0, 0), (0, c, 0), (b, 0, 1).
-  return frame * glm::dmat3(dvec3(x[0], 0.0, 0.0), dvec3(0.0, x[1], 0.0), dvec3(x[2], 0.0, 1.0));
+  return frame * glm::dmat3(dvec3(x[0], 0.0, x[3]), dvec3(0.0, x[1], 0.0), dvec3(x[2], 0.0, 1.0));
 }
 
 }  // namespace
@@ -118,7 +118,7 @@ LtcFit fit_ltc(double n_dot_v, double roughness) {
     if (!(x[0] > 0.0) || !(x[1] > 0.0)) return HUGE_VAL;
     return fit_error(lobe, norm, transform(frame, x));
   };
-  std::vector<double> x{lobe.alpha, lobe.alpha, 0.0};
+  std::vector<double> x{lobe.alpha, lobe.alpha, 0.0, 0.0};
   LtcFit fit;
   double step = 0.5 * lobe.alpha;
   for (int restart = 0; restart < 3; ++restart) {
