@@ -37,6 +37,7 @@ struct Surface {
   vec3 diffuse_color;   // albedo (1 - metalness), times 1 - the specular albedo after share_energy
   vec3 f0;              // specular reflectance at normal incidence
   vec3 specular_scale;  // multiple-scattering compensation at the view
+  vec3 specular_albedo;  // the specular lobe's directional albedo at the view, with that scale
   float alpha;
 };
 
@@ -47,6 +48,7 @@ Surface make_surface(vec3 position, vec3 normal, vec3 eye, vec3 albedo, float ro
   s.view = normalize(eye - position);
   s.f0 = mix(vec3(0.04), albedo, metalness);
   s.specular_scale = vec3(1.0);
+  s.specular_albedo = s.f0;  // until share_energy has the table's value
   s.diffuse_color = albedo * (1.0 - metalness);
   s.alpha = max(roughness * roughness, LG_MIN_ALPHA);
   return s;
@@ -57,7 +59,8 @@ Surface make_surface(vec3 position, vec3 normal, vec3 eye, vec3 albedo, float ro
 // scattering scale, and the diffuse reduced to what the specular leaves.
 void share_energy(inout Surface s, vec2 scale_bias) {
   s.specular_scale = specular_energy_scale(s.f0, scale_bias);
-  s.diffuse_color *= 1.0 - specular_albedo(s.f0, scale_bias);
+  s.specular_albedo = specular_albedo(s.f0, scale_bias);
+  s.diffuse_color *= 1.0 - s.specular_albedo;
 }
 
 // Specular BRDF times n.l for light arriving from unit direction l.

@@ -29,6 +29,10 @@ glm::dvec3 view(double n_dot_v) {
 
 }  // namespace
 
+double ggx_specular_brdf(double n_dot_v, double n_dot_l, double n_dot_h, double alpha) {
+  return ggx(n_dot_h, alpha) * smith_visibility(n_dot_v, n_dot_l, alpha);
+}
+
 glm::dvec2 dfg_reference(double n_dot_v, double roughness, int steps) {
   const double alpha = roughness * roughness, a2 = alpha * alpha;
   const glm::dvec3 v = view(n_dot_v);

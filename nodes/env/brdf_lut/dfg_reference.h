@@ -7,6 +7,10 @@
 
 namespace lg {
 
+// The specular BRDF both tables describe, without Fresnel: GGX D(h) times the height-correlated
+// Smith visibility G2 / (4 n.l n.v) (brdf.glsl's ggx_distribution x smith_visibility).
+double ggx_specular_brdf(double n_dot_v, double n_dot_l, double n_dot_h, double alpha);
+
 // By a dense midpoint rule over the visible-normal variables of Heitz (2018) (in which the
 // integrand is G2 / G1(v) F, smooth and bounded), `steps` x 4 `steps` points: any roughness.
 glm::dvec2 dfg_reference(double n_dot_v, double roughness, int steps = 256);

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <utility>
 #include <vector>
+
+#include "nodes/env/brdf_lut/dfg_reference.h"
 
 namespace lg {
 namespace {
@@ -20,6 +23,13 @@ struct Setting {
   double radiance;
   double rel_tol;
   double abs_tol;  // outer: 1e-3 rel_tol E_max
+  // A weight on each direction from p (the specular lobe), none for irradiance.
+  std::function<double(dvec3)> lobe = nullptr;
+  // Each interval the integrands are smooth on is first cut into this many, so that the nodes of
+  // the first estimates cannot all miss a lobe narrower than the light.
+  int pieces = 1;
+
+  double weight(dvec3 d) const { return lobe ? lobe(glm::normalize(d)) : 1.0; }
 };
 
 // Inner integrals are held 100 times tighter than the outer one, so their error stays a small
@@ -31,16 +41,43 @@ constexpr double kInnerShare = 0.01;
 constexpr int kInnerIntervals = 200;
 constexpr int kOuterIntervals = 1000;
 
-Setting make_setting(dvec3 p, dvec3 n, double radiance, double rel_tol, double bounding_radius, dvec3 center) {
+Setting make_setting(dvec3 p, dvec3 n, double radiance, double rel_tol, double bounding_radius, dvec3 center,
+                     const SpecularLobe* lobe) {
   double ratio = bounding_radius / glm::length(p - center);
   double e_max = kPi * radiance * std::min(1.0, ratio * ratio);
-  return Setting{p, n, radiance, rel_tol, 1e-3 * rel_tol * e_max};
+  Setting s{p, n, radiance, rel_tol, 1e-3 * rel_tol * e_max};
+  if (!lobe) return s;
+  // The lobe gathers at most L (its albedo is below 1), about L (R / D)^2 / alpha^2 from a light
+  // smaller than it.
+  const double alpha = std::max(lobe->alpha, 1e-4);
+  s.abs_tol = 1e-3 * rel_tol * radiance * std::min(1.0, ratio * ratio / (alpha * alpha));
+  // Cut the light's angular diameter into pieces of about the lobe's width.
+  s.pieces = int(std::clamp(std::ceil(2.0 * std::asin(std::min(1.0, ratio)) / alpha), 1.0, 32.0));
+  const dvec3 v = glm::normalize(lobe->v);
+  const double n_dot_v = std::max(glm::dot(n, v), 1e-4);  // as brdf.glsl clamps it
+  s.lobe = [n, v, n_dot_v, alpha = lobe->alpha](dvec3 l) {
+    const double n_dot_l = glm::dot(n, l);
+    if (!(n_dot_l > 0.0)) return 0.0;
+    return ggx_specular_brdf(n_dot_v, n_dot_l, glm::dot(n, glm::normalize(l + v)), alpha);
+  };
+  return s;
 }
 
 void add(QuadratureResult& total, const QuadratureResult& part) {
   total.value += part.value;
   total.error += part.error;
   total.evaluations += part.evaluations;
+}
+
+// integrate_adaptive over [a, b] cut into s.pieces equal parts, abs_tol shared by length.
+QuadratureResult integrate_pieces(const std::function<double(double)>& f, double a, double b, double rel_tol,
+                                  double abs_tol, int max_intervals, const Setting& s) {
+  QuadratureResult total;
+  for (int i = 0; i < s.pieces; ++i) {
+    const double lo = a + (b - a) * i / s.pieces, hi = i + 1 == s.pieces ? b : a + (b - a) * (i + 1) / s.pieces;
+    add(total, integrate_adaptive(f, lo, hi, rel_tol, abs_tol / s.pieces, max_intervals));
+  }
+  return total;
 }
 
 // The outer integral over [s0, s1] of an inner integral that reports its own evaluations,
@@ -65,7 +102,7 @@ QuadratureResult outer_integral(const std::function<QuadratureResult(double, dou
     double lo = std::max(breaks[i], s0);
     double hi = std::min(breaks[i + 1], s1);
     if (hi > lo) {
-      add(result, integrate_adaptive(outer, lo, hi, s.rel_tol, s.abs_tol * (hi - lo) / (s1 - s0), kOuterIntervals));
+      add(result, integrate_pieces(outer, lo, hi, s.rel_tol, s.abs_tol * (hi - lo) / (s1 - s0), kOuterIntervals, s));
     }
   }
   // The inner results are each within max(inner_abs, inner rel_tol |value|), or worst_inner
@@ -132,13 +169,14 @@ QuadratureResult ring_integral(const Ring& ring, const Frame& f, const Setting& 
     dvec3 d = ring.origin + ring.rho * e - s.p;
     dvec3 m = ring.axial * f.axis + ring.radial * e;
     double d2 = glm::dot(d, d);
-    return s.radiance * std::max(glm::dot(s.n, d), 0.0) * std::max(-glm::dot(m, d), 0.0) / (d2 * d2) * ring.jacobian;
+    return s.radiance * std::max(glm::dot(s.n, d), 0.0) * std::max(-glm::dot(m, d), 0.0) / (d2 * d2) * ring.jacobian *
+           s.weight(d);
   };
   QuadratureResult total;
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
     double mid = 0.5 * (cuts[i] + cuts[i + 1]);
     if (!(cuts[i + 1] > cuts[i]) || facing.at(mid) <= 0.0 || above.at(mid) <= 0.0) continue;
-    add(total, integrate_adaptive(integrand, cuts[i], cuts[i + 1], kInnerShare * s.rel_tol, abs_tol, kInnerIntervals));
+    add(total, integrate_pieces(integrand, cuts[i], cuts[i + 1], kInnerShare * s.rel_tol, abs_tol, kInnerIntervals, s));
   }
   return total;
 }
@@ -170,26 +208,25 @@ QuadratureResult cap_integral(dvec3 center, double r, const Frame& f, double max
   return rings_integral(ring_at, f, 0.0, max_angle, std::move(breaks), s);
 }
 
-}  // namespace
-
-QuadratureResult reference_sphere_irradiance(const SphereLightD& light, dvec3 p, dvec3 n, double rel_tol) {
+QuadratureResult sphere_integral(const SphereLightD& light, dvec3 p, dvec3 n, double rel_tol,
+                                 const SpecularLobe* lobe) {
   dvec3 to_p = p - light.center;
   double dist = glm::length(to_p);
   double r = light.radius;
   if (!(r > 0.0) || !(dist > r)) return {};
   // The part facing p is the cap about the direction to p out to cos(angle) = r / dist.
-  Setting s = make_setting(p, n, light.radiance, rel_tol, r, light.center);
+  Setting s = make_setting(p, n, light.radiance, rel_tol, r, light.center, lobe);
   return cap_integral(light.center, r, frame_around(to_p / dist), std::acos(r / dist), s);
 }
 
-QuadratureResult reference_tube_irradiance(const TubeLightD& light, dvec3 p, dvec3 n, double rel_tol) {
+QuadratureResult tube_integral(const TubeLightD& light, dvec3 p, dvec3 n, double rel_tol, const SpecularLobe* lobe) {
   double r = light.radius;
   dvec3 along = light.end1 - light.end0;
   double len = glm::length(along);
   dvec3 axis = len > 0.0 ? along / len : dvec3(0.0, 0.0, 1.0);
   double t = std::clamp(glm::dot(p - light.end0, axis), 0.0, len);
   if (!(r > 0.0) || !(glm::length(p - (light.end0 + t * axis)) > r)) return {};
-  Setting s = make_setting(p, n, light.radiance, rel_tol, 0.5 * len + r, 0.5 * (light.end0 + light.end1));
+  Setting s = make_setting(p, n, light.radiance, rel_tol, 0.5 * len + r, 0.5 * (light.end0 + light.end1), lobe);
   Frame f = frame_around(axis);
   QuadratureResult total = cap_integral(light.end1, r, f, 0.5 * kPi, s);
   add(total, cap_integral(light.end0, r, Frame{-f.axis, f.u, f.v}, 0.5 * kPi, s));
@@ -208,7 +245,7 @@ QuadratureResult reference_tube_irradiance(const TubeLightD& light, dvec3 p, dve
   return total;
 }
 
-QuadratureResult reference_rect_irradiance(const RectLightD& light, dvec3 p, dvec3 n, double rel_tol) {
+QuadratureResult rect_integral(const RectLightD& light, dvec3 p, dvec3 n, double rel_tol, const SpecularLobe* lobe) {
   dvec3 normal = glm::cross(light.half_x, light.half_y);
   double jacobian = glm::length(normal);  // dA = |half_x x half_y| ds dt over [-1, 1]^2
   if (!(jacobian > 0.0)) return {};
@@ -216,7 +253,7 @@ QuadratureResult reference_rect_irradiance(const RectLightD& light, dvec3 p, dve
   double front = glm::dot(p - light.center, nl);
   if (front == 0.0 || (!light.two_sided && !(front > 0.0))) return {};
   double bounding = std::sqrt(glm::dot(light.half_x, light.half_x) + glm::dot(light.half_y, light.half_y));
-  Setting s = make_setting(p, n, light.radiance, rel_tol, bounding, light.center);
+  Setting s = make_setting(p, n, light.radiance, rel_tol, bounding, light.center, lobe);
   // Row s: x = center + s half_x + t half_y, above the horizon where base + t slope > 0.
   auto row = [&](double sx, double abs_tol) {
     dvec3 origin = light.center + sx * light.half_x;
@@ -231,9 +268,10 @@ QuadratureResult reference_rect_irradiance(const RectLightD& light, dvec3 p, dve
     auto integrand = [&](double ty) {
       dvec3 d = origin + ty * light.half_y - p;
       double d2 = glm::dot(d, d);
-      return s.radiance * std::max(glm::dot(n, d), 0.0) * std::fabs(glm::dot(nl, d)) / (d2 * d2) * jacobian;
+      return s.radiance * std::max(glm::dot(n, d), 0.0) * std::fabs(glm::dot(nl, d)) / (d2 * d2) * jacobian *
+             s.weight(d);
     };
-    return integrate_adaptive(integrand, lo, hi, kInnerShare * s.rel_tol, abs_tol, kInnerIntervals);
+    return integrate_pieces(integrand, lo, hi, kInnerShare * s.rel_tol, abs_tol, kInnerIntervals, s);
   };
   // The clipped row's length has a kink where the horizon line crosses a corner (t = +-1).
   double base0 = glm::dot(n, light.center - p);
@@ -244,6 +282,35 @@ QuadratureResult reference_rect_irradiance(const RectLightD& light, dvec3 p, dve
     for (double sign : {-1.0, 1.0}) breaks.push_back(-(base0 + sign * along_y) / along_x);
   }
   return outer_integral(row, -1.0, 1.0, std::move(breaks), s);
+}
+
+}  // namespace
+
+QuadratureResult reference_sphere_irradiance(const SphereLightD& light, dvec3 p, dvec3 n, double rel_tol) {
+  return sphere_integral(light, p, n, rel_tol, nullptr);
+}
+
+QuadratureResult reference_tube_irradiance(const TubeLightD& light, dvec3 p, dvec3 n, double rel_tol) {
+  return tube_integral(light, p, n, rel_tol, nullptr);
+}
+
+QuadratureResult reference_rect_irradiance(const RectLightD& light, dvec3 p, dvec3 n, double rel_tol) {
+  return rect_integral(light, p, n, rel_tol, nullptr);
+}
+
+QuadratureResult reference_sphere_specular(const SphereLightD& light, dvec3 p, dvec3 n, const SpecularLobe& lobe,
+                                           double rel_tol) {
+  return sphere_integral(light, p, glm::normalize(n), rel_tol, &lobe);
+}
+
+QuadratureResult reference_tube_specular(const TubeLightD& light, dvec3 p, dvec3 n, const SpecularLobe& lobe,
+                                         double rel_tol) {
+  return tube_integral(light, p, glm::normalize(n), rel_tol, &lobe);
+}
+
+QuadratureResult reference_rect_specular(const RectLightD& light, dvec3 p, dvec3 n, const SpecularLobe& lobe,
+                                         double rel_tol) {
+  return rect_integral(light, p, glm::normalize(n), rel_tol, &lobe);
 }
 
 }  // namespace lg

@@ -46,4 +46,24 @@ QuadratureResult reference_sphere_irradiance(const SphereLightD& light, glm::dve
 QuadratureResult reference_tube_irradiance(const TubeLightD& light, glm::dvec3 p, glm::dvec3 n, double rel_tol = 1e-10);
 QuadratureResult reference_rect_irradiance(const RectLightD& light, glm::dvec3 p, glm::dvec3 n, double rel_tol = 1e-10);
 
+// The GGX lobe of brdf.glsl without Fresnel or multiple scattering, f = D Vis, at unit view v
+// (toward the eye) and alpha (not floored here).
+struct SpecularLobe {
+  glm::dvec3 v;
+  double alpha;
+};
+
+// The radiance the lobe reflects toward v from the light, L x integral of f(v, l) (n.l) over the
+// directions l to the part of the light p sees, integrated as the irradiance above (the lobe a
+// weight on each direction). Each smooth interval is first cut into pieces about the lobe's
+// width (up to 32), so that a narrow lobe is found; the absolute floor is 1e-3 rel_tol of the
+// most the lobe can gather (L min(1, (R / D)^2 / alpha^2)). Used by the specular accuracy tests
+// and lumagraph-bench-area-specular.
+QuadratureResult reference_sphere_specular(const SphereLightD& light, glm::dvec3 p, glm::dvec3 n,
+                                           const SpecularLobe& lobe, double rel_tol = 1e-6);
+QuadratureResult reference_tube_specular(const TubeLightD& light, glm::dvec3 p, glm::dvec3 n, const SpecularLobe& lobe,
+                                         double rel_tol = 1e-6);
+QuadratureResult reference_rect_specular(const RectLightD& light, glm::dvec3 p, glm::dvec3 n, const SpecularLobe& lobe,
+                                         double rel_tol = 1e-6);
+
 }  // namespace lg

@@ -39,7 +39,8 @@ class DeferredKernel final : public NodeKernel {
       : shadow_budget_(static_cast<uint32_t>(param_number(node, "shadow_budget"))),
         atlas_size_(static_cast<uint32_t>(param_number(node, "local_shadow_atlas_size"))),
         area_shadow_samples_(static_cast<uint32_t>(param_number(node, "area_shadow_samples"))),
-        cull_lights_(param_bool(node, "cull_lights")) {}
+        cull_lights_(param_bool(node, "cull_lights")),
+        area_specular_ltc_(param_string(node, "area_specular") == "ltc") {}
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
@@ -217,8 +218,10 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(5, color.view()));
     add_local_shadow_atlas(ctx, writes);
     lights_->add_area_lists(writes);
+    // Constant 1: area_lights.glsl's area_specular_ltc.
+    const uint32_t constants[] = {local_drawn_ ? 1u : 0u, area_specular_ltc_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height,
-                     {}, kTileSize, local_shadows_drawn());
+                     {}, kTileSize, constants);
   }
 
   // Specialization constant 0 of direct.comp and area.comp (shaders/local_shadow_atlas.glsl).
@@ -245,7 +248,7 @@ class DeferredKernel final : public NodeKernel {
   };
 
   const uint32_t shadow_budget_, atlas_size_, area_shadow_samples_;
-  const bool cull_lights_;
+  const bool cull_lights_, area_specular_ltc_;
   std::optional<LightBuffers> lights_;
   std::optional<HostBuffer> draws_;
   LightConstants constants_{};

@@ -56,7 +56,10 @@ LightBuffers::LightBuffers(Context& gpu, const std::string& id)
       spheres_(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       tubes_(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       rects_(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {}
+      shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      ltc_(gpu, id + " LTC table", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+  ltc_.write_value(ltc_table_texels());
+}
 
 void LightBuffers::write_lights(const SceneView& scene, int caster, const LocalShadows& local,
                                 LightConstants& constants_out) {
@@ -126,6 +129,7 @@ void LightBuffers::add_area_lists(std::vector<DescriptorWrite>& writes) const {
   writes.push_back(storage_buffer(16, spheres_.handle()));
   writes.push_back(storage_buffer(17, tubes_.handle()));
   writes.push_back(storage_buffer(18, rects_.handle()));
+  writes.push_back(storage_buffer(22, ltc_.handle()));
 }
 
 }  // namespace lg

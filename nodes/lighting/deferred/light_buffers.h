@@ -11,6 +11,7 @@
 #include "nodes/common/camera_constants.h"
 #include "nodes/env/brdf_lut/brdf_albedo.h"
 #include "nodes/lighting/deferred/local_shadows.h"
+#include "nodes/lighting/deferred/ltc_table.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/scene/scene_view.h"
@@ -42,8 +43,8 @@ class LightBuffers {
   void write_lights(const SceneView& scene, int caster, const LocalShadows& local, LightConstants& constants);
 
   // The constants at binding 0 and the lists at the bindings direct_lights.glsl,
-  // local_shadow_atlas.glsl and area_lights.glsl declare (the shadow map and atlas images are
-  // the caller's: 10 and 14).
+  // local_shadow_atlas.glsl and area_lights.glsl declare, the LTC table with the area lists
+  // (the shadow map and atlas images are the caller's: 10 and 14).
   void add_constants(std::vector<DescriptorWrite>& writes) const;
   void add_direct_lists(std::vector<DescriptorWrite>& writes) const;
   void add_shadow_views(std::vector<DescriptorWrite>& writes) const;
@@ -53,6 +54,7 @@ class LightBuffers {
 
  private:
   HostBuffer directional_, points_, spots_, spheres_, tubes_, rects_, shadow_views_;
+  HostBuffer ltc_;  // ltc_table_texels(), written once
 };
 
 }  // namespace lg

@@ -1,13 +1,15 @@
 // Sphere, tube and rectangle lights on a surface: exact diffuse irradiance
-// (area_light_formulas.glsl) and representative-point GGX specular with energy normalisation
+// (area_light_formulas.glsl) and GGX specular by linearly transformed cosines
+// (area_light_ltc.glsl) or by representative points with energy normalisation
 // (area_light_specular.glsl), both times the light's visibility from its shadow map
 // (area_shadows.glsl). lighting.deferred's area pass and scene.forward_transparent's surfaces;
-// bindings 16 to 18, the atlas at 14 and 15, the constants at 0 (lights.glsl).
+// bindings 16 to 18, the LTC table at 22, the atlas at 14 and 15, the constants at 0 (lights.glsl).
 #ifndef LG_AREA_LIGHTS_GLSL
 #define LG_AREA_LIGHTS_GLSL
 
 #include "nodes/common/shaders/brdf.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_formulas.glsl"
+#include "nodes/lighting/deferred/shaders/area_light_ltc.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_specular.glsl"
 #include "nodes/lighting/deferred/shaders/area_shadows.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
@@ -15,6 +17,13 @@
 layout(std430, binding = 16) readonly buffer Spheres { SphereLight spheres[]; };
 layout(std430, binding = 17) readonly buffer Tubes { TubeLight tubes[]; };
 layout(std430, binding = 18) readonly buffer Rects { RectLight rects[]; };
+layout(std430, binding = 22) readonly buffer Ltc { vec4 ltc_table[]; };
+
+#include "nodes/lighting/deferred/shaders/ltc_table.glsl"
+
+// lighting.deferred's area_specular: true for "ltc", false for "representative_point" (the
+// compiler drops the other); scene.forward_transparent keeps the default.
+layout(constant_id = 1) const bool area_specular_ltc = true;
 
 vec3 reflection_dir(Surface s) {
   return reflect(-s.view, s.normal);
@@ -32,6 +41,8 @@ vec3 area_specular(Surface s, RepresentativePoint rp, vec3 radiance, float area)
 vec3 area_radiance(Surface s) {
   vec3 diffuse_brdf = s.diffuse_color / LG_PI;
   vec3 r = reflection_dir(s);
+  // alpha = roughness^2 above its floor, where the table's entries are alike.
+  vec4 ltc = ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha));
   vec3 added = vec3(0.0);
   for (uint i = 0; i < counts.z; ++i) {
     SphereLight l = spheres[i];
@@ -39,6 +50,10 @@ vec3 area_radiance(Surface s) {
     float radius = l.center_radius.w;
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, sphere_extent(radius, normalize(s.position - c)));
     added += diffuse_brdf * radiance * sphere_irradiance(c, radius, s.position, s.normal);
+    if (area_specular_ltc) {
+      added += radiance * s.specular_albedo * ltc_sphere_specular(c, radius, s.position, s.normal, s.view, ltc);
+      continue;
+    }
     RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
     added += area_specular(s, rp, radiance, LG_PI * radius * radius);
   }
@@ -49,6 +64,10 @@ vec3 area_radiance(Surface s) {
     vec3 c = 0.5 * (a + b);
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.end1.w, c, tube_extent(a, b, radius, normalize(s.position - c)));
     added += diffuse_brdf * radiance * tube_irradiance(a, b, radius, s.position, s.normal);
+    if (area_specular_ltc) {
+      added += radiance * s.specular_albedo * ltc_tube_specular(a, b, radius, s.position, s.normal, s.view, ltc);
+      continue;
+    }
     RepresentativePoint rp = tube_specular_point(a, b, radius, s.position, r, s.alpha);
     // Seen from the side a capsule shows its caps' disc and the cylinder's length x diameter.
     vec3 axis = b - a;
@@ -62,6 +81,10 @@ vec3 area_radiance(Surface s) {
     bool two_sided = l.center_two_sided.w > 0.0;
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, rect_extent(hx, hy, normalize(s.position - c)));
     added += diffuse_brdf * radiance * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
+    if (area_specular_ltc) {
+      added += radiance * s.specular_albedo * ltc_rect_specular(c, hx, hy, two_sided, s.position, s.normal, s.view, ltc);
+      continue;
+    }
     RepresentativePoint rp = rect_specular_point(c, hx, hy, two_sided, s.position, r, s.alpha);
     vec3 normal = cross(hx, hy);
     float facing = abs(dot(normalize(normal), rp.direction));

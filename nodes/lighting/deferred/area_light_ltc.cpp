@@ -1,0 +1,179 @@
+#include "nodes/lighting/deferred/area_light_ltc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "nodes/lighting/deferred/area_light_math.h"
+#include "nodes/lighting/deferred/ltc_table.h"
+
+namespace lg {
+namespace {
+
+using glm::vec3;
+
+vec3 any_perpendicular(vec3 n) {
+  return glm::normalize(glm::cross(n, std::fabs(n.x) < 0.7f ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f)));
+}
+
+float specular_result(float radiance, float integral) {
+  return finite_or_zero(std::max(radiance, 0.0f) * clamp01(finite_or_zero(integral)));
+}
+
+}  // namespace
+
+glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
+  n = glm::normalize(n);
+  vec3 t1 = v - n * glm::dot(n, v);
+  const float len = glm::length(t1);
+  // Seen straight on, any tangent serves: the lobe is round there.
+  t1 = len > 1e-6f ? t1 / len : any_perpendicular(n);
+  const vec3 t2 = glm::cross(n, t1);
+  return ltc_inverse(entry) * glm::transpose(glm::mat3(t1, t2, n));
+}
+
+namespace {
+
+// The Lambert formula's term of edge a-b: its angle times the z of its unit normal.
+float edge_term(vec3 a, vec3 b) {
+  const vec3 e0 = glm::normalize(a), e1 = glm::normalize(b);
+  const vec3 c = glm::cross(e0, e1);
+  const float s = glm::length(c);
+  // atan2 keeps the angle exact for short edges, where acos of the dot product loses it.
+  return s > 0.0f ? c.z * std::atan2(s, glm::dot(e0, e1)) / s : 0.0f;
+}
+
+// Where edge a-b crosses the plane through the origin with normal m (da, db: a's and b's
+// distances along m, of opposite signs).
+vec3 crossing(vec3 a, vec3 b, float da, float db) {
+  return a + (b - a) * (da / (da - db));
+}
+
+}  // namespace
+
+void ltc_add_cosine_edge(LtcCosineClip& c, vec3 a, vec3 b) {
+  if (a.z > 0.0f && b.z > 0.0f) {
+    c.sum += edge_term(a, b);
+  } else if (a.z > 0.0f) {
+    c.exit = crossing(a, b, a.z, b.z);
+    c.exited = true;
+    c.sum += edge_term(a, c.exit);
+  } else if (b.z > 0.0f) {
+    c.entry = crossing(a, b, a.z, b.z);
+    c.entered = true;
+    c.sum += edge_term(c.entry, b);
+  }
+}
+
+void ltc_add_edge(LtcPolygon& poly, vec3 a, vec3 b) {
+  const float da = glm::dot(poly.n, a), db = glm::dot(poly.n, b);
+  if (da > 0.0f && db > 0.0f) {
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
+  } else if (da > 0.0f) {
+    poly.exit = crossing(a, b, da, db);
+    poly.exited = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit);
+  } else if (db > 0.0f) {
+    poly.entry = crossing(a, b, da, db);
+    poly.entered = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
+  }
+}
+
+float ltc_finish(LtcPolygon& poly) {
+  if (poly.exited && poly.entered)
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit, poly.to_cosine * poly.entry);
+  LtcCosineClip& c = poly.cosine;
+  if (c.exited && c.entered) c.sum += edge_term(c.exit, c.entry);
+  return std::fabs(c.sum) / (2.0f * kAreaLightPi);
+}
+
+LtcPolygon ltc_polygon(vec3 n, vec3 v, glm::vec4 entry) {
+  LtcPolygon poly;
+  poly.n = glm::normalize(n);
+  poly.to_cosine = ltc_to_cosine(n, v, entry);
+  return poly;
+}
+
+bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
+  const vec3 c = 0.5f * (a + b);
+  const float dc = glm::length(c);
+  if (!(dc > 0.0f) || !(radius > 0.0f)) return false;
+  const vec3 u = c / dc;
+  o.ends[0] = a, o.ends[1] = b;
+  for (int k = 0; k < 2; ++k) {
+    const vec3 e = o.ends[k];
+    // Along the ray to the end, onto the plane (an end beside or behind the point is held in front).
+    const float depth = std::max(glm::dot(e, u), 1e-3f * dc);
+    const float scale = dc / depth;
+    o.ends[k] = e * scale + u * (dc - glm::dot(e, u) * scale);
+    // Its sphere's cone has tan = r / sqrt(d^2 - r^2) (held finite inside the sphere); a half
+    // polygon of k segments inscribed in radius R has area k R^2 sin(pi / k) / 2, a half disk's
+    // pi r^2 / 2 when R = r sqrt(pi / (k sin(pi / k))).
+    const float d2 = glm::dot(e, e);
+    const float segments = float(kLtcArcSegments);
+    o.radii[k] = radius * std::sqrt(d2) * scale / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2)) *
+                 std::sqrt(kAreaLightPi / (segments * std::sin(kAreaLightPi / segments)));
+  }
+  const vec3 axis = o.ends[1] - o.ends[0];
+  const float len = glm::length(axis);
+  if (len > 1e-6f * dc) {
+    o.along = axis / len;
+  } else {
+    // A sphere, or a capsule seen end on: its outline is round; one half polygon's edge lies
+    // along the horizon's trace for symmetry.
+    const vec3 in_plane = n - u * glm::dot(n, u);
+    o.along = glm::length(in_plane) > 1e-6f ? glm::normalize(in_plane) : any_perpendicular(u);
+  }
+  o.side = glm::cross(u, o.along);
+  return true;
+}
+
+vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
+  // End 0's half circle faces away from end 1 (through -along), end 1's through +along.
+  const int half = j / (kLtcArcSegments + 1);
+  const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
+  const float angle = start + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);
+  return o.ends[half] + o.radii[half] * (std::cos(angle) * o.along + std::sin(angle) * o.side);
+}
+
+namespace {
+
+float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
+  LtcOutline o;
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0f;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 previous = ltc_outline_vertex(o, kLtcOutlineVertices - 1);
+  for (int j = 0; j < kLtcOutlineVertices; ++j) {
+    const vec3 next = ltc_outline_vertex(o, j);
+    ltc_add_edge(poly, previous, next);
+    previous = next;
+  }
+  return ltc_finish(poly);
+}
+
+}  // namespace
+
+float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
+  const vec3 c = light.center - p;
+  return specular_result(light.radiance, capsule_integral(c, c, light.radius, n, v, entry));
+}
+
+float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
+  return specular_result(light.radiance, capsule_integral(light.end0 - p, light.end1 - p, light.radius, n, v, entry));
+}
+
+float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
+  const vec3 c = light.center - p;
+  const vec3 normal = glm::cross(light.half_x, light.half_y);
+  // A one-sided light shines on points in front of it only; its plane holds none.
+  if (!light.two_sided && !(glm::dot(c, normal) < 0.0f)) return 0.0f;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  const vec3 corners[4] = {c - light.half_x - light.half_y, c + light.half_x - light.half_y,
+                           c + light.half_x + light.half_y, c - light.half_x + light.half_y};
+  for (int i = 0; i < 4; ++i) ltc_add_edge(poly, corners[i], corners[(i + 1) % 4]);
+  return specular_result(light.radiance, ltc_finish(poly));
+}
+
+}  // namespace lg

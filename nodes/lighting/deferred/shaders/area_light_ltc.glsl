@@ -1,0 +1,182 @@
+// Area-light specular by linearly transformed cosines: the GLSL twin of area_light_ltc.cpp (which
+// states the method). Each returns I, the fraction of the GGX lobe's energy the light covers (the
+// caller multiplies by the radiance); `entry` is ltc_lookup(n.v, roughness) (ltc_table.glsl).
+#ifndef LG_AREA_LIGHT_LTC_GLSL
+#define LG_AREA_LIGHT_LTC_GLSL
+
+#include "nodes/lighting/deferred/shaders/area_light_math.glsl"
+
+const int LG_LTC_ARC_SEGMENTS = 4;
+const int LG_LTC_OUTLINE_VERTICES = 2 * (LG_LTC_ARC_SEGMENTS + 1);
+
+vec3 ltc_any_perpendicular(vec3 n) {
+  return normalize(cross(n, abs(n.x) < 0.7 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+}
+
+float ltc_specular_result(float integral) {
+  return clamp(finite_or_zero(integral), 0.0, 1.0);
+}
+
+mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
+  n = normalize(n);
+  vec3 t1 = v - n * dot(n, v);
+  float len = length(t1);
+  t1 = len > 1e-6 ? t1 / len : ltc_any_perpendicular(n);
+  vec3 t2 = cross(n, t1);
+  mat3 m_inv = mat3(vec3(e.x, 0.0, e.z), vec3(0.0, 1.0, 0.0), vec3(e.y, 0.0, e.w));
+  return m_inv * transpose(mat3(t1, t2, n));
+}
+
+float ltc_edge_term(vec3 a, vec3 b) {
+  vec3 e0 = normalize(a), e1 = normalize(b);
+  vec3 c = cross(e0, e1);
+  float s = length(c);
+  return s > 0.0 ? c.z * atan(s, dot(e0, e1)) / s : 0.0;
+}
+
+vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
+  return a + (b - a) * (da / (da - db));
+}
+
+struct LtcCosineClip {
+  float sum;
+  vec3 exit_;
+  vec3 entry;
+  bool exited;
+  bool entered;
+};
+
+struct LtcPolygon {
+  vec3 n;
+  mat3 to_cosine;
+  vec3 exit_;
+  vec3 entry;
+  bool exited;
+  bool entered;
+  LtcCosineClip cosine;
+};
+
+LtcPolygon ltc_polygon(vec3 n, vec3 v, vec4 entry) {
+  LtcCosineClip c = LtcCosineClip(0.0, vec3(0.0), vec3(0.0), false, false);
+  return LtcPolygon(normalize(n), ltc_to_cosine(n, v, entry), vec3(0.0), vec3(0.0), false, false, c);
+}
+
+void ltc_add_cosine_edge(inout LtcCosineClip c, vec3 a, vec3 b) {
+  if (a.z > 0.0 && b.z > 0.0) {
+    c.sum += ltc_edge_term(a, b);
+  } else if (a.z > 0.0) {
+    c.exit_ = ltc_crossing(a, b, a.z, b.z);
+    c.exited = true;
+    c.sum += ltc_edge_term(a, c.exit_);
+  } else if (b.z > 0.0) {
+    c.entry = ltc_crossing(a, b, a.z, b.z);
+    c.entered = true;
+    c.sum += ltc_edge_term(c.entry, b);
+  }
+}
+
+void ltc_add_edge(inout LtcPolygon poly, vec3 a, vec3 b) {
+  float da = dot(poly.n, a), db = dot(poly.n, b);
+  if (da > 0.0 && db > 0.0) {
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
+  } else if (da > 0.0) {
+    poly.exit_ = ltc_crossing(a, b, da, db);
+    poly.exited = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit_);
+  } else if (db > 0.0) {
+    poly.entry = ltc_crossing(a, b, da, db);
+    poly.entered = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
+  }
+}
+
+float ltc_finish(inout LtcPolygon poly) {
+  if (poly.exited && poly.entered)
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * poly.entry);
+  if (poly.cosine.exited && poly.cosine.entered) poly.cosine.sum += ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  return abs(poly.cosine.sum) / (2.0 * LG_PI);
+}
+
+struct LtcOutline {
+  vec3 end0;
+  vec3 end1;
+  float radius0;
+  float radius1;
+  vec3 along;
+  vec3 side;
+};
+
+bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o) {
+  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0));
+  vec3 c = 0.5 * (a + b);
+  float dc = length(c);
+  if (!(dc > 0.0) || !(radius > 0.0)) return false;
+  vec3 u = c / dc;
+  float segments = float(LG_LTC_ARC_SEGMENTS);
+  float grow = sqrt(LG_PI / (segments * sin(LG_PI / segments)));
+  float depth = max(dot(a, u), 1e-3 * dc);
+  float scale = dc / depth;
+  o.end0 = a * scale + u * (dc - dot(a, u) * scale);
+  float d2 = dot(a, a);
+  o.radius0 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
+  depth = max(dot(b, u), 1e-3 * dc);
+  scale = dc / depth;
+  o.end1 = b * scale + u * (dc - dot(b, u) * scale);
+  d2 = dot(b, b);
+  o.radius1 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
+  vec3 axis = o.end1 - o.end0;
+  float len = length(axis);
+  if (len > 1e-6 * dc) {
+    o.along = axis / len;
+  } else {
+    vec3 in_plane = n - u * dot(n, u);
+    o.along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
+  }
+  o.side = cross(u, o.along);
+  return true;
+}
+
+vec3 ltc_outline_vertex(LtcOutline o, int j) {
+  int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
+  float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
+  float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
+  vec3 offset = cos(angle) * o.along + sin(angle) * o.side;
+  return half_ == 0 ? o.end0 + o.radius0 * offset : o.end1 + o.radius1 * offset;
+}
+
+float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
+  LtcOutline o;
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 previous = ltc_outline_vertex(o, LG_LTC_OUTLINE_VERTICES - 1);
+  for (int j = 0; j < LG_LTC_OUTLINE_VERTICES; ++j) {
+    vec3 next = ltc_outline_vertex(o, j);
+    ltc_add_edge(poly, previous, next);
+    previous = next;
+  }
+  return ltc_finish(poly);
+}
+
+float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
+  vec3 c = center - p;
+  return ltc_specular_result(ltc_capsule_integral(c, c, radius, n, v, entry));
+}
+
+float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
+  return ltc_specular_result(ltc_capsule_integral(end0 - p, end1 - p, radius, n, v, entry));
+}
+
+float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, vec4 entry) {
+  vec3 c = center - p;
+  vec3 normal = cross(hx, hy);
+  if (!two_sided && !(dot(c, normal) < 0.0)) return 0.0;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 c0 = c - hx - hy, c1 = c + hx - hy, c2 = c + hx + hy, c3 = c - hx + hy;
+  ltc_add_edge(poly, c0, c1);
+  ltc_add_edge(poly, c1, c2);
+  ltc_add_edge(poly, c2, c3);
+  ltc_add_edge(poly, c3, c0);
+  return ltc_specular_result(ltc_finish(poly));
+}
+
+#endif

@@ -1,0 +1,23 @@
+// The LTC table of nodes/lighting/deferred/ltc_table.h (fitted by lumagraph-ltc-fit), read
+// bilinearly as ltc_lookup does on the CPU. Include it after declaring `vec4 ltc_table[]` in a
+// buffer, one entry a vec4, filled from ltc_table_texels() (area_lights.glsl binds it at 19).
+#ifndef LG_LTC_TABLE_GLSL
+#define LG_LTC_TABLE_GLSL
+
+const int LG_LTC_SIZE = 32;
+
+vec4 ltc_entry(int i, int j) {
+  return ltc_table[j * LG_LTC_SIZE + i];
+}
+
+vec4 ltc_lookup(float n_dot_v, float roughness) {
+  const int last = LG_LTC_SIZE - 1;
+  vec2 at = vec2(sqrt(1.0 - clamp(n_dot_v, 0.0, 1.0)), clamp(roughness, 0.0, 1.0)) * float(last);
+  ivec2 i0 = min(ivec2(at), ivec2(last - 1));
+  vec2 f = at - vec2(i0);
+  vec4 low = mix(ltc_entry(i0.x, i0.y), ltc_entry(i0.x + 1, i0.y), f.x);
+  vec4 high = mix(ltc_entry(i0.x, i0.y + 1), ltc_entry(i0.x + 1, i0.y + 1), f.x);
+  return mix(low, high, f.y);
+}
+
+#endif
