@@ -72,7 +72,8 @@ HostImage convolve_separable(const HostImage& image, const std::vector<double>& 
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c) {
         double sum = 0;
-        for (int i = -r; i <= r; ++i) sum += kernel[i + r] * image.rgba[(size_t(y) * w + std::clamp(x + i, 0, w - 1)) * 4 + c];
+        for (int i = -r; i <= r; ++i)
+          sum += kernel[i + r] * image.rgba[(size_t(y) * w + std::clamp(x + i, 0, w - 1)) * 4 + c];
         rows[(size_t(y) * w + x) * 3 + c] = sum;
       }
   HostImage out = image;
@@ -80,7 +81,8 @@ HostImage convolve_separable(const HostImage& image, const std::vector<double>& 
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c) {
         double sum = 0;
-        for (int i = -r; i <= r; ++i) sum += kernel[i + r] * rows[(size_t(std::clamp(y + i, 0, h - 1)) * w + x) * 3 + c];
+        for (int i = -r; i <= r; ++i)
+          sum += kernel[i + r] * rows[(size_t(std::clamp(y + i, 0, h - 1)) * w + x) * 3 + c];
         out.rgba[(size_t(y) * w + x) * 4 + c] = float(sum);
       }
   return out;

@@ -1,6 +1,8 @@
 // post.bloom against the direct convolution with its stated kernel (tests/post/bloom_reference.h),
 // intensity 1 and threshold 0, so that its output is the bloom term itself. The energy test is
 // beside the example renders (tests/render/examples_test.cpp).
+#include "tests/post/bloom_reference.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <random>
 
 #include "runtime/gpu/context.h"
-#include "tests/post/bloom_reference.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -101,7 +102,8 @@ TEST(BloomReference, MatchesTheDirectConvolutionOnRandomRadiance) {
     gpu_total += gpu[k], reference_total += reference.rgba[k];
   }
   const double relative_rms = std::sqrt(difference / norm);
-  std::printf("seed %u: relative RMS %.4f, total %.5f of the reference's\n", seed, relative_rms, gpu_total / reference_total);
+  std::printf("seed %u: relative RMS %.4f, total %.5f of the reference's\n", seed, relative_rms,
+              gpu_total / reference_total);
   EXPECT_LT(relative_rms, 0.22) << "seed " << seed;
   EXPECT_NEAR(gpu_total / reference_total, 1.0, 0.002) << "seed " << seed;
   auto messages = context().take_validation_messages();

@@ -13,7 +13,8 @@ Graph ibl_graph(std::string_view dof_params) {
       { "id": "sh", "type": "env.sh_project", "params": { "order": 2, "convolve_cosine": true } },
       { "id": "specular", "type": "env.specular_prefilter" }, { "id": "dfg", "type": "env.brdf_lut" },
       { "id": "light", "type": "lighting.deferred" }, { "id": "ibl", "type": "lighting.ibl" })";
-  if (!dof_params.empty()) text += R"(, { "id": "dof", "type": "post.dof", "params": )" + std::string(dof_params) + " }";
+  if (!dof_params.empty())
+    text += R"(, { "id": "dof", "type": "post.dof", "params": )" + std::string(dof_params) + " }";
   text += R"( ], "links": [
       { "from": "sky.cube", "to": "sh.env" }, { "from": "sky.cube", "to": "specular.env" },
       { "from": "gbuf.gbuffer", "to": "light.gbuffer" }, { "from": "gbuf.gbuffer", "to": "ibl.gbuffer" },

@@ -23,8 +23,9 @@ struct Push {  // shaders/dof_constants.glsl
 // pixels, whatever the sensor's size. It is exactly the spread of pinhole views taken over the
 // aperture disc and re-aimed at the focus plane (tests/post/thin_lens_reference.h).
 Push lens(const CameraView& camera, float max_blur, uint32_t samples, uint32_t height) {
-  const float pixels_per_radian_slope = 0.5f * float(height) / std::tan(0.5f * camera.vertical_fov);
-  return {0.5f * camera.aperture * pixels_per_radian_slope, camera.focus_distance, camera.near_plane, max_blur, samples};
+  const float image_distance_pixels = 0.5f * float(height) / std::tan(0.5f * camera.vertical_fov);
+  const float coc_scale = 0.5f * camera.aperture * image_distance_pixels;  // a radius
+  return {coc_scale, camera.focus_distance, camera.near_plane, max_blur, samples};
 }
 
 class DofKernel final : public NodeKernel {
