@@ -77,6 +77,12 @@ int nodes_command(const std::vector<std::string>& argv) {
     for (const auto& p : s->outputs) std::printf("  out %-14s %s\n", p.name.c_str(), p.type.name().c_str());
     if (!s->params.empty()) std::printf("  params:\n");
     for (const auto& p : s->params) std::fputs(param_line(p).c_str(), stdout);
+    for (const ParamPreset& preset : s->presets) {
+      std::string values;
+      for (const auto& [param, value] : preset.values)
+        values += (values.empty() ? "" : ", ") + s->params[param].name + " = " + write_json_compact(value);
+      std::printf("  preset %s (%s): %s\n", preset.name.c_str(), values.c_str(), preset.doc.c_str());
+    }
     std::printf("\n");
   }
   return exit_ok;

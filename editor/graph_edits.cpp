@@ -103,6 +103,22 @@ void set_param(Graph& graph, std::string_view node, const std::string& name, con
     n->params.set(name, value);
 }
 
+void apply_preset(Graph& graph, std::string_view node, const NodeSchema& schema, const ParamPreset& preset) {
+  for (const auto& [param, value] : preset.values) set_param(graph, node, schema.params[param].name, value);
+}
+
+int matching_preset(const GraphNode& node, const NodeSchema& schema) {
+  for (size_t k = 0; k < schema.presets.size(); ++k) {
+    const bool all = std::all_of(schema.presets[k].values.begin(), schema.presets[k].values.end(), [&](const auto& v) {
+      const ParamSpec& spec = schema.params[v.first];
+      const JsonValue* set = node.params.find(spec.name);
+      return (set ? *set : spec.default_value) == v.second;
+    });
+    if (all) return int(k);
+  }
+  return -1;
+}
+
 Graph extract_nodes(const Graph& graph, const std::set<std::string>& ids) {
   Graph part;
   part.name = graph.name;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "graph/graph.h"
+#include "graph/schema.h"
 
 namespace lg::editor {
 
@@ -39,6 +40,12 @@ void remove_link(Graph& graph, const PortRef& from, const PortRef& to);
 
 // Sets a param as written in the file; a null value removes it (the schema default applies).
 void set_param(Graph& graph, std::string_view node, const std::string& name, const JsonValue& value);
+
+// Sets every param of `preset` (one of the node's schema's) on the node.
+void apply_preset(Graph& graph, std::string_view node, const NodeSchema& schema, const ParamPreset& preset);
+// The index in schema.presets of the first preset whose values the node holds (set in the file or
+// by default), or -1: the node's params are not any preset's.
+int matching_preset(const GraphNode& node, const NodeSchema& schema);
 
 // The nodes `ids`, the links between them and their positions, as a graph of its own.
 Graph extract_nodes(const Graph& graph, const std::set<std::string>& ids);

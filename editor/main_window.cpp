@@ -94,6 +94,7 @@ MainWindow::MainWindow(bool interactive, QWidget* parent)
   connect(canvas_, &Canvas::menu_requested, this, &MainWindow::show_menu);
   connect(canvas_, &Canvas::selection_changed, this, &MainWindow::show_selection);
   connect(params_, &ParamPanel::param_edited, this, &MainWindow::set_param);
+  connect(params_, &ParamPanel::preset_chosen, this, &MainWindow::apply_preset);
   connect(inspector_, &InspectorWidget::save_probes_requested, this, &MainWindow::save_live_probes_dialog);
   // A dynamic volume changes without edits: the preview renders again, at most twice a second.
   live_timer_->setSingleShot(true);
@@ -488,6 +489,15 @@ void MainWindow::set_param(const std::string& node, const std::string& param, co
   editor::set_param(graph, node, param, value);
   const QString name = text_of(node + '.' + param);
   doc_->edit(std::move(graph), value.is_null() ? tr("Reset %1").arg(name) : tr("Set %1").arg(name), name);
+}
+
+void MainWindow::apply_preset(const std::string& node, int index) {
+  const GraphNode* n = find_node(doc_->graph(), node);
+  const NodeSchema* schema = n ? builtin_registry().find(n->type) : nullptr;
+  if (!schema || index < 0 || size_t(index) >= schema->presets.size()) return;
+  Graph graph = doc_->graph();
+  editor::apply_preset(graph, node, *schema, schema->presets[index]);
+  doc_->edit(std::move(graph), tr("Preset %1 on %2").arg(text_of(schema->presets[index].name), text_of(node)));
 }
 
 void MainWindow::delete_selection() {

@@ -85,6 +85,7 @@ class MainWindow : public QMainWindow {
   void edit_links(const std::vector<Link>& added, const std::vector<Link>& removed);
   void move_nodes(const std::map<std::string, Position>& positions);
   void set_param(const std::string& node, const std::string& param, const JsonValue& value);
+  void apply_preset(const std::string& node, int index);
   void show_menu(Position at, QPoint global);
   void request_preview();
   void show_preview(const PreviewImage& image, const QString& error, double milliseconds);

@@ -1,18 +1,28 @@
 #include "editor/param_panel.h"
 
+#include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QStringList>
 #include <QToolButton>
 #include <QVBoxLayout>
 
 #include "editor/graph_edits.h"
+#include "graph/json_writer.h"
 
 namespace lg::editor {
 
 static QString text_of(const std::string& s) {
   return QString::fromStdString(s);
+}
+
+static QString tooltip_of(const NodeSchema& schema, const ParamPreset& preset) {
+  QStringList values;
+  for (const auto& [param, value] : preset.values)
+    values << QStringLiteral("%1 = %2").arg(text_of(schema.params[param].name), text_of(write_json_compact(value)));
+  return text_of(preset.doc) + QStringLiteral("\n") + values.join(QStringLiteral(", "));
 }
 
 static QString tooltip_of(const ParamSpec& spec) {
@@ -52,6 +62,7 @@ void ParamPanel::show_node(const Graph& graph, const std::string& id, const std:
   if (!node || node->id != node_id_ || node->type != node_type_) rebuild(graph, node);
   if (!node) return;
   const NodeSchema* schema = registry_.find(node->type);
+  if (presets_ && schema) presets_->setCurrentIndex(matching_preset(*node, *schema) + 1);
   std::map<std::string, QString> wrong;
   for (const Problem& p : problems)
     if (p.node == id)
@@ -73,6 +84,7 @@ void ParamPanel::show_node(const Graph& graph, const std::string& id, const std:
 void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
   delete form_host_;
   form_host_ = nullptr;
+  presets_ = nullptr;
   editors_.clear();
   resets_.clear();
   labels_.clear();
@@ -92,6 +104,21 @@ void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
   form_ = new QFormLayout(form_host_);
   form_->setContentsMargins(0, 8, 0, 0);
   form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+  if (!schema->presets.empty()) {
+    presets_ = new QComboBox(form_host_);
+    presets_->addItem(tr("custom"));
+    presets_->setItemData(0, tr("The params match no preset."), Qt::ToolTipRole);
+    for (const ParamPreset& preset : schema->presets) {
+      presets_->addItem(text_of(preset.name));
+      presets_->setItemData(presets_->count() - 1, tooltip_of(*schema, preset), Qt::ToolTipRole);
+    }
+    presets_->setToolTip(tr("Sets the params a preset names, as one edit."));
+    // activated: the user's choice only, not the panel following the document.
+    connect(presets_, qOverload<int>(&QComboBox::activated), this, [this](int item) {
+      if (item > 0) emit preset_chosen(node_id_, item - 1);
+    });
+    form_->addRow(new QLabel(tr("preset"), form_host_), presets_);
+  }
   const QString dir = graph.file.empty() ? QString() : QFileInfo(text_of(graph.file)).absolutePath();
   for (const ParamSpec& spec : schema->params) {
     ParamEditor* editor = make_param_editor(spec, dir, form_host_);

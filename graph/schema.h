@@ -119,6 +119,13 @@ struct LinkRequirement {
   std::string reason;                    // why, for the message
 };
 
+// A named set of param values that trades time for error (the editor offers them as one edit);
+// `doc` says what the choice costs and buys, with the benchmark numbers behind it.
+struct ParamPreset {
+  std::string name, doc;
+  std::vector<std::pair<int, JsonValue>> values;  // param index, value (valid for that param)
+};
+
 struct NodeSchema {
   std::string type;      // "post.bloom"
   std::string category;  // "post"
@@ -129,6 +136,7 @@ struct NodeSchema {
   std::vector<PassSpec> passes;
   std::vector<BypassRule> bypass;
   std::vector<LinkRequirement> requires_linked;
+  std::vector<ParamPreset> presets;
   bool is_static = false;  // result depends only on params and static inputs: cached across frames
   bool is_output = false;  // a sink: its inputs are results of the frame
   // An input whose pixel grid the camera is jittered on, sub-pixel, while the node runs

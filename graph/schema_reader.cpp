@@ -4,6 +4,7 @@
 #include <functional>
 #include <span>
 
+#include "graph/compiler/validate.h"
 #include "graph/json_reader.h"
 
 namespace lg {
@@ -17,7 +18,7 @@ class SchemaReader {
     if (!expect_object(root, "")) return;
     check_keys(root, "",
                {"type", "doc", "static", "output", "camera_jitter", "inputs", "outputs", "resources", "params",
-                "passes", "bypass", "requires"});
+                "passes", "bypass", "requires", "presets"});
     s_.type = string_at(root, "", "type", true);
     s_.category = s_.type.substr(0, s_.type.find('.'));
     s_.doc = string_at(root, "", "doc", true);
@@ -27,6 +28,7 @@ class SchemaReader {
     if (const JsonValue* params = root.find("params"); params && params->is_array())
       for (size_t k = 0; k < params->items().size(); ++k)
         ordering(params->items()[k], json_pointer_append("/params", k));
+    each(root, "presets", [&](const JsonValue& v, const std::string& p) { preset(v, p); });
     each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, true)); });
     camera_jitter(root);
     each(root, "outputs", [&](const JsonValue& v, const std::string& p) { s_.outputs.push_back(port(v, p, false)); });
@@ -168,6 +170,34 @@ class SchemaReader {
     if (mine.is_number() && theirs.is_number() && !(mine.as_number() < theirs.as_number()))
       d_.error(other->pos(), lp, "the default must be below '" + other->as_string() + "''s default");
     spec.less_than = index;
+  }
+
+  // {"name", "doc", "params": {PARAM: VALUE, ...}}: each value valid for its param, names unique.
+  void preset(const JsonValue& v, const std::string& p) {
+    check_keys(v, p, {"name", "doc", "params"});
+    ParamPreset preset;
+    preset.name = string_at(v, p, "name", true);
+    preset.doc = string_at(v, p, "doc", true);
+    for (const ParamPreset& other : s_.presets)
+      if (!preset.name.empty() && other.name == preset.name)
+        d_.error(v.find("name")->pos(), json_pointer_append(p, "name"), "a second preset named '" + preset.name + "'");
+    const JsonValue* params = v.find("params");
+    const std::string pp = json_pointer_append(p, "params");
+    if (!params || !params->is_object() || params->members().empty()) {
+      d_.error(params ? params->pos() : v.pos(), pp, "expected an object of param values, at least one");
+    } else {
+      for (const auto& [name, value] : params->members()) {
+        const int index = s_.find_param(name);
+        if (index < 0) {
+          d_.error(value.pos(), json_pointer_append(pp, name), "no param named '" + name + "'");
+        } else if (std::string expected = check_param_value(s_.params[index], value); !expected.empty()) {
+          d_.error(value.pos(), json_pointer_append(pp, name), "expected " + expected);
+        } else {
+          preset.values.emplace_back(index, value);
+        }
+      }
+    }
+    s_.presets.push_back(std::move(preset));
   }
 
   PortSpec port(const JsonValue& v, const std::string& p, bool is_input) {

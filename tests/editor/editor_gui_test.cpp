@@ -41,6 +41,7 @@
 #include "api/renderer.h"
 #include "runtime/scene/default_world.h"
 #include "graph/graph_io.h"
+#include "nodes/builtin_schemas.h"
 #include "qt_app.h"
 
 namespace lg::editor {
@@ -155,6 +156,38 @@ TEST_F(EditorTest, ParamEditsUndoAndRedo) {
   EXPECT_DOUBLE_EQ(spin->value(), -1.5);  // the panel follows the document
   undo->redo();
   EXPECT_EQ(*find_node(graph(), "tonemap")->params.find("exposure"), JsonValue(2.0));
+  EXPECT_FALSE(window->validation().has_errors());
+}
+
+// A node whose schema lists presets shows them in a combo above its params; choosing one sets
+// every param it names as one undoable step, and the combo follows the document both ways.
+TEST_F(EditorTest, APresetSetsItsParamsAsOneUndoableEdit) {
+  ASSERT_TRUE(window->open_file(example("post.json")));
+  settle();
+  window->canvas()->select_nodes({"dof"});
+  settle();
+  QComboBox* presets = window->params()->presets();
+  ASSERT_TRUE(presets);
+  const NodeSchema* schema = builtin_registry().find("post.dof");
+  ASSERT_EQ(presets->count(), int(schema->presets.size()) + 1);
+  const JsonValue before = find_node(graph(), "dof")->params;
+  const int shown = presets->currentIndex();
+  EXPECT_EQ(shown, matching_preset(*find_node(graph(), "dof"), *schema) + 1);
+  const int chosen = shown == 1 ? 2 : 1;
+  emit presets->activated(chosen);  // as a click on the item does
+  settle();
+  for (const auto& [param, value] : schema->presets[chosen - 1].values)
+    EXPECT_EQ(*find_node(graph(), "dof")->params.find(schema->params[param].name), value);
+  EXPECT_EQ(presets->currentIndex(), chosen);
+  QUndoStack* undo = window->document()->undo_stack();
+  EXPECT_EQ(undo->count(), 1);
+  undo->undo();
+  settle();
+  EXPECT_EQ(find_node(graph(), "dof")->params, before);
+  EXPECT_EQ(window->params()->presets()->currentIndex(), shown);
+  undo->redo();
+  settle();
+  EXPECT_EQ(window->params()->presets()->currentIndex(), chosen);
   EXPECT_FALSE(window->validation().has_errors());
 }
 

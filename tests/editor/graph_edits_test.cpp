@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "graph/graph_io.h"
+#include "nodes/builtin_schemas.h"
 
 namespace lg::editor {
 namespace {
@@ -54,6 +55,23 @@ TEST(GraphEdits, ParamsAreSetAndResetToTheDefault) {
   set_param(g, "tonemap", "exposure", JsonValue());
   EXPECT_EQ(find_node(g, "tonemap")->params.find("exposure"), nullptr);
   EXPECT_NE(find_node(g, "tonemap")->params.find("curve"), nullptr);
+}
+
+// A preset sets every param it names; the node then matches it, and matches none after one of
+// those params changes.
+TEST(GraphEdits, APresetSetsItsParamsAndTheNodeMatchesIt) {
+  Graph g = load("post.json");
+  const NodeSchema* schema = builtin_registry().find("post.bloom");
+  ASSERT_TRUE(schema);
+  ASSERT_GE(schema->presets.size(), 2u);
+  const ParamPreset& last = schema->presets.back();
+  apply_preset(g, "bloom", *schema, last);
+  for (const auto& [param, value] : last.values)
+    EXPECT_EQ(*find_node(g, "bloom")->params.find(schema->params[param].name), value);
+  EXPECT_EQ(matching_preset(*find_node(g, "bloom"), *schema), int(schema->presets.size()) - 1);
+  const std::string& first_param = schema->params[last.values.front().first].name;
+  set_param(g, "bloom", first_param, JsonValue(last.values.front().second.as_number() + 1));
+  EXPECT_EQ(matching_preset(*find_node(g, "bloom"), *schema), -1);
 }
 
 TEST(GraphEdits, PasteGivesFreshIdsKeepsInnerLinksAndOffsets) {

@@ -16,17 +16,16 @@ struct Push {  // shaders/dof_constants.glsl
   uint32_t samples;
 };
 
-// The camera's field of view is taken on a 35 mm full-frame sensor (24 mm tall), which fixes
-// the focal length; a thin lens of aperture A focused at F then gives a blur circle of
-// diameter A f F / (F - f) |1/F - 1/z| on the sensor.
-constexpr float kSensorHeight = 0.024f;
-
+// A thin lens of aperture diameter A focused at F, its sensor at the focus plane's image
+// distance v (what the field of view fixes: tan(fov / 2) = (S / 2) / v for a sensor S tall; the
+// focal length is then 1 / (1 / v + 1 / F)). A point at depth z blurs into a circle of diameter
+// A v |1 / F - 1 / z| on the sensor, h / S pixels a metre: A (h / 2) / tan(fov / 2) |1 / F - 1 / z|
+// pixels, whatever the sensor's size. It is exactly the spread of pinhole views taken over the
+// aperture disc and re-aimed at the focus plane (tests/post/thin_lens_reference.h).
 Push lens(const CameraView& camera, float max_blur, uint32_t samples, uint32_t height) {
-  const float f = 0.5f * kSensorHeight / std::tan(0.5f * camera.vertical_fov);
-  const float focus = std::max(camera.focus_distance, 1.01f * f);
-  const float diameter_per_inverse_metre = camera.aperture * f * focus / (focus - f);
-  const float pixels_per_metre = float(height) / kSensorHeight;
-  return {0.5f * diameter_per_inverse_metre * pixels_per_metre, focus, camera.near_plane, max_blur, samples};
+  const float image_distance_pixels = 0.5f * float(height) / std::tan(0.5f * camera.vertical_fov);
+  const float coc_scale = 0.5f * camera.aperture * image_distance_pixels;  // a radius
+  return {coc_scale, camera.focus_distance, camera.near_plane, max_blur, samples};
 }
 
 class DofKernel final : public NodeKernel {
