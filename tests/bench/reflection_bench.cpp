@@ -7,8 +7,8 @@
 // probes' face_size, SSR's max_steps and resolution_scale, the planar views' resolution_scale) gives
 // - its error: the specular term against the path tracer's specular AOV over the floor's and the
 //   ball's metal pixels (specular_error.h), at --size after --frames frames (SSR accumulates);
-// - its time: the GPU time of the reflection passes (probes/*, planar/*, ssr/*) at --time-size, median and
-//   fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
+// - its time: the GPU time of the reflection passes (probes/*, planar/*, ssr/*) at --time-size,
+//   median and fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
 //   work is CPU work) less the environment-only configuration's, which a loaded machine disturbs
 //   far less than the timestamps; and the first frame's extra host time over the later ones'
 //   median (the probes' capture and prefilter, whichever way the node captures).
@@ -252,8 +252,7 @@ const char* const usage =
     "usage: lumagraph-bench-reflections [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--time-size WxH]\n"
     "                                   [--frames N] [--time-frames N] [--paths N] [--faces A,B] [--steps A,B]\n"
     "                                   [--scales A,B] [--planar-scales A,B] [--worlds room,gallery] [--only TEXT]\n"
-    "                                   [--probe-params JSON]\n"
-    "                                   [--maps DIR] [--errors-only]\n"
+    "                                   [--probe-params JSON] [--maps DIR] [--errors-only]\n"
     "  --results-dir DIR   where the CSV files go (default bench-results)\n"
     "  --cache-dir DIR     where the references are kept (default BUILD/reflection-reference-cache)\n"
     "  --size WxH          size the error is measured at (default 320x180)\n"
