@@ -1,12 +1,14 @@
 // lumagraph-bench-reflections: issue 17's reflections, error against time, on lavapipe. On the
 // reflection room and the gallery with its floor polished (tests/lighting/reflection_worlds.h),
 // each configuration of examples/reflections.json (the environment only, probes without and with
-// parallax correction, SSR alone, SSR with the probes' fallback without and with it; quality knobs
-// swept: the probes' face_size, SSR's max_steps and resolution_scale) gives
+// parallax correction, SSR alone, SSR with the probes' fallback without and with it; and on a world
+// with planar reflectors (the gallery's floor), examples/planar-reflections.json's planar
+// reflections over the environment, over the probes and under SSR; quality knobs swept: the
+// probes' face_size, SSR's max_steps and resolution_scale, the planar views' resolution_scale) gives
 // - its error: the specular term against the path tracer's specular AOV over the floor's and the
 //   ball's metal pixels (specular_error.h), at --size after --frames frames (SSR accumulates);
-// - its time: the GPU time of the reflection passes (probes/*, ssr/*) at --time-size, median and
-//   fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
+// - its time: the GPU time of the reflection passes (probes/*, planar/*, ssr/*) at --time-size,
+//   median and fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
 //   work is CPU work) less the environment-only configuration's, which a loaded machine disturbs
 //   far less than the timestamps; and the first frame's extra host time over the later ones'
 //   median (the probes' capture and prefilter, whichever way the node captures).
@@ -43,7 +45,7 @@ struct Options {
   uint32_t time_width = 1280, time_height = 720;  // where the passes are timed
   int frames = 8, time_frames = 4;
   uint32_t paths = 1024;
-  std::vector<double> faces{16, 32, 64, 128}, steps{8, 16, 32, 64, 128}, scales{1};
+  std::vector<double> faces{16, 32, 64, 128}, steps{8, 16, 32, 64, 128}, scales{1}, planar_scales{1, 0.5, 0.25};
   std::string worlds = "room,gallery";
   std::string only;  // measure only the configurations whose label contains this
   std::string probe_params;
@@ -182,6 +184,12 @@ class Measurer {
   double environment_cpu_ms_ = 0;  // measured first
 };
 
+bool has_planar_reflector(const World& world) {
+  bool found = false;
+  world.each<MeshRenderer>([&](Entity, const MeshRenderer& r) { found = found || r.reflector_plane.has_value(); });
+  return found;
+}
+
 void measure_world(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
                    std::vector<Point>& points, std::ofstream& references) {
   // One small frame for the plan's environment, which the reference is lit by.
@@ -217,6 +225,11 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
                    .parallax = parallax,
                    .face_size = int(face),
                    .ssr_scale = scale});
+  // Elsewhere the planar node is bypassed: these would repeat the configurations above.
+  if (has_planar_reflector(w.world))
+    for (const ReflectionSource source :
+         {ReflectionSource::planar, ReflectionSource::planar_with_probes, ReflectionSource::planar_with_ssr})
+      for (const double scale : o.planar_scales) m.measure({.source = source, .planar_scale = scale});
   std::printf("\n");
   points.insert(points.end(), m.points.begin(), m.points.end());
 }
@@ -224,22 +237,22 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
 void write_points(const Options& o, const std::vector<Point>& points) {
   std::ofstream csv(o.results_dir + "/reflection_points.csv");
   csv << "world,source,parallax,face_size,max_steps,ssr_scale,median_ms,min_ms,frame_ms,first_frame_extra_ms,"
-         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms\n";
+         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms,planar_scale\n";
   for (const Point& p : points) {
     const ReflectionConfig& c = p.config;
     csv << p.world << ',' << test::reflection_source_name(c.source) << ',' << c.parallax << ',' << c.face_size << ','
         << c.max_steps << ',' << (c.ssr_scale > 0 ? c.ssr_scale : 1.0) << ',' << p.median_ms << ',' << p.min_ms << ','
         << p.frame_ms << ',' << p.first_extra_ms << ',' << p.all.relative << ',' << p.floor.relative << ','
         << p.ball.relative << ',' << p.floor.pixels << ',' << p.ball.pixels << ',' << p.all.noise << ','
-        << test::config_label(c) << ',' << p.cpu_ms << '\n';
+        << test::config_label(c) << ',' << p.cpu_ms << ',' << (c.planar_scale > 0 ? c.planar_scale : 0.0) << '\n';
   }
 }
 
 const char* const usage =
     "usage: lumagraph-bench-reflections [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--time-size WxH]\n"
     "                                   [--frames N] [--time-frames N] [--paths N] [--faces A,B] [--steps A,B]\n"
-    "                                   [--scales A,B] [--worlds room,gallery] [--only TEXT] [--probe-params JSON]\n"
-    "                                   [--maps DIR] [--errors-only]\n"
+    "                                   [--scales A,B] [--planar-scales A,B] [--worlds room,gallery] [--only TEXT]\n"
+    "                                   [--probe-params JSON] [--maps DIR] [--errors-only]\n"
     "  --results-dir DIR   where the CSV files go (default bench-results)\n"
     "  --cache-dir DIR     where the references are kept (default BUILD/reflection-reference-cache)\n"
     "  --size WxH          size the error is measured at (default 320x180)\n"
@@ -250,6 +263,8 @@ const char* const usage =
     "  --faces LIST        gi.reflection_capture face sizes (default 16,32,64,128)\n"
     "  --steps LIST        lighting.ssr max_steps (default 8,16,32,64,128)\n"
     "  --scales LIST       lighting.ssr resolution_scale values (default 1)\n"
+    "  --planar-scales LIST gi.planar_reflection resolution_scale values, on worlds with planar reflectors\n"
+    "                      (default 1,0.5,0.25)\n"
     "  --worlds LIST       room, gallery or both (default)\n"
     "  --only TEXT         only configurations whose label (\"ssr+probes face=64\") contains TEXT\n"
     "  --probe-params JSON more gi.reflection_capture params as JSON members, e.g. '\"samples\": 64'\n"
@@ -270,6 +285,7 @@ int run(int argc, char** argv) {
   flags.numbers("--faces", o.faces);
   flags.numbers("--steps", o.steps);
   flags.numbers("--scales", o.scales);
+  flags.numbers("--planar-scales", o.planar_scales);
   flags.text("--worlds", o.worlds);
   flags.text("--only", o.only);
   flags.text("--probe-params", o.probe_params);

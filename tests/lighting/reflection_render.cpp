@@ -22,11 +22,12 @@ double process_cpu_ms() {
 }
 
 constexpr const char* kExample = LUMAGRAPH_SOURCE_DIR "/examples/reflections.json";
+constexpr const char* kPlanarExample = LUMAGRAPH_SOURCE_DIR "/examples/planar-reflections.json";
 
-GraphNode& node(Graph& graph, const std::string& id) {
+GraphNode& node(Graph& graph, const std::string& id, const char* file) {
   for (GraphNode& n : graph.nodes)
     if (n.id == id) return n;
-  throw std::runtime_error(std::string(kExample) + " has no node '" + id + "'");
+  throw std::runtime_error(std::string(file) + " has no node '" + id + "'");
 }
 
 // Sets every member of the JSON object text `{ members }` on `params`.
@@ -40,10 +41,15 @@ void set_params(JsonValue& params, const std::string& members, const std::string
 }
 
 bool uses_probes(ReflectionSource s) {
-  return s == ReflectionSource::probes || s == ReflectionSource::ssr_with_probes;
+  return s == ReflectionSource::probes || s == ReflectionSource::ssr_with_probes ||
+         s == ReflectionSource::planar_with_probes;
 }
 bool uses_ssr(ReflectionSource s) {
-  return s == ReflectionSource::ssr || s == ReflectionSource::ssr_with_probes;
+  return s == ReflectionSource::ssr || s == ReflectionSource::ssr_with_probes || s == ReflectionSource::planar_with_ssr;
+}
+bool uses_planar(ReflectionSource s) {
+  return s == ReflectionSource::planar || s == ReflectionSource::planar_with_probes ||
+         s == ReflectionSource::planar_with_ssr;
 }
 
 }  // namespace
@@ -58,6 +64,12 @@ const char* reflection_source_name(ReflectionSource source) {
       return "ssr";
     case ReflectionSource::ssr_with_probes:
       return "ssr+probes";
+    case ReflectionSource::planar:
+      return "planar";
+    case ReflectionSource::planar_with_probes:
+      return "planar+probes";
+    case ReflectionSource::planar_with_ssr:
+      return "planar+ssr";
   }
   return "?";
 }
@@ -72,23 +84,28 @@ std::string config_label(const ReflectionConfig& c) {
     if (c.max_steps > 0) label += " steps=" + std::to_string(c.max_steps);
     if (c.ssr_scale > 0 && c.ssr_scale < 1) label += " scale=" + std::to_string(c.ssr_scale).substr(0, 4);
   }
+  if (uses_planar(c.source) && c.planar_scale > 0) label += " planar=" + std::to_string(c.planar_scale).substr(0, 4);
   return label;
 }
 
 Graph reflection_graph(const ReflectionConfig& c) {
-  Diagnostics d(kExample);
-  std::optional<Graph> loaded = load_graph_file(kExample, d);
+  const char* file = uses_planar(c.source) ? kPlanarExample : kExample;
+  Diagnostics d(file);
+  std::optional<Graph> loaded = load_graph_file(file, d);
   if (!loaded) throw std::runtime_error(d.to_string());
   Graph graph = std::move(*loaded);
+  // The probes feed lighting.ibl directly or through the planar node.
   std::erase_if(graph.links, [&](const GraphLink& link) {
-    return link.to.node == "ibl" && ((link.to.port == "reflection_probes" && !uses_probes(c.source)) ||
-                                     (link.to.port == "ssr" && !uses_ssr(c.source)));
+    return (link.from.text() == "probes.reflections" && !uses_probes(c.source)) ||
+           (link.to.text() == "ibl.ssr" && !uses_ssr(c.source));
   });
-  JsonValue& probes = node(graph, "probes").params;
+  if (uses_planar(c.source) && c.planar_scale > 0)
+    node(graph, "planar", file).params.set("resolution_scale", c.planar_scale);
+  JsonValue& probes = node(graph, "probes", file).params;
   probes.set("parallax", c.parallax);
   if (c.face_size > 0) probes.set("face_size", c.face_size);
   set_params(probes, c.probe_params, "probe params");
-  JsonValue& ssr = node(graph, "ssr").params;
+  JsonValue& ssr = node(graph, "ssr", file).params;
   if (c.max_steps > 0) ssr.set("max_steps", c.max_steps);
   if (c.ssr_scale > 0) ssr.set("resolution_scale", c.ssr_scale);
   set_params(ssr, c.ssr_params, "ssr params");
@@ -112,7 +129,8 @@ ReflectionFrame render_reflections(const World& world, uint32_t width, uint32_t 
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     double ms = 0;
     for (const PassStats& pass : stats.passes)
-      if (pass.name.rfind("probes/", 0) == 0 || pass.name.rfind("ssr/", 0) == 0) ms += pass.gpu_ms;
+      if (pass.name.rfind("probes/", 0) == 0 || pass.name.rfind("planar/", 0) == 0 || pass.name.rfind("ssr/", 0) == 0)
+        ms += pass.gpu_ms;
     out.reflection_gpu_ms.push_back(ms);
     out.frame_gpu_ms.push_back(stats.gpu_ms);
   }
