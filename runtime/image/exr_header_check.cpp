@@ -16,6 +16,10 @@ namespace {
 
 constexpr std::array<unsigned char, 4> kMagic{0x76, 0x2f, 0x31, 0x01};
 constexpr size_t kMaxName = 255;  // with the long-names flag; 31 without
+// OpenEXR allocates a block of scan lines (or a tile) of every channel when it opens a file: a
+// 16384-pixel-wide RGBA float image in 256-line blocks, the largest a valid environment needs,
+// takes 64 MiB.
+constexpr uint64_t kMaxBlockBytes = uint64_t(256) << 20;
 
 // The value sizes of the standard attribute types whose size is fixed. OpenEXR reads these, and
 // channel lists, by their content and not by the size the header declares, so a wrong size
@@ -47,16 +51,39 @@ std::optional<std::string> read_name(std::istream& in, const std::string& path) 
   return std::nullopt;
 }
 
-// A channel list: (name, 16 bytes) per channel, then an empty name, filling the value exactly.
-bool channel_list_fills(const std::string& value, const std::string& path) {
+int32_t int32_at(const unsigned char* bytes) {
+  return int32_t(uint32_t(bytes[0]) | uint32_t(bytes[1]) << 8 | uint32_t(bytes[2]) << 16 | uint32_t(bytes[3]) << 24);
+}
+
+// A channel list: (name, pixel type int32, 12 more bytes) per channel, then an empty name,
+// filling the value exactly. The bytes a pixel of all its channels takes, or nullopt when it does
+// not fill the value.
+std::optional<uint64_t> channel_list_pixel_bytes(const std::string& value, const std::string& path) {
   std::istringstream in(value);
+  uint64_t bytes = 0;
   for (;;) {
     const std::optional<std::string> name = read_name(in, path);
-    if (!name) return false;
-    if (name->empty()) return in.tellg() == std::streamoff(value.size());
-    if (!in.seekg(16, std::ios::cur) || in.tellg() > std::streamoff(value.size())) return false;
+    if (!name) return std::nullopt;
+    if (name->empty()) return in.tellg() == std::streamoff(value.size()) ? std::optional(bytes) : std::nullopt;
+    std::array<unsigned char, 16> channel{};
+    if (!in.read(reinterpret_cast<char*>(channel.data()), channel.size())) return std::nullopt;
+    bytes += int32_at(channel.data()) == 1 ? 2 : 4;  // HALF; UINT and FLOAT (others OpenEXR refuses)
   }
 }
+
+// Scan lines OpenEXR decodes at once, by compression (its enum's order); 1 for the unknown.
+uint64_t lines_per_block(int compression) {
+  constexpr std::array<uint64_t, 10> lines{1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+  return compression >= 0 && compression < int(lines.size()) ? lines[size_t(compression)] : 1;
+}
+
+// What OpenEXR sizes its buffers from, gathered over one part's header.
+struct BufferFacts {
+  int64_t width = 0;                 // of the data window
+  int compression = 3;               // the byte of 'compression'; without one, OpenEXR's default (ZIP)
+  uint64_t pixel_bytes = 0;          // of every channel
+  uint64_t tile_x = 0, tile_y = 0;   // 'tiles', where the file is tiled
+};
 
 }  // namespace
 
@@ -72,6 +99,20 @@ void check_exr_header(const std::string& path, uint64_t max_pixels) {
   const auto refuse = [&](const std::string& name, const std::string& type, const std::string& what) {
     throw ImageFileError(path + ": error: the EXR header's attribute '" + name + "' (" + type + ") " + what);
   };
+  // Checked where a part's header ends, when every attribute it sizes buffers from is known.
+  BufferFacts facts;
+  const auto check_blocks = [&] {
+    const uint64_t block = facts.tile_x > 0 ? facts.tile_x * facts.tile_y * facts.pixel_bytes
+                                            : uint64_t(std::max<int64_t>(facts.width, 0)) *
+                                                  lines_per_block(facts.compression) * facts.pixel_bytes;
+    if (block > kMaxBlockBytes)
+      throw ImageFileError(path + ": error: the EXR header asks for blocks of " + std::to_string(block >> 20) +
+                           " MiB (" + (facts.tile_x > 0 ? "its tiles" : "its data window's width") + " times " +
+                           std::to_string(facts.pixel_bytes) + " bytes a pixel" +
+                           (facts.tile_x > 0 ? "" : " times the compression's lines a block") +
+                           "), over the reader's limit of " + std::to_string(kMaxBlockBytes >> 20) + " MiB");
+    facts = {};
+  };
   // Attributes (name, type, int32 size, value) up to an empty name; a multi-part file has a
   // header per part, and one more empty name after the last.
   bool header_ended = false;
@@ -79,6 +120,7 @@ void check_exr_header(const std::string& path, uint64_t max_pixels) {
     const std::optional<std::string> name = read_name(in, path);
     if (!name) return;
     if (name->empty()) {
+      if (!header_ended) check_blocks();
       if (!multipart || header_ended) return;
       header_ended = true;
       continue;
@@ -87,8 +129,7 @@ void check_exr_header(const std::string& path, uint64_t max_pixels) {
     const std::optional<std::string> type = read_name(in, path);
     std::array<unsigned char, 4> bytes{};
     if (!type || !in.read(reinterpret_cast<char*>(bytes.data()), bytes.size())) return;
-    const int32_t size =
-        int32_t(uint32_t(bytes[0]) | uint32_t(bytes[1]) << 8 | uint32_t(bytes[2]) << 16 | uint32_t(bytes[3]) << 24);
+    const int32_t size = int32_at(bytes.data());
     const std::streamoff at = in.tellg();
     if (size < 0 || at + size > file_size)
       refuse(*name, *type,
@@ -100,20 +141,30 @@ void check_exr_header(const std::string& path, uint64_t max_pixels) {
       // OpenEXR sizes its line buffers from the data window when it opens the file.
       std::array<unsigned char, 16> box{};
       in.read(reinterpret_cast<char*>(box.data()), box.size());
-      const auto at_int = [&](size_t i) {
-        return int64_t(int32_t(uint32_t(box[i]) | uint32_t(box[i + 1]) << 8 | uint32_t(box[i + 2]) << 16 |
-                               uint32_t(box[i + 3]) << 24));
-      };
+      const auto at_int = [&](size_t i) { return int64_t(int32_at(&box[i])); };
       const int64_t width = at_int(8) - at_int(0) + 1, height = at_int(12) - at_int(4) + 1;
-      if (width > 0 && height > 0 && uint64_t(width) * uint64_t(height) > max_pixels)
+      facts.width = width;
+      // OpenEXR refuses an inverted window too, but only after sizing its work from it.
+      if (width <= 0 || height <= 0)
+        refuse(*name, *type,
+               "is inverted (x " + std::to_string(at_int(0)) + " to " + std::to_string(at_int(8)) + ", y " +
+                   std::to_string(at_int(4)) + " to " + std::to_string(at_int(12)) + ")");
+      if (uint64_t(width) * uint64_t(height) > max_pixels)
         refuse(*name, *type,
                "is " + std::to_string(width) + "x" + std::to_string(height) + ", larger than the limit of " +
                    std::to_string(max_pixels) + " pixels");
     } else if (*type == "chlist") {
       std::string value(static_cast<size_t>(size), '\0');
       in.read(value.data(), size);
-      if (!channel_list_fills(value, path))
-        refuse(*name, *type, "does not end at its declared " + std::to_string(size) + " bytes");
+      const std::optional<uint64_t> pixel_bytes = channel_list_pixel_bytes(value, path);
+      if (!pixel_bytes) refuse(*name, *type, "does not end at its declared " + std::to_string(size) + " bytes");
+      if (*name == "channels") facts.pixel_bytes = *pixel_bytes;
+    } else if (*name == "compression" && *type == "compression") {
+      facts.compression = in.get();
+    } else if (*name == "tiles" && *type == "tiledesc") {
+      std::array<unsigned char, 9> tiles{};
+      in.read(reinterpret_cast<char*>(tiles.data()), tiles.size());
+      facts.tile_x = uint32_t(int32_at(&tiles[0])), facts.tile_y = uint32_t(int32_at(&tiles[4]));
     } else {
       in.seekg(size, std::ios::cur);
     }

@@ -125,6 +125,24 @@ TEST(ImageFile, ExrWhoseDataWindowIsOverTheLimitIsRefusedBeforeOpenExrOpensIt) {
       << open_error(bad);
 }
 
+// Under the pixel limit but one line 2^24 pixels wide, ZIP-compressed (16 lines a block) with 4
+// half channels: OpenEXR allocated its 2 GiB block on opening (found by fuzz/env_image_fuzzer.cpp).
+TEST(ImageFile, ExrWhoseBlocksWouldTakeGigabytesIsRefusedBeforeOpenExrOpensIt) {
+  TempFolder folder;
+  const std::vector<float> rgba(4 * 3 * 4, 0.5f);
+  const std::string good = (folder.path / "good.exr").string();
+  save_image(good, 4, 3, rgba);  // ZIP, half floats
+  std::string bytes = read_bytes(good);
+  const std::string attribute("dataWindow\0box2i\0", 17);
+  const size_t window = bytes.find(attribute);
+  ASSERT_NE(window, std::string::npos);
+  const size_t at = window + attribute.size() + 4;  // after the size: xMin, yMin, xMax, yMax
+  bytes.replace(at, 16, std::string("\0\0\0\0\0\0\0\0\xff\xff\xff\x00\0\0\0\0", 16));  // 2^24 x 1
+  const std::string bad = folder.write("wide-block.exr", bytes);
+  EXPECT_EQ(open_error(bad).rfind(bad + ": error: the EXR header asks for blocks of ", 0), 0u) << open_error(bad);
+  EXPECT_NE(open_error(bad).find("over the reader's limit of 256 MiB"), std::string::npos) << open_error(bad);
+}
+
 TEST(ImageFile, ExrWithANameLongerThanAnyExrAllowsIsRefused) {
   TempFolder folder;
   std::string bytes("\x76\x2f\x31\x01\x02\0\0\0", 8);
