@@ -54,11 +54,6 @@ std::unique_ptr<Renderer> make_renderer(const Graph& graph) {
   return renderer;
 }
 
-void expect_no_validation_messages(Renderer& renderer) {
-  auto messages = renderer.context().take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
-}
-
 // The Cornell box lit by its sun alone (the light gi.lpv carries), traced with two bounces: the
 // visible surface and one bounce, the light the node models. Per covered pixel and channel, the
 // node's irradiance against the reference's E = pi indirect_diffuse / diffuse colour; the RMS of
@@ -75,7 +70,7 @@ TEST(Lpv, BeatsNoIndirectLightOnTheCornellBoxAndFollowsTheSun) {
   auto renderer = make_renderer(lpv_graph(8, 8));
   renderer->render(world, kFrame);
   const std::vector<float> lpv = renderer->executor().read_image("lpv.irradiance");
-  expect_no_validation_messages(*renderer);
+  expect_no_validation_messages(renderer->context());
 
   SceneView view = make_scene_view(world, float(kFrame.width) / kFrame.height);
   ASSERT_EQ(view.directional_lights.size(), 1u);
@@ -105,7 +100,7 @@ TEST(Lpv, BeatsNoIndirectLightOnTheCornellBoxAndFollowsTheSun) {
   for (size_t i = 0; i < lpv.size(); ++i)
     if (i % 4 != 3) change += std::abs(turned[i] - lpv[i]), total += lpv[i];
   EXPECT_GT(change, 0.1 * total);  // a different patch of sunlight, a different bounce
-  expect_no_validation_messages(*renderer);
+  expect_no_validation_messages(renderer->context());
 }
 
 // Zero-area triangles (all three corners on one point, and on one line), zero normals, a NaN
@@ -147,7 +142,7 @@ TEST(Lpv, StaysFiniteOnDegenerateInput) {
   }
   EXPECT_EQ(bad, 0u);
   EXPECT_GT(covered, 0u);  // the floor is in the grid
-  expect_no_validation_messages(*renderer);
+  expect_no_validation_messages(renderer->context());
 }
 
 // Two unit boxes, the second moved from beside the first along x to above it along y: the grid's
@@ -193,8 +188,8 @@ TEST(Lpv, FollowsTheGridsShapeWhenItsCellCountStaysTheSame) {
     if (i % 4 != 3) worst = std::max(worst, double(std::abs(moved[i] - expected[i])));
   EXPECT_GT(largest, 0.0);  // the bounce reaches the pixels
   EXPECT_LE(worst, 1e-3 * largest);
-  expect_no_validation_messages(*renderer);
-  expect_no_validation_messages(*fresh);
+  expect_no_validation_messages(renderer->context());
+  expect_no_validation_messages(fresh->context());
 }
 
 // examples/gi-lpv.json on a scene without a directional light (the two rooms have lamps only):
