@@ -26,6 +26,7 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "nodes/gi/lpv/lpv_kernel.h"
 #include "nodes/gi/path_tracer/path_transport.h"
 #include "nodes/raytrace/camera_pixels.h"
 #include "runtime/scene/load_world.h"
@@ -125,11 +126,8 @@ int run(const Options& o) {
     SceneView view = make_scene_view(world, float(o.width) / o.height);
     view.point_lights.clear(), view.spot_lights.clear(), view.sphere_lights.clear();
     view.tube_lights.clear(), view.rect_lights.clear();
-    // gi.lpv's main light: the first that casts shadows, else the first.
-    auto caster = std::find_if(view.directional_lights.begin(), view.directional_lights.end(),
-                               [](const DirectionalLightData& d) { return d.casts_shadows; });
-    if (caster == view.directional_lights.end()) caster = view.directional_lights.begin();
-    view.directional_lights = {*caster};
+    const int light = lpv_main_light(view);  // the one light gi.lpv carries
+    if (light >= 0) view.directional_lights = {view.directional_lights[size_t(light)]};
     const PathScene scene(view, PathEnvironment::none());
     PathTracerOptions ro;
     ro.width = o.width, ro.height = o.height, ro.samples_per_pixel = o.spp, ro.max_bounces = 2;

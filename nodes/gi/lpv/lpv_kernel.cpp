@@ -83,12 +83,6 @@ Bounds draws_bounds(const SceneView& scene, std::span<const Bounds> mesh_boxes) 
   return b.empty() ? Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)} : b;
 }
 
-// The main directional light: the first that casts shadows, else the first; -1 when none.
-int main_directional_light(const SceneView& scene) {
-  const int caster = shadow_caster(scene);
-  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
-}
-
 class LpvKernel final : public NodeKernel {
  public:
   explicit LpvKernel(const PlanNode& node)
@@ -127,7 +121,7 @@ class LpvKernel final : public NodeKernel {
     grid_ = fit_lpv_grid(box_ ? *box_ : *scene_bounds_, cells_);
     allocate(ctx);
 
-    const int light = main_directional_light(scene);
+    const int light = lpv_main_light(scene);
     const uint32_t rsm_size = ctx.image("tmp.rsm_position").desc().width;
     Constants c{};
     c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
@@ -358,6 +352,11 @@ class LpvKernel final : public NodeKernel {
 
 std::unique_ptr<NodeKernel> make_lpv_kernel(const PlanNode& node) {
   return std::make_unique<LpvKernel>(node);
+}
+
+int lpv_main_light(const SceneView& scene) {
+  const int caster = shadow_caster(scene);
+  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
 }
 
 }  // namespace lg
