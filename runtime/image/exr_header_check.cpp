@@ -78,6 +78,14 @@ uint64_t lines_per_block(int compression) {
   return compression >= 0 && compression < int(lines.size()) ? lines[size_t(compression)] : 1;
 }
 
+// a x b x c, or the largest uint64_t where that overflows: tiles of 2^30 x 2^30 16-byte pixels
+// must not wrap to 0 bytes and pass the limit.
+uint64_t saturating_product(uint64_t a, uint64_t b, uint64_t c) {
+  uint64_t ab = 0, abc = 0;
+  if (__builtin_mul_overflow(a, b, &ab) || __builtin_mul_overflow(ab, c, &abc)) return UINT64_MAX;
+  return abc;
+}
+
 // What OpenEXR sizes its buffers from, gathered over one part's header.
 struct BufferFacts {
   int64_t width = 0;                 // of the data window
@@ -103,9 +111,9 @@ void check_exr_header(const std::string& path, uint64_t max_pixels) {
   // Checked where a part's header ends, when every attribute it sizes buffers from is known.
   BufferFacts facts;
   const auto check_blocks = [&] {
-    const uint64_t block = facts.tile_x > 0 ? facts.tile_x * facts.tile_y * facts.pixel_bytes
-                                            : uint64_t(std::max<int64_t>(facts.width, 0)) *
-                                                  lines_per_block(facts.compression) * facts.pixel_bytes;
+    const uint64_t block = facts.tile_x > 0 ? saturating_product(facts.tile_x, facts.tile_y, facts.pixel_bytes)
+                                            : saturating_product(uint64_t(std::max<int64_t>(facts.width, 0)),
+                                                                 lines_per_block(facts.compression), facts.pixel_bytes);
     if (block > kMaxBlockBytes)
       throw ImageFileError(path + ": error: the EXR header asks for blocks of " + std::to_string(block >> 20) +
                            " MiB (" + (facts.tile_x > 0 ? "its tiles" : "its data window's width") + " times " +

@@ -8,6 +8,7 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "runtime/scene/default_world.h"
+#include "tests/bench/renderer_pass_timing.h"
 
 namespace lg::bench {
 
@@ -21,15 +22,8 @@ double area_pass_ms(const std::string& area_specular, uint32_t width, uint32_t h
   const World world = default_world();
   Renderer renderer;
   renderer.set_graph(std::move(*graph));
-  std::vector<double> times;
-  for (uint32_t f = 0; f <= frames; ++f) {
-    const FrameStats& stats = renderer.render(world, {width, height});
-    double ms = 0;
-    for (const PassStats& p : stats.passes)
-      if (p.name.size() > 5 && p.name.compare(p.name.size() - 5, 5, "/area") == 0) ms += p.gpu_ms;
-    if (f > 0) times.push_back(ms);
-  }
-  std::sort(times.begin(), times.end());
+  const std::vector<double> times = sorted_pass_ms(renderer, world, width, height, frames,
+                                                   [](const std::string& name) { return name.ends_with("/area"); });
   return times[times.size() / 2];
 }
 

@@ -14,6 +14,7 @@
 
 #include "runtime/gpu/context.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/bench/node_pass_timing.h"
 #include "tests/post/guided_frame.h"
 
 namespace lg::bench {
@@ -25,25 +26,6 @@ struct Options {
   int frames = 5;
   std::vector<double> radii = {1, 2, 4, 8};
 };
-
-struct Timing {
-  double fastest_ms = 0, median_ms = 0;
-};
-
-// Runs one warm-up frame, then `frames` timed ones: the node's passes ("node/...") summed.
-Timing time_node(test::ExposureHarness& h, int frames) {
-  h.run_frame();
-  std::vector<double> ms;
-  for (int f = 0; f < frames; ++f) {
-    const FrameStats stats = h.run_frame();
-    double sum = 0;
-    for (const PassStats& p : stats.passes)
-      if (p.name.rfind("node/", 0) == 0) sum += p.gpu_ms;
-    ms.push_back(sum);
-  }
-  std::sort(ms.begin(), ms.end());
-  return {ms.front(), ms[ms.size() / 2]};
-}
 
 std::string bilateral_node(const char* kernel, int radius) {
   return R"({ "id": "node", "type": "post.bilateral", "params": { "kernel": ")" + std::string(kernel) +
@@ -82,7 +64,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 2; ++k) {
       test::ExposureHarness h(context, test::guided_graph(bench::bilateral_node(kernels[k], radius)), image);
       test::show_cornell_box(h, o.width, o.height);
-      timing[k] = bench::time_node(h, o.frames);
+      timing[k] = bench::time_node(h, o.frames, "node/");
       result[k] = h.executor().read_image("node.color");
     }
     const double error = test::relative_l1_on_surfaces(result[1], result[0], guide.depth);
@@ -102,7 +84,7 @@ int main(int argc, char** argv) {
     test::ExposureHarness h(context, test::guided_graph(R"({ "id": "node", "type": "post.upsample" })", 1.0 / k),
                             test::smooth_low_image(k, o.width, o.height), FrameSize{o.width, o.height});
     test::show_cornell_box(h, o.width, o.height);
-    const bench::Timing t = bench::time_node(h, o.frames);
+    const bench::Timing t = bench::time_node(h, o.frames, "node/");
     const test::SmoothError e = test::smooth_error(h.executor().read_image("node.color"), o.width, o.height);
     std::printf("%3d %10.2f / %-9.2f %12.5f %12.5f\n", k, t.fastest_ms, t.median_ms, e.mean, e.largest);
     std::fprintf(csv, "%d,%.3f,%.3f,%.6f,%.6f\n", k, t.fastest_ms, t.median_ms, e.mean, e.largest);

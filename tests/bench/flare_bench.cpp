@@ -18,6 +18,7 @@
 #include "nodes/post/flare/flare_model.h"
 #include "runtime/gpu/context.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/bench/node_pass_timing.h"
 #include "tests/post/exposure_harness.h"
 
 namespace lg::bench {
@@ -30,25 +31,6 @@ struct Options {
   int frames = 5;
   std::vector<double> scales = {1, 0.5, 0.25, 0.125};
 };
-
-struct Timing {
-  double fastest_ms = 0, median_ms = 0;
-};
-
-// One warm-up frame, then `frames` timed ones: the node's passes ("flare/...") summed.
-Timing time_node(test::ExposureHarness& h, int frames) {
-  h.run_frame();
-  std::vector<double> ms;
-  for (int f = 0; f < frames; ++f) {
-    const FrameStats stats = h.run_frame();
-    double sum = 0;
-    for (const PassStats& p : stats.passes)
-      if (p.name.rfind("flare/", 0) == 0) sum += p.gpu_ms;
-    ms.push_back(sum);
-  }
-  std::sort(ms.begin(), ms.end());
-  return {ms.front(), ms[ms.size() / 2]};
-}
 
 test::HostImage stretched(const test::HostImage& source, uint32_t width, uint32_t height) {
   test::HostImage out{width, height, std::vector<float>(size_t{width} * height * 4, 1.0f)};
@@ -130,7 +112,7 @@ int main(int argc, char** argv) {
               "GPU-model", "guard");
   for (const double scale : o.scales) {
     test::ExposureHarness h(context, bench::flare_graph(scale), image);
-    const bench::Timing t = bench::time_node(h, o.frames);
+    const bench::Timing t = bench::time_node(h, o.frames, "flare/");
     const std::vector<float> out = h.executor().read_image("flare.color");
     FlareSettings s;
     s.divisor = int(std::lround(1 / scale));

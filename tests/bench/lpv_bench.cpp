@@ -26,11 +26,13 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "nodes/gi/lpv/lpv_kernel.h"
 #include "nodes/gi/path_tracer/path_transport.h"
 #include "nodes/raytrace/camera_pixels.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/bench/renderer_pass_timing.h"
 #include "tests/gi/prt_comparison.h"
 
 namespace lg::bench {
@@ -77,15 +79,8 @@ struct FrameTime {
 FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
   Renderer renderer;
   renderer.set_graph(lpv_graph(q));
-  std::vector<double> times;
-  for (uint32_t f = 0; f <= o.frames; ++f) {
-    const FrameStats& stats = renderer.render(world, {o.frame_width, o.frame_height});
-    double ms = 0;
-    for (const PassStats& p : stats.passes)
-      if (p.name.rfind("lpv/", 0) == 0) ms += p.gpu_ms;
-    if (f > 0) times.push_back(ms);
-  }
-  std::sort(times.begin(), times.end());
+  const std::vector<double> times = sorted_pass_ms(renderer, world, o.frame_width, o.frame_height, o.frames,
+                                                   [](const std::string& name) { return name.starts_with("lpv/"); });
   return {times[times.size() / 2], times.front()};
 }
 
@@ -131,11 +126,8 @@ int run(const Options& o) {
     SceneView view = make_scene_view(world, float(o.width) / o.height);
     view.point_lights.clear(), view.spot_lights.clear(), view.sphere_lights.clear();
     view.tube_lights.clear(), view.rect_lights.clear();
-    // gi.lpv's main light: the first that casts shadows, else the first.
-    auto caster = std::find_if(view.directional_lights.begin(), view.directional_lights.end(),
-                               [](const DirectionalLightData& d) { return d.casts_shadows; });
-    if (caster == view.directional_lights.end()) caster = view.directional_lights.begin();
-    view.directional_lights = {*caster};
+    const int light = lpv_main_light(view);  // the one light gi.lpv carries
+    if (light >= 0) view.directional_lights = {view.directional_lights[size_t(light)]};
     const PathScene scene(view, PathEnvironment::none());
     PathTracerOptions ro;
     ro.width = o.width, ro.height = o.height, ro.samples_per_pixel = o.spp, ro.max_bounces = 2;

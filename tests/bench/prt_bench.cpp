@@ -26,6 +26,7 @@
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/bench/renderer_pass_timing.h"
 #include "tests/gi/prt_comparison.h"
 
 namespace lg::bench {
@@ -68,15 +69,8 @@ double frame_ms(const fs::path& dir, const std::string& bake, int order, const W
   RendererOptions options;
   Renderer renderer(options);
   renderer.set_graph(prt_graph(dir, bake, order, 1.0));
-  std::vector<double> times;
-  for (uint32_t f = 0; f <= o.frames; ++f) {
-    const FrameStats& stats = renderer.render(world, {o.frame_width, o.frame_height});
-    double ms = 0;
-    for (const PassStats& p : stats.passes)
-      if (p.name.rfind("prt/", 0) == 0) ms += p.gpu_ms;
-    if (f > 0) times.push_back(ms);
-  }
-  std::sort(times.begin(), times.end());
+  const std::vector<double> times = sorted_pass_ms(renderer, world, o.frame_width, o.frame_height, o.frames,
+                                                   [](const std::string& name) { return name.starts_with("prt/"); });
   return times[times.size() / 2];
 }
 

@@ -93,11 +93,6 @@ std::unique_ptr<Renderer> make_renderer(const Graph& graph) {
   return renderer;
 }
 
-void expect_no_validation_messages(Renderer& renderer) {
-  auto messages = renderer.context().take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
-}
-
 // Replaces the SH the node reads (env.sh_project's result, a cached static pass after the first
 // frame) by `coefficients` (25 RGB), renders a frame and reads the node's irradiance.
 std::vector<float> render_lit_by(Renderer& renderer, const std::vector<glm::vec3>& coefficients) {
@@ -154,7 +149,7 @@ TEST(Prt, FramesAreLinearInTheEnvironmentsSh) {
   for (float v : render_lit_by(*renderer, std::vector<glm::vec3>(25, glm::vec3(1e30f)))) {
     ASSERT_TRUE(std::isfinite(v));
   }
-  expect_no_validation_messages(*renderer);
+  expect_no_validation_messages(renderer->context());
   // A bake of other geometry fails the frame, naming the file and what differs.
   const World other = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
   renderer->set_graph(prt_graph(
@@ -196,7 +191,7 @@ TEST(Prt, MatchesThePathTracerWithinTheTruncationError) {
     renderer->set_graph(prt_graph(bake, order, true));
     renderer->render(setup().world, kFrame);
     const std::vector<float> prt = renderer->executor().read_image("prt.irradiance");
-    expect_no_validation_messages(*renderer);
+    expect_no_validation_messages(renderer->context());
     const PrtComparison c = compare_with_reference(scene, traced, prt);
     ASSERT_GT(c.values, size_t(kFrame.width) * kFrame.height / 4);
     const double truncation = sh_irradiance_truncation_rms(env, order);

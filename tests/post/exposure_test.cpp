@@ -14,6 +14,7 @@
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/transfer.h"
 #include "tests/post/exposure_harness.h"
+#include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
 namespace {
@@ -25,12 +26,7 @@ Context& context() {
 
 class Exposure : public ::testing::Test {
  protected:
-  void TearDown() override {
-    auto messages = context().take_validation_messages();
-    std::string text;
-    for (const auto& m : messages) text += "\n[" + m.id + "] " + m.text;
-    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << text;
-  }
+  void TearDown() override { expect_no_validation_messages(context()); }
 };
 
 // A grey image: every pixel's luminance is `luminance`.

@@ -15,6 +15,7 @@
 #include "nodes/post/flare/flare_model.h"
 #include "runtime/gpu/context.h"
 #include "tests/post/exposure_harness.h"
+#include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
 namespace {
@@ -26,12 +27,7 @@ Context& context() {
 
 class Flare : public ::testing::Test {
  protected:
-  void TearDown() override {
-    auto messages = context().take_validation_messages();
-    std::string text;
-    for (const auto& m : messages) text += "\n[" + m.id + "] " + m.text;
-    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << text;
-  }
+  void TearDown() override { expect_no_validation_messages(context()); }
 };
 
 std::string flare_graph(const std::string& params) {

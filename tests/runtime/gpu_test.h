@@ -32,6 +32,13 @@ inline std::string describe(const std::vector<ValidationMessage>& messages) {
   return out;
 }
 
+// Fails the test on any message the context's validation layers gave since the last take (a
+// renderer's: renderer.context()).
+inline void expect_no_validation_messages(Context& context) {
+  auto messages = context.take_validation_messages();
+  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
+}
+
 class GpuTest : public ::testing::Test {
  protected:
   static GpuEnvironment& environment() {
@@ -51,10 +58,7 @@ class GpuTest : public ::testing::Test {
     return pipelines().compute({std::string(name), shader(name), std::move(bindings), push_bytes});
   }
 
-  void TearDown() override {
-    auto messages = context().take_validation_messages();
-    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
-  }
+  void TearDown() override { expect_no_validation_messages(context()); }
 };
 
 }  // namespace lg::test

@@ -143,6 +143,22 @@ TEST(ImageFile, ExrWhoseBlocksWouldTakeGigabytesIsRefusedBeforeOpenExrOpensIt) {
   EXPECT_NE(open_error(bad).find("over the reader's limit of 64 MiB"), std::string::npos) << open_error(bad);
 }
 
+// Tiles of 2^30 x 2^30 pixels (valid sizes to OpenEXR) of four float channels: 2^64 bytes, which
+// wrapped to 0 in 64 bits and passed the block limit.
+TEST(ImageFile, ExrWhoseTilesOverflowSixtyFourBitsIsRefused) {
+  TempFolder folder;
+  std::string bytes("\x76\x2f\x31\x01\x02\x02\0\0", 8);                           // version 2, tiled
+  bytes += std::string("channels\0chlist\0", 16) + std::string("\x49\0\0\0", 4);  // 4 x 18 + 1 bytes:
+  for (const char* name : {"A", "B", "G", "R"})
+    bytes += std::string(name) + '\0' + std::string("\x02\0\0\0\0\0\0\0\x01\0\0\0\x01\0\0\0", 16);  // FLOAT, 1 x 1
+  bytes += '\0';
+  bytes += std::string("tiles\0tiledesc\0", 15) + std::string("\x09\0\0\0", 4);  // 9 bytes:
+  bytes += std::string("\0\0\0\x40\0\0\0\x40\0", 9);                             // 2^30 x 2^30, one level
+  bytes += '\0';                                                                 // the header's end
+  const std::string bad = folder.write("huge-tiles.exr", bytes);
+  EXPECT_EQ(open_error(bad).rfind(bad + ": error: the EXR header asks for blocks of ", 0), 0u) << open_error(bad);
+}
+
 TEST(ImageFile, ExrWithANameLongerThanAnyExrAllowsIsRefused) {
   TempFolder folder;
   std::string bytes("\x76\x2f\x31\x01\x02\0\0\0", 8);

@@ -83,12 +83,6 @@ Bounds draws_bounds(const SceneView& scene, std::span<const Bounds> mesh_boxes) 
   return b.empty() ? Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)} : b;
 }
 
-// The main directional light: the first that casts shadows, else the first; -1 when none.
-int main_directional_light(const SceneView& scene) {
-  const int caster = shadow_caster(scene);
-  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
-}
-
 class LpvKernel final : public NodeKernel {
  public:
   explicit LpvKernel(const PlanNode& node)
@@ -127,7 +121,7 @@ class LpvKernel final : public NodeKernel {
     grid_ = fit_lpv_grid(box_ ? *box_ : *scene_bounds_, cells_);
     allocate(ctx);
 
-    const int light = main_directional_light(scene);
+    const int light = lpv_main_light(scene);
     const uint32_t rsm_size = ctx.image("tmp.rsm_position").desc().width;
     Constants c{};
     c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
@@ -167,10 +161,11 @@ class LpvKernel final : public NodeKernel {
     draws_->write(draw_constants(scene));
   }
 
-  // The grids, sized when the cell count changes (the box of a moving world may change it).
+  // The grids, sized when the counts change (the box of a moving world may change them). The
+  // counts, not their product: 16x8x4 and 8x16x4 need the same buffers but not the same images.
   void allocate(PassContext& ctx) {
+    if (grid_.counts == allocated_counts_) return;
     const uint64_t cells = grid_.cell_count();
-    if (cells == allocated_cells_) return;
     auto buffer = [&](const char* name, uint64_t bytes_per_cell) {
       return Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name, .size = cells * bytes_per_cell});
     };
@@ -190,7 +185,7 @@ class LpvKernel final : public NodeKernel {
                                                     .depth = uint32_t(grid_.counts.z),
                                                     .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
     sum_images_new_ = true;
-    allocated_cells_ = cells;
+    allocated_counts_ = grid_.counts;
   }
 
   void record_rsm(PassContext& ctx) {
@@ -345,7 +340,7 @@ class LpvKernel final : public NodeKernel {
   LpvGrid grid_;
   glm::mat4 shadow_from_world_{1.0f};
   bool light_present_ = false;
-  uint64_t allocated_cells_ = 0;
+  glm::ivec3 allocated_counts_{0};  // none yet
   std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
   Buffer light_fixed_, occlusion_fixed_, sum_, occlusion_grid_;
   std::array<Buffer, 2> light_;
@@ -357,6 +352,11 @@ class LpvKernel final : public NodeKernel {
 
 std::unique_ptr<NodeKernel> make_lpv_kernel(const PlanNode& node) {
   return std::make_unique<LpvKernel>(node);
+}
+
+int lpv_main_light(const SceneView& scene) {
+  const int caster = shadow_caster(scene);
+  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
 }
 
 }  // namespace lg

@@ -1,6 +1,6 @@
 // The LTC table of nodes/lighting/deferred/ltc_table.h (fitted by lumagraph-ltc-fit), read
 // bilinearly as ltc_lookup does on the CPU. Include it after declaring `vec4 ltc_table[]` in a
-// buffer, one entry a vec4, filled from ltc_table_texels() (area_lights.glsl binds it at 19).
+// buffer, one entry a vec4, filled from ltc_table_texels() (area_lights.glsl binds it at 22).
 #ifndef LG_LTC_TABLE_GLSL
 #define LG_LTC_TABLE_GLSL
 

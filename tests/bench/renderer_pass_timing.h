@@ -1,0 +1,24 @@
+// Some passes' GPU time in a Renderer, per frame (the benchmarks of gi.lpv, gi.prt and
+// lighting.deferred's area pass). Light types stay out of this header: area_specular_bench.cpp
+// includes it beside the renderer's own names for them.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lg {
+class Renderer;
+class World;
+}  // namespace lg
+
+namespace lg::bench {
+
+// Renders `frames` + 1 frames of `world` at width x height and returns, sorted, the GPU time of
+// the passes `counts` accepts summed per frame, for all but the first (it JIT-compiles the
+// pipelines).
+std::vector<double> sorted_pass_ms(Renderer& renderer, const World& world, uint32_t width, uint32_t height,
+                                   uint32_t frames, const std::function<bool(const std::string&)>& counts);
+
+}  // namespace lg::bench
