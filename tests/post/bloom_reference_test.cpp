@@ -79,8 +79,7 @@ TEST(BloomReference, TheChainsPhaseAveragedImpulseResponseIsTheKernel) {
 // its content, farther than the 3-level kernel reaches, so the clamped edges play no part.
 TEST(BloomReference, MatchesTheDirectConvolutionOnRandomRadiance) {
   constexpr uint32_t kWidth = 192, kHeight = 128, kLevels = 3, kMargin = 40;
-  const unsigned seed = std::random_device{}();
-  std::mt19937 rng(seed);
+  std::mt19937 rng(1);  // a fixed image: a failure is the same on every run
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   HostImage image = black(kWidth, kHeight);
   for (uint32_t y = kMargin; y < kHeight - kMargin; ++y)
@@ -102,10 +101,10 @@ TEST(BloomReference, MatchesTheDirectConvolutionOnRandomRadiance) {
     gpu_total += gpu[k], reference_total += reference.rgba[k];
   }
   const double relative_rms = std::sqrt(difference / norm);
-  std::printf("seed %u: relative RMS %.4f, total %.5f of the reference's\n", seed, relative_rms,
+  std::printf("relative RMS %.4f, total %.5f of the reference's\n", relative_rms,
               gpu_total / reference_total);
-  EXPECT_LT(relative_rms, 0.22) << "seed " << seed;
-  EXPECT_NEAR(gpu_total / reference_total, 1.0, 0.002) << "seed " << seed;
+  EXPECT_LT(relative_rms, 0.22);
+  EXPECT_NEAR(gpu_total / reference_total, 1.0, 0.002);
   auto messages = context().take_validation_messages();
   EXPECT_TRUE(messages.empty()) << describe(messages);
 }

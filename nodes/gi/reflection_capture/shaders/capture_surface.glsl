@@ -16,5 +16,7 @@ void main() {
   // Last, so that every texture above is sampled with its derivatives from whole quads.
   if (m.base.a < d.alpha.x) discard;
 #endif
-  out_color = vec4(radiance, (flags & 4u) != 0u ? distance(surface_position, camera.position.xyz) : 1.0);
+  // The distance at most half float's largest, the sky's: past it the target would hold infinity.
+  float eye_distance = min(distance(surface_position, camera.position.xyz), 65504.0);
+  out_color = vec4(radiance, (flags & 4u) != 0u ? eye_distance : 1.0);
 }
