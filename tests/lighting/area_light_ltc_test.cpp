@@ -96,6 +96,8 @@ TEST(AreaLightLtc, MatchesTheGgxLobeOverTheLightBetterThanRepresentativePoints) 
 TEST(AreaLightLtc, DegenerateInputStaysFinite) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const glm::vec4 entry = ltc_lookup(0.5f, 0.5f);
+  // A NaN cosine or roughness reads the table's first entry (as 0 would), never an index from NaN.
+  EXPECT_EQ(ltc_lookup(nan, nan), ltc_lookup(0.0f, 0.0f));
   const vec3 n(0, 0, 1);
   std::vector<float> results;
   for (const vec3& v : {vec3(1, 0, 0), vec3(0.6f, 0, -0.8f), vec3(0, 0, 1), vec3(0)}) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "nodes/lighting/deferred/area_light_math.h"
+
 namespace lg {
 
 const float kLtcTable[4 * kLtcSize * kLtcSize] = {
@@ -24,8 +26,9 @@ double ltc_alpha(double roughness) {
 
 glm::vec4 ltc_lookup(float n_dot_v, float roughness) {
   constexpr int last = kLtcSize - 1;
-  const float x = std::sqrt(1.0f - std::clamp(n_dot_v, 0.0f, 1.0f)) * last;
-  const float y = std::clamp(roughness, 0.0f, 1.0f) * last;
+  // clamp01 maps NaN to 0 (std::clamp passes it through, and int(NaN) is undefined).
+  const float x = std::sqrt(1.0f - clamp01(n_dot_v)) * last;
+  const float y = clamp01(roughness) * last;
   const int x0 = std::min(int(x), last - 1), y0 = std::min(int(y), last - 1);
   const float fx = x - float(x0), fy = y - float(y0);
   auto at = [](int i, int j) {
