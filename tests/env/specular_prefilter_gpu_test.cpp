@@ -1,14 +1,15 @@
 // env.specular_prefilter's pass on lavapipe against the double-precision brute force over
 // every texel of the same (half-precision) environment, at output texels drawn at random from
-// fixed seeds. The issue's target, RMS relative error under 1% at roughness 0.25, 0.5 and 1 on
-// a 128^2 cube at the default quality, is met on the random environment at the default 256
-// samples (measured 0.31%, 0.47%, 0.27%; before prefilter.comp's corrections to filtered
-// importance sampling 0.44%, 0.67%, 0.97%). The probes, whose small sources are thousands of
-// times their sky, are printed and only bounded: grace 3.0%, 5.1%, 7.3% at 256 samples and
-// 2.7%, 3.1%, 3.8% at 1024; pisa 0.59%, 0.39%, 0.58% and 0.18%, 0.13%, 0.20%. Invariants: a
-// constant environment comes back at every roughness; roughness 0 is the environment itself;
-// the pass's own mip chain starts at the input and keeps its integral. Stress: a sun 1e5 times
-// the sky, NaN and Inf texels.
+// fixed seeds. The exact method (the node's default) is held to issue 21's bound, 0.5% RMS at
+// every mip, on the random environment, the probes and a synthetic sun. Filtered importance
+// sampling (method 'sampled') is held to the earlier target, under 1% at roughness 0.25, 0.5 and
+// 1 on the random environment at the default 256 samples (measured 0.31%, 0.47%, 0.27%; before
+// prefilter.comp's corrections 0.44%, 0.67%, 0.97%); on the probes, whose small sources are
+// thousands of times their sky, it is only bounded: grace 3.0%, 5.1%, 7.3% at 256 samples (2.7%,
+// 3.1%, 3.8% at 1024); pisa 0.59%, 0.39%, 0.58% (0.18%, 0.13%, 0.20%). Invariants for both: a
+// constant environment comes back at every roughness; non-finite texels give finite output. For
+// sampling: roughness 0 is the environment itself; its own mip chain starts at the input and
+// keeps its integral. Stress: a sun 1e5 times the sky, NaN and Inf texels.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -97,46 +98,42 @@ class SpecularPrefilterGpuTest : public GpuTest {
   }
 
   // The exact method: every mip of `mips` but roughness 0 (the environment itself) under `bound`.
-  void check_exact_every_mip(const CubeImage& env, const char* what, uint32_t mips, double bound) {
+  void check_exact_every_mip(const CubeImage& env, const char* what, uint32_t mips, double bound, int texels = 150) {
     const CubeImage seen = round_to_half(env);
     const std::vector<CubeImage> out = prefilter(seen, env.size, mips, 0);
     for (uint32_t m = 1; m < mips; ++m) {
       const double roughness = prefilter_roughness(m, mips);
-      const double rms = relative_rms(seen, out[m], roughness, 150, 40 + m);
+      const double rms = relative_rms(seen, out[m], roughness, texels, 40 + m);
       std::cout << what << ", exact, roughness " << roughness << ": RMS relative error " << rms << "\n";
       EXPECT_LT(rms, bound) << what << " roughness " << roughness;
     }
   }
 };
 
-// The issue's bound, 0.5% RMS at every mip, on a 64^2 random environment with a sun 1e4 times its
-// sky on one texel off every coarse texel's centre, at the node's default 6 mips and at 5.
+// The issue's bound, 0.5% RMS at every mip of the node's default 6 (roughness 0.2 to 1), on a
+// 64^2 random environment with a sun about 1e4 times its sky on one texel, off the centre of the
+// coarse texel it is in (without the peak list a coarse sum would weight it at that centre).
+// Measured 0.04% to 0.09% (the output's half precision alone is up to 0.05%).
 TEST_F(SpecularPrefilterGpuTest, ExactWithinHalfPercentAtEveryMipWithASun) {
   CubeImage env = random_environment(64, 504);
   env.at(4, 21, 38) = glm::dvec4(3000.0, 2900.0, 2600.0, 1.0);
-  check_exact_every_mip(env, "random 64^2 with a sun", 6, 0.005);
-  check_exact_every_mip(env, "random 64^2 with a sun", 5, 0.005);
-}
-
-TEST_F(SpecularPrefilterGpuTest, ExactProbesWithinHalfPercentAtEveryMip) {
-  check_exact_every_mip(random_environment(128, 500), "random", 5, 0.005);
-  for (const char* name : {"grace.hdr", "pisa.hdr"}) {
-    const std::optional<CubeImage> env = load_probe(name, 128);
-    if (!env) GTEST_SKIP() << "../shared/data/env/" << name << " is missing";
-    check_exact_every_mip(*env, name, 5, 0.005);
-  }
+  check_exact_every_mip(env, "random 64^2 with a sun", 6, 0.005, 100);
 }
 
 TEST_F(SpecularPrefilterGpuTest, RandomEnvironmentWithinOnePercentAtTheDefaultSamples) {
   check_roughness_levels(random_environment(128, 500), "random", kDefaultSamples, {0.01, 0.01, 0.01});
 }
 
+// The issue's bound for the exact method, 0.5% RMS at every mip of a 128^2 cube (5 mips: the
+// benchmark's), on the random environment and the probes; measured 0.04% to 0.13%. Filtered
+// importance sampling at 256 samples is only bounded (grace 3.0% to 7.3%).
 TEST_F(SpecularPrefilterGpuTest, Probes) {
+  check_exact_every_mip(random_environment(128, 500), "random", 5, 0.005);
   for (const char* name : {"grace.hdr", "pisa.hdr"}) {
     const std::optional<CubeImage> env = load_probe(name, 128);
     if (!env) GTEST_SKIP() << "../shared/data/env/" << name << " is missing";
+    check_exact_every_mip(*env, name, 5, 0.005);
     check_roughness_levels(*env, name, kDefaultSamples, {0.5, 0.5, 0.5});
-    check_roughness_levels(*env, name, 1024, {0.1, 0.1, 0.1});
   }
 }
 
