@@ -37,21 +37,27 @@ int32_t level_of(uint32_t env_size, uint32_t face) {
 
 // Chosen in a double-precision emulation of the sums (the peak list and box levels as the
 // shaders make them) against the brute force, RMS relative error over 150 random output texels
-// on a 128^2 random environment, grace.hdr and pisa.hdr, with the evaluations per output texel:
-// - the coarse level, 16^2 a face, alone: at roughness 0.75 and 1 0.13% at most (8^2 a face:
-//   0.60%; 32^2: 0.03%, 4x the work);
+// on a 128^2 random environment, grace.hdr and pisa.hdr (worst of the three), with the texels
+// summed per output texel:
+// - the coarse level, 16^2 a face, alone: 0.13% at roughness 0.75 and 1 (8^2 a face: 0.60%;
+//   32^2: 0.03% for 4x the work);
 // - below alpha 0.5 the lobe curves too fast near its peak for 16^2 texels (roughness 0.5:
-//   0.26%, 0.25: 2.6%), so coarse texels within the near cap, 8 alpha but 0.5 to 1 radian, are
-//   summed on the level whose faces are 4 / alpha wide (at least 32, at most the input's):
-//   roughness 0.5 (32^2, 1 rad) 0.053% in 2,600 evaluations, 0.25 (64^2, 0.5 rad) 0.11% in 3,000,
-//   0.2 (128^2, 0.5 rad) 0.21%, 0.4 (32^2) 0.08%, 0.6 0.07%. A smaller cap or coarser fine level
+//   0.26%, 0.25: 2.6%), so the coarse texels within the near cap, 8 alpha but 0.5 to 1 radian,
+//   are summed on the level whose faces are 2.5 / alpha wide, at least 32: roughness 0.5 (32^2,
+//   1 rad) 0.053% in 2,600 texels, 0.25 (64^2, 0.5 rad) 0.11% in 3,000, 0.2 (64^2) 0.18% (128^2:
+//   0.08% in 7,800), 0.4 (32^2) 0.08%, 0.6 (32^2) 0.07%. A smaller cap or a coarser fine level
 //   raised the error fast (roughness 0.25 with a 0.25 rad cap 0.53%, roughness 0.2 on 32^2 0.9%).
+// Without the peak list the coarse sums miss by far more: grace at roughness 0.5 on 16^2 3.3%.
 ExactPrefilterLevels exact_prefilter_levels(double alpha, uint32_t env_size) {
   const uint32_t coarse = std::min(16u, env_size);
   ExactPrefilterLevels levels{coarse, coarse, 0.0};
   if (alpha >= 0.5) return levels;
-  const uint32_t fine =
-      std::min(std::max(std::bit_ceil(uint32_t(std::ceil(4.0 / std::max(alpha, 1e-3)))), 2 * coarse), env_size);
+  // At most 8x the coarse faces: lavapipe ends an invocation's loops after 65535 iterations in
+  // all, and a 0.5 rad cap holds about 300 coarse texels of 16^2 a face, 64 children each (a
+  // 1 rad cap, which alpha >= 0.125 takes, goes with 2.5 / alpha <= 32). Above 128^2 a face this
+  // leaves alpha under 2.5 / 128 (roughness under 0.14) with a fine level coarser than it wants.
+  const uint32_t wanted = std::bit_ceil(uint32_t(std::ceil(2.5 / std::max(alpha, 1e-3))));
+  const uint32_t fine = std::min({std::max(wanted, 2 * coarse), 8 * coarse, env_size});
   if (fine <= coarse) return levels;
   levels.fine = fine;
   levels.near_angle = std::clamp(8.0 * alpha, 0.5, 1.0);
