@@ -113,14 +113,17 @@ void record_specular_prefilter_exact(Context& gpu, PipelineCache& pipelines, VkC
     push_constants(cmd, chain_pipeline, ChainPush{mip == 0 ? 1u : 0u});
     vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
   }
-  compute_to_compute_barrier(cmd);
+  // The sums read the chain sampled and the peak list as a uniform buffer.
+  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
+                                                              VK_ACCESS_2_UNIFORM_READ_BIT});
 
   const Pipeline& sum_pipeline = pipelines.compute({name,
                                                     node_shader("nodes/env/specular_prefilter/shaders/prefilter_exact.comp"),
                                                     {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                                                      {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
                                                      {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                                                     {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                                                     {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
                                                     sizeof(SumPush)});
   const uint32_t mips = prefiltered.desc().mips;
   for (uint32_t mip = 0; mip < mips; ++mip) {
@@ -130,7 +133,7 @@ void record_specular_prefilter_exact(Context& gpu, PipelineCache& pipelines, VkC
     const DescriptorWrite writes[] = {
         sampled_image(0, chain.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY}), sampler, VK_IMAGE_LAYOUT_GENERAL),
         storage_image(1, prefiltered.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1})),
-        sampled_image(2, env.view(), sampler), storage_buffer(3, peaks.handle())};
+        sampled_image(2, env.view(), sampler), uniform_buffer(3, peaks.handle(), 0, prefilter_peaks_bytes())};
     bind_pipeline(gpu, cmd, sum_pipeline, writes);
     push_constants(cmd, sum_pipeline,
                    SumPush{float(alpha), level_of(env_size, levels.coarse), level_of(env_size, levels.fine),

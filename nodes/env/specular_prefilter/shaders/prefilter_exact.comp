@@ -20,11 +20,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2DArray chain;  // prefilter_exact_chain.comp's levels, all mips
 layout(binding = 1, rgba16f) uniform writeonly image2DArray prefiltered_mip;
 layout(binding = 2) uniform samplerCube env;  // the input, for roughness 0
-layout(binding = 3, std430) readonly buffer Peaks {
-  uint peak_count;
-  uint peak_capacity;
-  uint pad0, pad1;
-  vec4 peaks[];  // per peak: direction, flux
+// prefilter_exact_chain.comp's peak list, read as a uniform buffer: lavapipe loads a uniform
+// buffer at a lane-uniform index once for all lanes, a storage buffer lane by lane (with the list
+// in a storage buffer grace.hdr's 158 peaks took as long as all its texels).
+layout(binding = 3, std140) uniform Peaks {
+  uvec4 peak_header;  // count (may pass capacity), capacity
+  vec4 peaks[2 * 511];  // per peak: direction, flux (exact_prefilter.h's kPrefilterPeakCapacity)
 };
 layout(push_constant) uniform Push {
   float alpha;        // roughness^2; 0: roughness 0
@@ -98,7 +99,7 @@ void main() {
       }
   }
   vec4 sum = coarse_sum * (4.0 / float(coarse * coarse)) + fine_sum * (4.0 / float(fine * fine));
-  uint count = min(peak_count, peak_capacity);
+  uint count = min(peak_header.x, peak_header.y);
   for (uint p = 0u; p < count; ++p) sum.rgb += peaks[2u * p + 1u].rgb * lobe(n, peaks[2u * p].xyz, a2);
   imageStore(prefiltered_mip, ivec3(texel, face), vec4(sum.a > 0.0 ? sum.rgb / sum.a : vec3(0.0), 1.0));
 }
