@@ -18,9 +18,13 @@ namespace lg {
 namespace {
 
 constexpr uint32_t kGroup = 8;
+// The peaks are taken from the chain's first level of at most this face size.
+constexpr uint32_t kPeakFace = 128;
+static_assert(kPrefilterPeakCapacity == 511, "shaders/prefilter_exact.comp's Peaks block holds 511 peaks");
+static_assert(16 + kPrefilterPeakCapacity * 32 <= 16384, "the peak list must fit the least maxUniformBufferRange");
 
 struct ChainPush {  // shaders/prefilter_exact_chain.comp
-  uint32_t first;
+  uint32_t first, peak_level;
 };
 
 struct SumPush {  // shaders/prefilter_exact.comp
@@ -35,8 +39,8 @@ int32_t level_of(uint32_t env_size, uint32_t face) {
 
 }  // namespace
 
-// Chosen in a double-precision emulation of the sums (the peak list and box levels as the
-// shaders make them) against the brute force, RMS relative error over 150 random output texels
+// Chosen in a double-precision emulation of the sums (box levels as the shaders make them, peaks
+// above 16x the mean) against the brute force, RMS relative error over 150 random output texels
 // on a 128^2 random environment, grace.hdr and pisa.hdr (worst of the three), with the texels
 // summed per output texel:
 // - the coarse level, 16^2 a face, alone: 0.13% at roughness 0.75 and 1 (8^2 a face: 0.60%;
@@ -58,6 +62,7 @@ ExactPrefilterLevels exact_prefilter_levels(double alpha, uint32_t env_size) {
   // leaves alpha under 2.5 / 128 (roughness under 0.14) with a fine level coarser than it wants.
   const uint32_t wanted = std::bit_ceil(uint32_t(std::ceil(2.5 / std::max(alpha, 1e-3))));
   const uint32_t fine = std::min({std::max(wanted, 2 * coarse), 8 * coarse, env_size});
+  static_assert(8 * 16 <= kPeakFace, "the sums must not read levels above the one the peaks are taken from");
   if (fine <= coarse) return levels;
   levels.fine = fine;
   levels.near_angle = std::clamp(8.0 * alpha, 0.5, 1.0);
@@ -110,7 +115,7 @@ void record_specular_prefilter_exact(Context& gpu, PipelineCache& pipelines, VkC
         storage_image(1, chain.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1})),
         sampled_image(2, env.view(), sampler), storage_buffer(3, peaks.handle())};
     bind_pipeline(gpu, cmd, chain_pipeline, writes);
-    push_constants(cmd, chain_pipeline, ChainPush{mip == 0 ? 1u : 0u});
+    push_constants(cmd, chain_pipeline, ChainPush{mip == 0 ? 1u : 0u, size == std::min(env_size, kPeakFace) ? 1u : 0u});
     vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
   }
   // The sums read the chain sampled and the peak list as a uniform buffer.

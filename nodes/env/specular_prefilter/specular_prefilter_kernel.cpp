@@ -1,6 +1,7 @@
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -34,7 +35,9 @@ class SpecularPrefilterKernel final : public NodeKernel {
       : exact_(param_string(node, "method") == "exact"), samples_(uint32_t(param_number(node, "samples"))) {}
 
   void record(PassContext& ctx) override {
-    if (!exact_) {
+    // The exact sums read a power-of-two chain (16^2 a face and finer levels from it); other
+    // face sizes are prefiltered by sampling.
+    if (!exact_ || !std::has_single_bit(ctx.image("in.env").desc().width)) {
       record_specular_prefilter(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, samples_, ctx.image("in.env"),
                                 &ctx.image("tmp.chain"), ctx.linear_sampler(), ctx.image("out.specular"),
                                 PrefilterSampling::filtered);

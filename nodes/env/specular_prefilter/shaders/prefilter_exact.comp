@@ -20,9 +20,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2DArray chain;  // prefilter_exact_chain.comp's levels, all mips
 layout(binding = 1, rgba16f) uniform writeonly image2DArray prefiltered_mip;
 layout(binding = 2) uniform samplerCube env;  // the input, for roughness 0
-// prefilter_exact_chain.comp's peak list, read as a uniform buffer: lavapipe loads a uniform
-// buffer at a lane-uniform index once for all lanes, a storage buffer lane by lane (with the list
-// in a storage buffer grace.hdr's 158 peaks took as long as all its texels).
+// prefilter_exact_chain.comp's peak list, read as a uniform buffer: with it in a storage buffer
+// grace.hdr (806 peaks at the then 16x bound) took 2.5x the random environment's time, from a
+// uniform buffer 1.5x (lavapipe presumably loads a uniform buffer at a lane-uniform index once
+// for all lanes, a storage buffer lane by lane).
 layout(binding = 3, std140) uniform Peaks {
   uvec4 peak_header;  // count (may pass capacity), capacity
   vec4 peaks[2 * 511];  // per peak: direction, flux (exact_prefilter.h's kPrefilterPeakCapacity)
@@ -45,7 +46,7 @@ float lobe(vec3 n, vec3 l, float a2) {
 }
 
 // cube_map.glsl's cube_direction(face, uv) as normalize(centre + p.x u + p.y v), p = 2 uv - 1,
-// from a table: lavapipe runs each of cube_direction's six face branches, masked.
+// the face's axes from a table once per face rather than cube_direction's six branches per texel.
 const vec3 kFaceCentre[6] = vec3[](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1));
 const vec3 kFaceU[6] = vec3[](vec3(0, 0, -1), vec3(0, 0, 1), vec3(1, 0, 0), vec3(1, 0, 0), vec3(1, 0, 0), vec3(-1, 0, 0));
 const vec3 kFaceV[6] = vec3[](vec3(0, -1, 0), vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1), vec3(0, -1, 0), vec3(0, -1, 0));
@@ -79,10 +80,10 @@ void main() {
   float a2 = alpha * alpha;
   int coarse = textureSize(chain, coarse_level).x, fine = textureSize(chain, fine_level).x;
   int k = fine / coarse;
-  // Texel addresses come from loop counters alone, the same in every lane, so lavapipe fetches
-  // each once for all lanes (addresses read from a shared per-workgroup list made this 4x
-  // slower). A branch that no lane takes is skipped: the near cap's children, and the coarse
-  // texels whose centres are below the horizon (their terms are 0).
+  // Texel addresses come from loop counters alone, the same in every lane (addresses read from
+  // a per-workgroup list in shared memory made this 2.5x slower on lavapipe). A branch is
+  // skipped where no lane takes it: the near cap's children, and the coarse texels whose centres
+  // are below the horizon (their terms are 0).
   vec4 coarse_sum = vec4(0.0), fine_sum = vec4(0.0);
   for (int f = 0; f < 6; ++f) {
     mat3 basis = face_basis(f);
