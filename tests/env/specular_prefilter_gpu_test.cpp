@@ -113,11 +113,12 @@ class SpecularPrefilterGpuTest : public GpuTest {
 // The bound, 0.5% RMS at every mip of the node's default 6 (roughness 0.2 to 1), on a
 // 64^2 random environment with a sun about 1e4 times its sky on one texel, off the centre of the
 // coarse texel it is in (without the peak list a coarse sum would weight it at that centre).
-// Measured 0.04% to 0.09% (the output's half precision alone is up to 0.05%).
+// Measured 0.04% to 0.10% (the output's half precision alone is up to 0.05%); without the peak
+// list 0.21% to 1.0%. 50 texels a mip keep it under 2 s (the brute force dominates).
 TEST_F(SpecularPrefilterGpuTest, ExactWithinHalfPercentAtEveryMipWithASun) {
   CubeImage env = random_environment(64, 504);
   env.at(4, 21, 38) = glm::dvec4(3000.0, 2900.0, 2600.0, 1.0);
-  check_exact_every_mip(env, "random 64^2 with a sun", 6, 0.005, 100);
+  check_exact_every_mip(env, "random 64^2 with a sun", 6, 0.005, 50);
 }
 
 TEST_F(SpecularPrefilterGpuTest, RandomEnvironmentWithinOnePercentAtTheDefaultSamples) {
