@@ -3,10 +3,11 @@
 // the median of --runs runs after one discarded run that JIT-compiles the pipeline) next to its error against the
 // double-precision references, on a 128^2 random environment and the probes of
 // ../shared/data/env when present.
-//   Prefilter: samples 16 to 4096, filtered importance sampling (the node, its own mip chain
-//   built inside the timed commands) and plain GGX importance sampling (mip 0 only), RMS
-//   relative error at roughness 0.25, 0.5 and 1 over kErrorTexels fixed random output texels;
-//   then the time ratio at equal error.
+//   Prefilter: the node's exact method (exact_prefilter.h: its chain and peak list built inside
+//   the timed commands), and samples 16 to 4096 of filtered importance sampling (method
+//   'sampled', its own mip chain built inside the timed commands) and of plain GGX importance
+//   sampling (mip 0 only), RMS relative error at roughness 0.25, 0.5, 1 and 0.75 over
+//   kErrorTexels fixed random output texels; then the time ratio at equal error.
 //   SH: orders 1 to 4 of cosine-convolved SH (irradiance): the truncation error (SH irradiance
 //   against brute-force irradiance) and the implementation's own (GPU coefficients against the
 //   double-precision projection, both reconstructed), over kErrorDirections random directions.
@@ -33,6 +34,7 @@
 #include "nodes/env/irradiance/irradiance_reference.h"
 #include "nodes/env/sh_project/sh_project_kernel.h"
 #include "nodes/env/sh_project/sh_reference.h"
+#include "nodes/env/specular_prefilter/exact_prefilter.h"
 #include "nodes/env/specular_prefilter/prefilter_reference.h"
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 #include "runtime/gpu/buffer.h"
@@ -50,8 +52,10 @@ namespace lg::bench {
 namespace {
 
 constexpr uint32_t kFace = 128;
-constexpr uint32_t kPrefilterMips = 5;  // mips 1, 2 and 4 hold roughness 0.25, 0.5 and 1
-constexpr uint32_t kLevels[3] = {1, 2, 4};
+constexpr uint32_t kPrefilterMips = 5;  // mips 1 to 4 hold roughness 0.25, 0.5, 0.75 and 1
+// In the CSV's column order: 0.25, 0.5 and 1 as they have always been, 0.75 added last.
+constexpr uint32_t kLevels[] = {1, 2, 4, 3};
+constexpr int kLevelCount = int(std::size(kLevels));
 constexpr uint32_t kSampleCounts[] = {16, 64, 256, 1024, 4096};
 constexpr int kShOrders[] = {1, 2, 3, 4};
 constexpr int kErrorTexels = 150;      // per roughness, as the accuracy test
@@ -88,7 +92,7 @@ struct Probe {
 
   const std::vector<std::vector<Texel>>& prefilter_references() {
     if (prefilter_texels.empty())
-      for (int k = 0; k < 3; ++k) {
+      for (int k = 0; k < kLevelCount; ++k) {
         const uint32_t size = kFace >> kLevels[k];
         const double roughness = prefilter_roughness(kLevels[k], kPrefilterMips);
         const CubeImage shape(size);
@@ -155,17 +159,18 @@ void time_runs(benchmark::State& state, const std::function<void(VkCommandBuffer
   }
 }
 
-const char* sampling_name(PrefilterSampling s) {
-  return s == PrefilterSampling::filtered ? "filtered" : "plain";
-}
-
 struct PrefilterPoint {
   std::string env;
   PrefilterSampling sampling;
-  uint32_t samples;
+  uint32_t samples;  // 0: the exact method (sampling unused)
   std::vector<double> times_ms;
-  double rms[3] = {0, 0, 0};  // per entry of kLevels
+  double rms[kLevelCount] = {};  // per entry of kLevels
+  bool exact() const { return samples == 0; }
 };
+
+const char* method_name(const PrefilterPoint& p) {
+  return p.exact() ? "exact" : p.sampling == PrefilterSampling::filtered ? "filtered" : "plain";
+}
 
 struct ShPoint {
   std::string env;
@@ -183,19 +188,24 @@ void bench_prefilter(benchmark::State& state, Probe& probe, PrefilterPoint& poin
   Image out = test::make_cube(gpu().context, "specular", kFace, kPrefilterMips);
   // Filtered sampling builds its own mip chain in the timed commands, as the node's pass does.
   Image own_chain = test::make_cube(gpu().context, "chain", kFace, uint32_t(chain.size()));
-  const bool filtered = point.sampling == PrefilterSampling::filtered;
+  Buffer peaks = Buffer::dedicated(gpu().context, {.name = "peaks", .size = prefilter_peaks_bytes()});
+  const bool own = point.exact() || point.sampling == PrefilterSampling::filtered;
   time_runs(
       state,
       [&](VkCommandBuffer cmd) {
         image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-        if (filtered) image_barrier(cmd, own_chain, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-        record_specular_prefilter(gpu().context, gpu().pipelines, cmd, "bench/prefilter", point.samples, source,
-                                  filtered ? &own_chain : nullptr, gpu().trilinear.handle(), out, point.sampling);
+        if (own) image_barrier(cmd, own_chain, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+        if (point.exact())
+          record_specular_prefilter_exact(gpu().context, gpu().pipelines, cmd, "bench/prefilter", source, own_chain,
+                                          gpu().nearest.handle(), peaks, out);
+        else
+          record_specular_prefilter(gpu().context, gpu().pipelines, cmd, "bench/prefilter", point.samples, source,
+                                    own ? &own_chain : nullptr, gpu().trilinear.handle(), out, point.sampling);
         memory_barrier(cmd);
       },
       point.times_ms);
   const auto& references = probe.prefilter_references();
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kLevelCount; ++k) {
     const CubeImage mip = test::read_cube(gpu().submitter, out, kLevels[k], VK_IMAGE_LAYOUT_GENERAL);
     double sum = 0;
     for (const Texel& t : references[k])
@@ -276,12 +286,12 @@ struct EqualError {
 std::vector<EqualError> equal_error(const std::vector<PrefilterPoint>& points) {
   std::vector<EqualError> rows;
   for (const PrefilterPoint& f : points) {
-    if (f.sampling != PrefilterSampling::filtered) continue;
+    if (f.exact() || f.sampling != PrefilterSampling::filtered) continue;
     std::vector<const PrefilterPoint*> plain;
     for (const PrefilterPoint& p : points)
-      if (p.env == f.env && p.sampling == PrefilterSampling::plain_mip0) plain.push_back(&p);
+      if (p.env == f.env && !p.exact() && p.sampling == PrefilterSampling::plain_mip0) plain.push_back(&p);
     if (plain.size() < 2) continue;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < kLevelCount; ++k) {
       EqualError row{f.env, prefilter_roughness(kLevels[k], kPrefilterMips), f.samples, f.rms[k], median(f.times_ms)};
       const auto at_monte_carlo_rate = [&](const PrefilterPoint& from) {
         const double scale = std::pow(from.rms[k] / row.error, 2.0);
@@ -316,18 +326,18 @@ void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& 
                      const std::vector<EqualError>& equal, const std::vector<ShPoint>& sh) {
   std::printf(
       "\nSpecular prefilter, 128^2 output with 5 mips (all mips timed), RMS relative error over %d random\n"
-      "texels per roughness against the double-precision brute force:\n",
+      "texels per roughness against the double-precision brute force (samples 0: the exact method):\n",
       kErrorTexels);
-  std::printf("%-10s %-9s %7s %10s %8s %9s %9s %9s\n", "env", "sampling", "samples", "median ms", "min ms", "r=0.25",
-              "r=0.5", "r=1");
+  std::printf("%-10s %-9s %7s %10s %8s %9s %9s %9s %9s\n", "env", "method", "samples", "median ms", "min ms", "r=0.25",
+              "r=0.5", "r=1", "r=0.75");
   std::ofstream csv(dir + "/env_prefilter.csv");
-  csv << "env,sampling,samples,median_ms,min_ms,runs,rms_r0.25,rms_r0.5,rms_r1\n";
+  csv << "env,sampling,samples,median_ms,min_ms,runs,rms_r0.25,rms_r0.5,rms_r1,rms_r0.75\n";
   for (const PrefilterPoint& p : prefilter) {
     const double med = median(p.times_ms), min = *std::min_element(p.times_ms.begin(), p.times_ms.end());
-    std::printf("%-10s %-9s %7u %10.2f %8.2f %8.3f%% %8.3f%% %8.3f%%\n", p.env.c_str(), sampling_name(p.sampling),
-                p.samples, med, min, 100 * p.rms[0], 100 * p.rms[1], 100 * p.rms[2]);
-    csv << p.env << ',' << sampling_name(p.sampling) << ',' << p.samples << ',' << med << ',' << min << ','
-        << p.times_ms.size() << ',' << p.rms[0] << ',' << p.rms[1] << ',' << p.rms[2] << '\n';
+    std::printf("%-10s %-9s %7u %10.2f %8.2f %8.3f%% %8.3f%% %8.3f%% %8.3f%%\n", p.env.c_str(), method_name(p),
+                p.samples, med, min, 100 * p.rms[0], 100 * p.rms[1], 100 * p.rms[2], 100 * p.rms[3]);
+    csv << p.env << ',' << method_name(p) << ',' << p.samples << ',' << med << ',' << min << ',' << p.times_ms.size()
+        << ',' << p.rms[0] << ',' << p.rms[1] << ',' << p.rms[2] << ',' << p.rms[3] << '\n';
   }
 
   std::printf(
@@ -396,14 +406,22 @@ int run(int argc, char** argv) {
   // Points are filled in as their benchmarks run; reserved so the references stay put.
   std::vector<PrefilterPoint> prefilter;
   std::vector<ShPoint> sh;
-  prefilter.reserve(probes.size() * 2 * std::size(kSampleCounts));
+  prefilter.reserve(probes.size() * (1 + 2 * std::size(kSampleCounts)));
   sh.reserve(probes.size() * std::size(kShOrders));
   for (auto& probe : probes) {
+    PrefilterPoint& exact = prefilter.emplace_back(PrefilterPoint{probe->name, PrefilterSampling::filtered, 0, {}});
+    benchmark::RegisterBenchmark(("prefilter/" + probe->name + "/exact").c_str(),
+                                 [&probe = *probe, &exact](benchmark::State& st) { bench_prefilter(st, probe, exact); })
+        ->UseManualTime()
+        ->Iterations(runs)
+        ->Unit(benchmark::kMillisecond);
     for (PrefilterSampling s : {PrefilterSampling::filtered, PrefilterSampling::plain_mip0})
       for (uint32_t samples : kSampleCounts) {
         PrefilterPoint& point = prefilter.emplace_back(PrefilterPoint{probe->name, s, samples, {}});
         benchmark::RegisterBenchmark(
-            ("prefilter/" + probe->name + "/" + sampling_name(s) + "/" + std::to_string(samples)).c_str(),
+            ("prefilter/" + probe->name + "/" + (s == PrefilterSampling::filtered ? "filtered/" : "plain/") +
+             std::to_string(samples))
+                .c_str(),
             [&probe = *probe, &point](benchmark::State& st) { bench_prefilter(st, probe, point); })
             ->UseManualTime()
             ->Iterations(runs)

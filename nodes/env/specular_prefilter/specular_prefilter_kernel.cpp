@@ -1,12 +1,15 @@
 #include "nodes/env/specular_prefilter/specular_prefilter_kernel.h"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/env/specular_prefilter/exact_prefilter.h"
+#include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
@@ -28,16 +31,28 @@ struct ChainPush {  // nodes/env/specular_prefilter/shaders/prefilter_chain.comp
 
 class SpecularPrefilterKernel final : public NodeKernel {
  public:
-  explicit SpecularPrefilterKernel(const PlanNode& node) : samples_(uint32_t(param_number(node, "samples"))) {}
+  explicit SpecularPrefilterKernel(const PlanNode& node)
+      : exact_(param_string(node, "method") == "exact"), samples_(uint32_t(param_number(node, "samples"))) {}
 
   void record(PassContext& ctx) override {
-    record_specular_prefilter(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, samples_, ctx.image("in.env"),
-                              &ctx.image("tmp.chain"), ctx.linear_sampler(), ctx.image("out.specular"),
-                              PrefilterSampling::filtered);
+    // The exact sums read a power-of-two chain (16^2 a face and finer levels from it); other
+    // face sizes are prefiltered by sampling.
+    if (!exact_ || !std::has_single_bit(ctx.image("in.env").desc().width)) {
+      record_specular_prefilter(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, samples_, ctx.image("in.env"),
+                                &ctx.image("tmp.chain"), ctx.linear_sampler(), ctx.image("out.specular"),
+                                PrefilterSampling::filtered);
+      return;
+    }
+    if (peaks_.size() < prefilter_peaks_bytes())
+      peaks_ = Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " prefilter peaks", .size = prefilter_peaks_bytes()});
+    record_specular_prefilter_exact(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, ctx.image("in.env"),
+                                    ctx.image("tmp.chain"), ctx.nearest_sampler(), peaks_, ctx.image("out.specular"));
   }
 
  private:
+  bool exact_;
   uint32_t samples_;
+  Buffer peaks_;  // the exact method's peak list, the node's own (as env.sh_project's partial sums)
 };
 
 // Level 0: the input's mip 0; each further level from the one above, read in GENERAL, where the
