@@ -1,6 +1,7 @@
 #include "nodes/gi/voxel/voxel_kernel.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -39,6 +40,7 @@ struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 light;
   glm::vec4 irradiance;
   glm::mat4 shadow_from_world;
+  glm::ivec4 chain;
 };
 
 struct ShadowPush {  // lighting.deferred's shadow_draw.glsl
@@ -84,6 +86,7 @@ class VoxelKernel final : public NodeKernel {
     Constants c{};
     c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
     c.counts = glm::ivec4(grid_.counts, int(levels_));
+    c.chain = glm::ivec4(doubled_axis_, 0, 0, 0);
     c.light = glm::vec4(0, -1, 0, 0);
     c.irradiance = glm::vec4(0.0f, 0.0f, 0.0f, ao_distance_);
     const int light = main_directional_light(scene);
@@ -113,15 +116,24 @@ class VoxelKernel final : public NodeKernel {
         ctx.gpu(), {.name = ctx.node().id + " voxel sums", .size = grid_.cell_count() * kGridBytesPerVoxel});
     const int longest = std::max({grid_.counts.x, grid_.counts.y, grid_.counts.z});
     levels_ = uint32_t(std::bit_width(unsigned(longest)));  // down to one voxel
-    chain_ = Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " voxels",
+    auto image = [&](const std::string& name, glm::ivec3 counts, uint32_t mips) {
+      return Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name,
                                           .kind = ImageKind::image3d,
                                           .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                          .width = uint32_t(grid_.counts.x),
-                                          .height = uint32_t(grid_.counts.y),
-                                          .depth = uint32_t(grid_.counts.z),
-                                          .mips = levels_,
+                                          .width = uint32_t(counts.x),
+                                          .height = uint32_t(counts.y),
+                                          .depth = uint32_t(counts.z),
+                                          .mips = mips,
                                           .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
-    chain_new_ = true;
+    };
+    // Per axis, rays travelling the positive way in the first half along the longest axis and the
+    // negative way in the second (voxel_common.glsl).
+    doubled_axis_ = int(std::max_element(&grid_.counts.x, &grid_.counts.x + 3) - &grid_.counts.x);
+    glm::ivec3 extent = grid_.counts;
+    extent[doubled_axis_] *= 2;
+    const char* axes[3] = {"x", "y", "z"};
+    for (int a = 0; a < 3; ++a) seen_[a] = image(std::string("voxels seen along ") + axes[a], extent, levels_);
+    images_new_ = true;
     allocated_counts_ = grid_.counts;
   }
 
@@ -195,12 +207,16 @@ class VoxelKernel final : public NodeKernel {
   // The sums into level 0 (the chain kept in the GENERAL layout).
   void inject(PassContext& ctx) {
     VkCommandBuffer cmd = ctx.cmd();
-    if (chain_new_) image_barrier(cmd, chain_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-    chain_new_ = false;
+    if (images_new_) {
+      for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    }
+    images_new_ = false;
     compute_to_compute_barrier(cmd);  // the atomics; last frame's reads of the chain
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, grid_sums_.handle()),
                                       sampled_image(2, ctx.image("tmp.shadow_map").view(), ctx.nearest_sampler()),
-                                      storage_image(3, chain_.view({.base_mip = 0, .mip_count = 1}))};
+                                      storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
+                                      storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
+                                      storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1}))};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
@@ -209,11 +225,14 @@ class VoxelKernel final : public NodeKernel {
     for (uint32_t level = 1; level < levels_; ++level) {
       compute_to_compute_barrier(ctx.cmd());
       const glm::ivec3 counts = glm::max(grid_.counts >> int(level), glm::ivec3(1));
-      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
-                                        storage_image(1, chain_.view({.base_mip = level - 1, .mip_count = 1})),
-                                        storage_image(2, chain_.view({.base_mip = level, .mip_count = 1}))};
+      std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle())};
+      for (uint32_t a = 0; a < 3; ++a)
+        writes.push_back(storage_image(1 + a, seen_[a].view({.base_mip = level - 1, .mip_count = 1})));
+      for (uint32_t a = 0; a < 3; ++a)
+        writes.push_back(storage_image(4 + a, seen_[a].view({.base_mip = level, .mip_count = 1})));
+      const int32_t push = int32_t(level);
       dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_downsample.comp", writes, uint32_t(counts.x),
-                       uint32_t(counts.y * counts.z));
+                       uint32_t(counts.y * counts.z), std::as_bytes(std::span(&push, 1)));
     }
   }
 
@@ -224,14 +243,16 @@ class VoxelKernel final : public NodeKernel {
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
     Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
-    const DescriptorWrite writes[] = {
+    std::vector<DescriptorWrite> writes = {
         uniform_buffer(0, constants_->handle()),
         uniform_buffer(1, camera_->handle()),
         sampled_image(2, depth.view(), ctx.nearest_sampler()),
         sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-        sampled_image(4, chain_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         storage_image(5, target.view()),
-        storage_image(6, ao.view())};
+        storage_image(6, ao.view()),
+        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width,
                      target.desc().height, std::as_bytes(std::span(&k_, 1)));
   }
@@ -266,8 +287,9 @@ class VoxelKernel final : public NodeKernel {
   uint32_t levels_ = 1;
   std::optional<HostBuffer> constants_, draws_, camera_;
   Buffer grid_sums_;
-  Image chain_;
-  bool chain_new_ = false;  // not yet in the GENERAL layout
+  std::array<Image, 3> seen_;  // the chain as rays along x, y and z see it (voxel_common.glsl)
+  int doubled_axis_ = 0;       // the axis along which those hold both directions
+  bool images_new_ = false;    // not yet in the GENERAL layout
 };
 
 }  // namespace

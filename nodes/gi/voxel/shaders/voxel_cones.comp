@@ -3,16 +3,16 @@
 // gi.voxel's cones, one invocation per G-buffer pixel (or per texel of the smaller target at
 // resolution_scale 1/k, as gi.lpv's lookup): six cones of 60 degrees (half-angle 30) over the
 // normal's hemisphere, one along the normal and five 60 degrees from it, 72 degrees apart. Each
-// starts one voxel out along the normal and marches front to back through the chain: a sample at
-// distance t reads, trilinearly within one level, the level whose voxels are as wide as the cone
-// there (2 t tan 30, rounded down to a level), but never wider than 2/3 of the sample's height h
-// above the surface's tangent plane: the trilinear filter reaches one voxel beyond the sample, so
-// a voxel of width w <= h / 1.5 never blends in the voxels of the surface the cone starts from
-// (with the cone's
-// own width a lit floor lit itself through every coarse level: E = 1.76 W/m^2 on an open floor
-// under a 10 W/m^2 sun, 82% of its own radiance times pi). Steps of one sample's width, so that
-// no voxel is skipped or counted twice; it stops once 99% opaque or out of the grid. Nothing
-// beyond the grid lights it (one bounce of the directional light, no sky).
+// starts one voxel out along the normal and marches front to back through the anisotropic chain
+// (voxel_common.glsl; the three directions facing the ray, weighted by the squares of its
+// components). A sample at distance t reads, trilinearly within one level, the level whose
+// voxels are as wide as the cone there (2 t tan 30, rounded down to a level), but never wider
+// than 2/3 of the sample's height h above the surface's tangent plane: the filter reaches one
+// voxel beyond the sample, so voxels of width w <= h / 1.5 never blend in the surface the cone
+// starts from (with the cone's own width an open floor lit itself through every coarse level:
+// E = 1.76 W/m^2 under a 10 W/m^2 sun, 82% of its own radiance times pi). Steps of one sample's
+// width, so that no voxel is skipped or counted twice; it stops once 99% opaque or out of the
+// grid. Nothing beyond the grid lights it (one bounce of the directional light, no sky).
 // Weights: the cosine-weighted share of the hemisphere inside the normal's cone is
 // sin^2(30 deg) = 1/4 exactly; the other five share the rest, 3/20 each. E = pi sum w_i L_i,
 // exact for a uniform radiance L. Ambient occlusion: 1 - sum w_i a_i with each cone's opacity
@@ -30,7 +30,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = 1) uniform CameraBlock { Camera camera; };  // at the G-buffer's size
 layout(binding = 2) uniform sampler2D depth_tex;
 layout(binding = 3) uniform sampler2D normal_tex;
-layout(binding = 4) uniform sampler3D voxels;  // the chain, trilinear between levels
+// The chain (voxel_common.glsl), per axis, trilinear within a level.
+layout(binding = 4) uniform sampler3D seen_x;
+layout(binding = 7) uniform sampler3D seen_y;
+layout(binding = 8) uniform sampler3D seen_z;
 layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
 layout(binding = 6, r8) uniform writeonly image2D ao;
 layout(push_constant) uniform Push {
@@ -39,6 +42,24 @@ layout(push_constant) uniform Push {
 
 const float kTanHalfAngle = 0.57735027;  // tan 30 deg
 const float kCentreWeight = 0.25, kSideWeight = 0.15;
+
+// What a ray travelling along `negative` (0 or 1) of `image`'s axis sees at `uvw` (the grid's
+// box in [0, 1]^3) of `level`: within its half, clamped half a voxel inside it so the filter does
+// not blend the other half in.
+vec4 seen(sampler3D image, vec3 uvw, int level, int negative) {
+  int axis = voxel.chain.x;
+  float n = float(voxel_level_counts(level)[axis]);
+  uvw[axis] = (clamp(uvw[axis], 0.5 / n, 1.0 - 0.5 / n) + float(negative)) * 0.5;
+  return textureLod(image, uvw, float(level));
+}
+
+// The chain at `uvw` and `level` for a ray along `d` (unit): the three directions facing the ray,
+// weighted by d's squared components (they sum to 1).
+vec4 sample_chain(vec3 uvw, int level, vec3 d) {
+  vec3 w = d * d;
+  return w.x * seen(seen_x, uvw, level, int(d.x < 0.0)) + w.y * seen(seen_y, uvw, level, int(d.y < 0.0)) +
+         w.z * seen(seen_z, uvw, level, int(d.z < 0.0));
+}
 
 struct Cone {
   vec3 light;      // radiance gathered, W/m^2/sr
@@ -60,7 +81,7 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
     float width = cell * exp2(level);
     vec3 uvw = (origin + direction * t - voxel.origin_cell.xyz) / grid_size;
     if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
-    vec4 v = textureLod(voxels, uvw, level);
+    vec4 v = sample_chain(uvw, int(level), direction);
     light += (1.0 - opacity) * max(v.rgb, vec3(0.0));
     opacity += (1.0 - opacity) * clamp(v.a, 0.0, 1.0);
     if (t <= voxel.irradiance.w) occluded = opacity;

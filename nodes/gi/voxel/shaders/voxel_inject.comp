@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // gi.voxel's injection, one invocation per voxel: the voxelization's sums into level 0 of the
-// chain. A marked voxel is opaque (a = 1) and its colour the radiance a diffuse surface of its
+// chain, the same for rays along all six directions. A marked voxel is opaque (a = 1) and its colour the radiance a diffuse surface of its
 // mean colour and normal reflects under the light: albedo x E x max(0, -n . l) / pi x visibility.
 // Only the side a face's normal faces is lit: with both (|n . l|) the dark face of a wall thinner
 // than 2.5 voxels passed the shadow test below and glowed (a 0.2 m wall at 13 cm voxels lit the
@@ -17,7 +17,19 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 1) readonly buffer Grid { int grid[]; };
 layout(binding = 2) uniform sampler2D shadow_map;
-layout(binding = 3, rgba16f) uniform writeonly image3D level0;
+// Level 0 of the chain (voxel_common.glsl): the same in all six directions.
+layout(binding = 3, rgba16f) uniform writeonly image3D seen_x;
+layout(binding = 4, rgba16f) uniform writeonly image3D seen_y;
+layout(binding = 5, rgba16f) uniform writeonly image3D seen_z;
+
+void store(ivec3 c, vec4 v) {
+  for (int negative = 0; negative < 2; ++negative) {
+    ivec3 t = voxel_chain_texel(c, voxel.counts.xyz, negative);
+    imageStore(seen_x, t, v);
+    imageStore(seen_y, t, v);
+    imageStore(seen_z, t, v);
+  }
+}
 
 float visibility(vec3 p) {
   vec4 clip = voxel.shadow_from_world * vec4(p, 1.0);
@@ -42,7 +54,7 @@ void main() {
   uint base = LG_VOXEL_INTS * voxel_index(c);
   int triangles = grid[base + 6u];
   if (triangles <= 0) {
-    imageStore(level0, c, vec4(0.0));
+    store(c, vec4(0.0));
     return;
   }
   float to_unit = 1.0 / (float(triangles) * kVoxelUnit);
@@ -58,5 +70,5 @@ void main() {
     float v = cosine > 0.0 ? visibility(centre + n * voxel.origin_cell.w) : 0.0;
     radiance = albedo * voxel.irradiance.rgb * (cosine * v / LG_PI);
   }
-  imageStore(level0, c, vec4(clamp(finite_or_zero(radiance), 0.0, 65504.0), 1.0));
+  store(c, vec4(clamp(finite_or_zero(radiance), 0.0, 65504.0), 1.0));
 }
