@@ -58,6 +58,7 @@ class VoxelKernel final : public NodeKernel {
   explicit VoxelKernel(const PlanNode& node)
       : resolution_(int(param_number(node, "resolution"))),
         ao_distance_(float(param_number(node, "ao_distance"))),
+        facing_colour_(param_bool(node, "facing_colour")),
         k_(resolution_divisor(node)) {}
 
   void record(PassContext& ctx) override {
@@ -230,9 +231,10 @@ class VoxelKernel final : public NodeKernel {
         writes.push_back(storage_image(1 + a, seen_[a].view({.base_mip = level - 1, .mip_count = 1})));
       for (uint32_t a = 0; a < 3; ++a)
         writes.push_back(storage_image(4 + a, seen_[a].view({.base_mip = level, .mip_count = 1})));
-      const int32_t push = int32_t(level);
+      writes.push_back(storage_buffer(7, grid_sums_.handle()));
+      const int32_t push[2] = {int32_t(level), facing_colour_ ? 1 : 0};
       dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_downsample.comp", writes, uint32_t(counts.x),
-                       uint32_t(counts.y * counts.z), std::as_bytes(std::span(&push, 1)));
+                       uint32_t(counts.y * counts.z), std::as_bytes(std::span(push)));
     }
   }
 
@@ -278,6 +280,7 @@ class VoxelKernel final : public NodeKernel {
 
   const int resolution_;
   const float ao_distance_;
+  const bool facing_colour_;
   const int32_t k_;  // the G-buffer's resolution over the cones' targets: 1 / resolution_scale
   std::optional<uint64_t> prepared_frame_;
   CellGrid grid_;
