@@ -72,8 +72,10 @@ Graph node_graph(const Quality& q) {
   Diagnostics d(q.method + "-bench.json");
   std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
-      { "id": ")" + q.method + R"(", "type": )" + params + R"( } } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": ")" + q.method + R"(.gbuffer" } ],
+      { "id": ")" + q.method + R"(", "type": )" + params +
+                                                    R"( } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": ")" + q.method +
+                                                    R"(.gbuffer" } ],
     "outputs": [ ")" + q.method + R"(.irradiance" ] })",
                                                 d);
   if (!graph) throw std::runtime_error(d.to_string());
@@ -91,9 +93,8 @@ FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
   Renderer renderer;
   renderer.set_graph(node_graph(q));
   const std::string prefix = q.method + "/";
-  const std::vector<double> times = sorted_pass_ms(
-      renderer, world, o.frame_width, o.frame_height, o.frames,
-      [&](const std::string& name) { return name.starts_with(prefix); });
+  const std::vector<double> times = sorted_pass_ms(renderer, world, o.frame_width, o.frame_height, o.frames,
+                                                   [&](const std::string& name) { return name.starts_with(prefix); });
   return {times[times.size() / 2], times.front()};
 }
 
@@ -142,8 +143,9 @@ int run(const Options& o) {
   if (o.methods.find("lpv") != std::string::npos)
     qualities.insert(qualities.end(), {{"lpv", 8, 8}, {"lpv", 16, 8}, {"lpv", 32, 8}, {"lpv", 64, 8}, {"lpv", 32, 0}});
   if (o.methods.find("voxel") != std::string::npos)
-    qualities.insert(qualities.end(),
-                     {{"voxel", 32, 6}, {"voxel", 64, 6}, {"voxel", 128, 6}, {"voxel", 64, 6, true}, {"voxel", 128, 6, true}});
+    qualities.insert(
+        qualities.end(),
+        {{"voxel", 32, 6}, {"voxel", 64, 6}, {"voxel", 128, 6}, {"voxel", 64, 6, true}, {"voxel", 128, 6, true}});
   for (const std::string name : {"cornell-box", "two-rooms-sun", "gallery"}) {
     const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
     SceneView view = make_scene_view(world, float(o.width) / o.height);
@@ -180,11 +182,11 @@ int run(const Options& o) {
         dark = frame;
         for (size_t i = 0; i < dark.size(); ++i)
           if (i % 4 != 3) dark[i] = 0.0f;
-        row("none", "-", {"none", 0, 0}, {0.0, 0.0}, test::compare_with_reference(scene, reference, dark), rooms ? 0.0 : NAN);
+        row("none", "-", {"none", 0, 0}, {0.0, 0.0}, test::compare_with_reference(scene, reference, dark),
+            rooms ? 0.0 : NAN);
       }
-      const std::string quality =
-          q.method == "lpv" ? std::to_string(q.grid) + "/" + std::to_string(q.iterations)
-                            : std::to_string(q.grid) + (q.facing_colour ? " facing" : "");
+      const std::string quality = q.method == "lpv" ? std::to_string(q.grid) + "/" + std::to_string(q.iterations)
+                                                    : std::to_string(q.grid) + (q.facing_colour ? " facing" : "");
       row(q.method.c_str(), quality, q, frame_ms(world, q, o), test::compare_with_reference(scene, reference, frame),
           rooms ? leak_ratio(world, q, o) : NAN);
     }

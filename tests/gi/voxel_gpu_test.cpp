@@ -33,15 +33,15 @@ constexpr double kPi = 3.14159265358979323846;
 
 Graph voxel_graph(int resolution, double resolution_scale, bool facing_colour = false) {
   Diagnostics d("voxel-test.json");
-  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+  std::optional<Graph> graph = parse_graph_text(
+      R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
       { "id": "voxel", "type": "gi.voxel", "params": { "resolution": )" +
-                                                    std::to_string(resolution) + R"(, "resolution_scale": )" +
-                                                    std::to_string(resolution_scale) + R"(, "shadow_size": 256, "facing_colour": )" +
-                                                    (facing_colour ? "true" : "false") + R"( } } ],
+          std::to_string(resolution) + R"(, "resolution_scale": )" + std::to_string(resolution_scale) +
+          R"(, "shadow_size": 256, "facing_colour": )" + (facing_colour ? "true" : "false") + R"( } } ],
     "links": [ { "from": "gbuf.gbuffer", "to": "voxel.gbuffer" } ],
     "outputs": [ "voxel.irradiance", "voxel.ao" ] })",
-                                                d);
+      d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
 }
@@ -156,8 +156,9 @@ TEST(Voxel, LightsTheFloorBesideALitWallAndNothingWithoutLight) {
   const double wall_radiance = kWhite * 10.0 * -kSunFromTheEast.x / glm::length(kSunFromTheEast) / kPi;
   const FloorStrips lit = floor_strips(world, renderer->executor().read_image("voxel.irradiance"),
                                        renderer->executor().read_image("voxel.ao"), wall_radiance);
-  std::printf("sun from the east: floor beside the wall E %.4f (its face gives %.4f), AO %.3f; far side E %.4f, AO %.3f\n",
-              lit.near_wall, lit.near_expected, lit.near_ao, lit.far_side, lit.far_ao);
+  std::printf(
+      "sun from the east: floor beside the wall E %.4f (its face gives %.4f), AO %.3f; far side E %.4f, AO %.3f\n",
+      lit.near_wall, lit.near_expected, lit.near_ao, lit.far_side, lit.far_ao);
   EXPECT_NEAR(lit.near_wall, lit.near_expected, 0.3 * lit.near_expected);
   EXPECT_LT(5.0 * lit.far_side, lit.near_wall);
   EXPECT_GT(lit.far_ao, 0.95);

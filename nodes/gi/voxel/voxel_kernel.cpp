@@ -213,7 +213,8 @@ class VoxelKernel final : public NodeKernel {
     }
     images_new_ = false;
     compute_to_compute_barrier(cmd);  // the atomics; last frame's reads of the chain
-    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, grid_sums_.handle()),
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
+                                      storage_buffer(1, grid_sums_.handle()),
                                       sampled_image(2, ctx.image("tmp.shadow_map").view(), ctx.nearest_sampler()),
                                       storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
@@ -255,8 +256,8 @@ class VoxelKernel final : public NodeKernel {
         storage_image(6, ao.view()),
         sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
-    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width,
-                     target.desc().height, std::as_bytes(std::span(&k_, 1)));
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
   }
 
   // At resolution_scale below 1, the cones' smaller images to full resolution, guided by depth
