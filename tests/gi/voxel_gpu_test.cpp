@@ -3,6 +3,7 @@
 //   it (an integral over the face), the open floor next to nothing and no occlusion, the corner
 //   some; with the face dark, next to nothing; with the sun at zero, exactly zero;
 // - a closed room lit from outside: the known leak through its ceiling stays below its bound;
+// - the frame after the sun turns and the wall moves equals a fresh renderer's;
 // - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
 //   every output finite, validation clean;
 // - a scene without a directional light drops the node from examples/gi-voxel.json, with the
@@ -226,6 +227,43 @@ TEST(Voxel, ClosedRoomLitFromOutsideLeaksBelowItsBound) {
     EXPECT_LT(sum / double(n), (facing ? 0.001 : 0.03) * kPi * roof);
     expect_no_validation_messages(renderer->context());
   }
+}
+
+// Nothing is kept between frames but the buffers: after the sun turns to the west and the wall
+// rises 0.5 m (the box grows from 2 m to 2.5 m high, so the grid's counts go from 32 x 16 x 32 to
+// 32 x 32 x 32 and the images are made anew), the next frame equals a fresh renderer's frame of
+// the changed scene (integer atomics and fixed passes make both exact up to the half floats,
+// hence 1e-3 of the largest value).
+TEST(Voxel, NextFrameFollowsAMovedWallAndATurnedSun) {
+  World world = floor_and_wall(kSunFromTheEast, 10.0f);
+  const Graph graph = voxel_graph(32, 1.0);
+  auto renderer = make_renderer(graph);
+  renderer->render(world, kFrame);
+  const std::vector<float> before = renderer->executor().read_image("voxel.irradiance");
+  world.each<DirectionalLight, Transform>(
+      [](Entity, DirectionalLight&, Transform& t) { t.rotation = look_rotation(kSunFromTheWest); });
+  world.each<MeshRenderer, Transform>([](Entity, MeshRenderer&, Transform& t) {
+    if (t.position.x < -1.0f) t.position.y += 0.5f;  // the wall
+  });
+  renderer->render(world, kFrame);
+  const std::vector<float> moved = renderer->executor().read_image("voxel.irradiance");
+  auto fresh = make_renderer(graph);
+  fresh->render(world, kFrame);
+  const std::vector<float> expected = fresh->executor().read_image("voxel.irradiance");
+
+  ASSERT_EQ(moved.size(), expected.size());
+  double largest = 0, worst = 0, change = 0;
+  for (size_t i = 0; i < expected.size(); ++i)
+    if (i % 4 != 3) {
+      largest = std::max(largest, double(std::abs(before[i])));
+      worst = std::max(worst, double(std::abs(moved[i] - expected[i])));
+      change += std::abs(moved[i] - before[i]);
+    }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_GT(change, 0.0);  // the frame did change
+  EXPECT_LE(worst, 1e-3 * largest);
+  expect_no_validation_messages(renderer->context());
+  expect_no_validation_messages(fresh->context());
 }
 
 // Zero-area triangles (all three corners on one point, and on one line), zero normals, a NaN
