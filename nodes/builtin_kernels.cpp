@@ -11,6 +11,7 @@
 #include "nodes/gi/planar_reflection/planar_reflection_kernel.h"
 #include "nodes/gi/prt/prt_kernel.h"
 #include "nodes/gi/reflection_capture/reflection_capture_kernel.h"
+#include "nodes/gi/voxel/voxel_kernel.h"
 #include "nodes/lighting/deferred/deferred_kernel.h"
 #include "nodes/lighting/ibl/ibl_kernel.h"
 #include "nodes/lighting/ssr/ssr_kernel.h"
@@ -46,6 +47,7 @@ const KernelRegistry& builtin_kernels() {
     r.add("gi.planar_reflection", make_planar_reflection_kernel);
     r.add("gi.prt", make_prt_kernel);
     r.add("gi.reflection_capture", make_reflection_capture_kernel);
+    r.add("gi.voxel", make_voxel_kernel);
     r.add("lighting.deferred", make_deferred_kernel);
     r.add("lighting.ibl", make_ibl_kernel);
     r.add("lighting.ssr", make_ssr_kernel);

@@ -1,19 +1,23 @@
-// lumagraph-bench-lpv: gi.lpv against the path-traced reference on the Cornell box, the two rooms
+// lumagraph-bench-lpv: the nodes that carry one bounce of the main directional light, gi.lpv and
+// gi.voxel, against the path-traced reference on the Cornell box, the two rooms
 // with a skylight (examples/worlds/two-rooms-sun.json: the two-room world of the probe benchmark
 // with the sun coming through a hole in the west room's ceiling, its lamp left out, so the east
-// room gets no light at all) and the gallery. The node carries one bounce of the main directional
+// room gets no light at all) and the gallery. Both carry one bounce of the main directional
 // light, so the reference is traced with that light alone (no environment, no other lights) and
-// two bounces (the visible surface and one more). Per world, at four grids (8, 16, 32 and 64
-// cells along the longest side, 8 iterations each; and grid 32 without propagation, whose time is
-// that of everything but the propagation) and for "no indirect light": the relative RMS of the
-// node's irradiance against the reference's (the RMS of the differences over the reference's
+// two bounces (the visible surface and one more). Per world, for gi.lpv at four grids (8, 16, 32
+// and 64 cells along the longest side, 8 iterations each; and grid 32 without propagation, whose
+// time is that of everything but the propagation), for gi.voxel at three resolutions (32, 64 and
+// 128 voxels along the longest side, six cones; and 64 and 128 with facing_colour) and for "no
+// indirect light": the relative RMS of
+// the node's irradiance against the reference's (the RMS of the differences over the reference's
 // mean, lumagraph-bench-probes' relative_rms; through tests/gi/prt_comparison.h), the
-// reference's noise in the same measure, and the node's GPU time per frame at --frame-size (its
-// three passes; lavapipe; the median and the least of the frames after the first, nothing cached
+// reference's noise in the same measure, and the node's GPU time per frame at --frame-size (all
+// its passes; lavapipe; the median and the least of the frames after the first, nothing cached
 // between frames). In the two rooms also the leak: the mean irradiance on the east room's floor
 // over the west room's, a camera in each room (the reference's is 0). Writes lpv_points.csv
-// (columns compatible with docs/bench/probes/probe_points.csv) into --results-dir;
-// scripts/run-lpv-benchmarks plots it.
+// (columns compatible with docs/bench/probes/probe_points.csv; for gi.voxel `grid` is the
+// resolution and `iterations` the number of cones) into --results-dir; --methods lpv or voxel
+// runs one of them; scripts/run-lpv-benchmarks plots it.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -26,7 +30,7 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
-#include "nodes/gi/lpv/lpv_kernel.h"
+#include "nodes/gi/common/main_light.h"
 #include "nodes/gi/path_tracer/path_transport.h"
 #include "nodes/raytrace/camera_pixels.h"
 #include "runtime/scene/load_world.h"
@@ -45,26 +49,35 @@ struct Options {
   uint32_t width = 160, height = 90;                // against the reference
   uint32_t frame_width = 1280, frame_height = 720;  // timed
   uint32_t spp = 256, frames = 4;
+  std::string methods = "lpv,voxel";
 };
 
+// One setting of one node: gi.lpv's grid and iterations, or gi.voxel's resolution (and its six
+// cones, fixed).
 struct Quality {
+  std::string method;  // the node's id in the graph, and its passes' prefix
   int grid, iterations;
+  bool facing_colour = false;  // gi.voxel's param
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Graph lpv_graph(const Quality& q) {
-  Diagnostics d("lpv-bench.json");
-  std::optional<Graph> graph =
-      parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+Graph node_graph(const Quality& q) {
+  const std::string params = q.method == "lpv" ? R"("gi.lpv", "params": { "grid": )" + std::to_string(q.grid) +
+                                                     R"(, "iterations": )" + std::to_string(q.iterations)
+                                               : R"("gi.voxel", "params": { "resolution": )" + std::to_string(q.grid) +
+                                                     R"(, "facing_colour": )" + (q.facing_colour ? "true" : "false");
+  Diagnostics d(q.method + "-bench.json");
+  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
-      { "id": "lpv", "type": "gi.lpv", "params": { "grid": )" +
-                           std::to_string(q.grid) + R"(, "iterations": )" + std::to_string(q.iterations) + R"( } } ],
-    "links": [ { "from": "gbuf.gbuffer", "to": "lpv.gbuffer" } ],
-    "outputs": [ "lpv.irradiance" ] })",
-                       d);
+      { "id": ")" + q.method + R"(", "type": )" + params +
+                                                    R"( } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": ")" + q.method +
+                                                    R"(.gbuffer" } ],
+    "outputs": [ ")" + q.method + R"(.irradiance" ] })",
+                                                d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
 }
@@ -78,9 +91,10 @@ struct FrameTime {
 // alone.
 FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
   Renderer renderer;
-  renderer.set_graph(lpv_graph(q));
+  renderer.set_graph(node_graph(q));
+  const std::string prefix = q.method + "/";
   const std::vector<double> times = sorted_pass_ms(renderer, world, o.frame_width, o.frame_height, o.frames,
-                                                   [](const std::string& name) { return name.starts_with("lpv/"); });
+                                                   [&](const std::string& name) { return name.starts_with(prefix); });
   return {times[times.size() / 2], times.front()};
 }
 
@@ -93,9 +107,9 @@ double leak_ratio(World world, const Quality& q, const Options& o) {
       t.rotation = look_rotation(at - eye);
     });
     Renderer renderer;
-    renderer.set_graph(lpv_graph(q));
+    renderer.set_graph(node_graph(q));
     renderer.render(world, {o.width, o.height});
-    const std::vector<float> e = renderer.executor().read_image("lpv.irradiance");
+    const std::vector<float> e = renderer.executor().read_image(q.method + ".irradiance");
     const SceneView view = make_scene_view(world, float(o.width) / o.height);
     const PathScene scene(view, PathEnvironment::none());
     const PathTransport transport(scene, 1);
@@ -110,7 +124,12 @@ double leak_ratio(World world, const Quality& q, const Options& o) {
       }
     return n ? sum / double(n) : std::nan("");
   };
-  return floor_mean({3.7f, 1.6f, 1.7f}, {0.3f, 0.0f, -1.0f}) / floor_mean({-3.7f, 1.6f, 1.7f}, {-0.3f, 0.0f, -1.0f});
+  const double east = floor_mean({3.7f, 1.6f, 1.7f}, {0.3f, 0.0f, -1.0f});
+  const double west = floor_mean({-3.7f, 1.6f, 1.7f}, {-0.3f, 0.0f, -1.0f});
+  // Both are small where little light bounces onto the floors: the ratio alone can mislead.
+  std::printf("  %s %d%s: mean irradiance on the east room's floor %.5f, the west room's %.5f W/m^2\n",
+              q.method.c_str(), q.grid, q.facing_colour ? " facing" : "", east, west);
+  return east / west;
 }
 
 int run(const Options& o) {
@@ -120,13 +139,19 @@ int run(const Options& o) {
   csv << "world,method,quality,grid,iterations,frame_ms,relative_rms,reference_noise,beyond_noise,leak,frame_ms_min\n";
   std::printf("%-13s %-6s %-8s %9s %8s %8s %9s %8s %8s\n", "world", "method", "quality", "frame ms", "min ms",
               "rel RMS", "ref noise", "beyond", "leak");
-  const std::vector<Quality> qualities = {{8, 8}, {16, 8}, {32, 8}, {64, 8}, {32, 0}};
+  std::vector<Quality> qualities;
+  if (o.methods.find("lpv") != std::string::npos)
+    qualities.insert(qualities.end(), {{"lpv", 8, 8}, {"lpv", 16, 8}, {"lpv", 32, 8}, {"lpv", 64, 8}, {"lpv", 32, 0}});
+  if (o.methods.find("voxel") != std::string::npos)
+    qualities.insert(
+        qualities.end(),
+        {{"voxel", 32, 6}, {"voxel", 64, 6}, {"voxel", 128, 6}, {"voxel", 64, 6, true}, {"voxel", 128, 6, true}});
   for (const std::string name : {"cornell-box", "two-rooms-sun", "gallery"}) {
     const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
     SceneView view = make_scene_view(world, float(o.width) / o.height);
     view.point_lights.clear(), view.spot_lights.clear(), view.sphere_lights.clear();
     view.tube_lights.clear(), view.rect_lights.clear();
-    const int light = lpv_main_light(view);  // the one light gi.lpv carries
+    const int light = main_directional_light(view);  // the one light the nodes carry
     if (light >= 0) view.directional_lights = {view.directional_lights[size_t(light)]};
     const PathScene scene(view, PathEnvironment::none());
     PathTracerOptions ro;
@@ -150,17 +175,19 @@ int run(const Options& o) {
     std::vector<float> dark;
     for (const Quality& q : qualities) {
       Renderer renderer;
-      renderer.set_graph(lpv_graph(q));
+      renderer.set_graph(node_graph(q));
       renderer.render(world, {o.width, o.height});
-      const std::vector<float> frame = renderer.executor().read_image("lpv.irradiance");
+      const std::vector<float> frame = renderer.executor().read_image(q.method + ".irradiance");
       if (dark.empty()) {  // no indirect light, on the pixels the node covers
         dark = frame;
         for (size_t i = 0; i < dark.size(); ++i)
           if (i % 4 != 3) dark[i] = 0.0f;
-        row("none", "-", {0, 0}, {0.0, 0.0}, test::compare_with_reference(scene, reference, dark), rooms ? 0.0 : NAN);
+        row("none", "-", {"none", 0, 0}, {0.0, 0.0}, test::compare_with_reference(scene, reference, dark),
+            rooms ? 0.0 : NAN);
       }
-      const std::string quality = std::to_string(q.grid) + "/" + std::to_string(q.iterations);
-      row("lpv", quality, q, frame_ms(world, q, o), test::compare_with_reference(scene, reference, frame),
+      const std::string quality = q.method == "lpv" ? std::to_string(q.grid) + "/" + std::to_string(q.iterations)
+                                                    : std::to_string(q.grid) + (q.facing_colour ? " facing" : "");
+      row(q.method.c_str(), quality, q, frame_ms(world, q, o), test::compare_with_reference(scene, reference, frame),
           rooms ? leak_ratio(world, q, o) : NAN);
     }
   }
@@ -174,12 +201,14 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   lg::bench::Options o;
   lg::bench::BenchFlags flags(
-      "usage: lumagraph-bench-lpv [--results-dir DIR] [--size WxH] [--frame-size WxH] [--spp N] [--frames N]\n");
+      "usage: lumagraph-bench-lpv [--results-dir DIR] [--size WxH] [--frame-size WxH] [--spp N] [--frames N]\n"
+      "                           [--methods lpv,voxel]\n");
   flags.text("--results-dir", o.results_dir);
   flags.size("--size", o.width, o.height);
   flags.size("--frame-size", o.frame_width, o.frame_height);
   flags.count("--spp", o.spp);
   flags.count("--frames", o.frames);
+  flags.text("--methods", o.methods);
   if (const auto status = flags.parse(argc, argv)) return *status;
   return lg::bench::run(o);
 }

@@ -15,9 +15,9 @@
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
-#include "nodes/gi/lpv/lpv_grid.h"
+#include "nodes/gi/common/cell_grid.h"
+#include "nodes/gi/common/main_light.h"
 #include "nodes/gi/lpv/lpv_model.h"
-#include "nodes/lighting/deferred/light_buffers.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
@@ -27,7 +27,6 @@
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
-#include "runtime/scene/frustum.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -69,20 +68,6 @@ std::vector<glm::vec4> face_table() {
   return out;
 }
 
-// The box around every draw this frame, from each mesh's own box moved by its draw's transform:
-// a few corners a draw, so it is cheap enough to follow moving objects every frame (the scene's
-// version changes with its meshes, not with where they stand). A scene without draws gets a unit
-// box, as scene_bounds() gives.
-Bounds draws_bounds(const SceneView& scene, std::span<const Bounds> mesh_boxes) {
-  Bounds b;
-  for (const DrawItem& d : scene.draws) {
-    if (d.mesh < 0 || size_t(d.mesh) >= mesh_boxes.size()) continue;
-    const Bounds box = transform_bounds(mesh_boxes[d.mesh], d.world);
-    if (!box.empty()) b.add(box.min), b.add(box.max);
-  }
-  return b.empty() ? Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)} : b;
-}
-
 class LpvKernel final : public NodeKernel {
  public:
   explicit LpvKernel(const PlanNode& node)
@@ -118,10 +103,10 @@ class LpvKernel final : public NodeKernel {
     prepared_frame_ = ctx.frame_index();
     const SceneView& scene = ctx.scene();
     scene_bounds_ = draws_bounds(scene, ctx.gpu_scene().mesh_bounds());
-    grid_ = fit_lpv_grid(box_ ? *box_ : *scene_bounds_, cells_);
+    grid_ = fit_cell_grid(box_ ? *box_ : *scene_bounds_, cells_);
     allocate(ctx);
 
-    const int light = lpv_main_light(scene);
+    const int light = main_directional_light(scene);
     const uint32_t rsm_size = ctx.image("tmp.rsm_position").desc().width;
     Constants c{};
     c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
@@ -337,7 +322,7 @@ class LpvKernel final : public NodeKernel {
   const int32_t k_;  // the G-buffer's resolution over the lookup's: 1 / resolution_scale
   std::optional<Bounds> box_, scene_bounds_;
   std::optional<uint64_t> prepared_frame_;
-  LpvGrid grid_;
+  CellGrid grid_;
   glm::mat4 shadow_from_world_{1.0f};
   bool light_present_ = false;
   glm::ivec3 allocated_counts_{0};  // none yet
@@ -352,11 +337,6 @@ class LpvKernel final : public NodeKernel {
 
 std::unique_ptr<NodeKernel> make_lpv_kernel(const PlanNode& node) {
   return std::make_unique<LpvKernel>(node);
-}
-
-int lpv_main_light(const SceneView& scene) {
-  const int caster = shadow_caster(scene);
-  return caster >= 0 || scene.directional_lights.empty() ? caster : 0;
 }
 
 }  // namespace lg

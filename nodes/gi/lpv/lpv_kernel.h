@@ -11,12 +11,6 @@
 
 namespace lg {
 
-struct SceneView;
-
 std::unique_ptr<NodeKernel> make_lpv_kernel(const PlanNode& node);
-
-// The light gi.lpv carries: the first directional light that casts shadows, else the first; -1
-// when there is none.
-int lpv_main_light(const SceneView& scene);
 
 }  // namespace lg

@@ -1,32 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// gi.irradiance_volume's and gi.lpv's upsample at resolution_scale 1/k below 1: one invocation per texel of the
-// lookup's smaller image writes that texel's block of G-buffer pixels, each blended from the
-// 2 x 2 texels around it guided by depth and normals (joint_upsample.glsl).
-#include "nodes/common/shaders/joint_upsample.glsl"
-
-layout(local_size_x = 8, local_size_y = 8) in;
-
-layout(binding = 0) uniform sampler2D low_tex;
-layout(binding = 1) uniform sampler2D depth_tex;
-layout(binding = 2) uniform sampler2D normal_tex;
-layout(binding = 3, rgba16f) uniform writeonly image2D result;
-layout(push_constant) uniform Push {
-  int k;  // the G-buffer's resolution over low_tex's
-};
-
-void main() {
-  ivec2 low = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 low_size = textureSize(low_tex, 0), full_size = imageSize(result);
-  if (any(greaterThanEqual(low, low_size))) return;
-  UpsampleTaps taps = upsample_taps(low_tex, depth_tex, normal_tex, low, k);
-  ivec2 end = upsample_block_end(low, k, low_size, full_size);
-  for (int y = low.y * k; y < end.y; ++y)
-    for (int x = low.x * k; x < end.x; ++x) {
-      ivec2 texel = ivec2(x, y);
-      float depth = texelFetch(depth_tex, texel, 0).r;
-      vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, texel, 0).rgb);
-      vec2 f = upsample_fraction(texel, low, k);
-      imageStore(result, texel, depth > 0.0 ? upsample_pixel(taps, depth, n, f) : vec4(0.0));
-    }
-}
+// gi.irradiance_volume's, gi.lpv's and gi.voxel's upsample of light (rgba16f) at resolution_scale
+// 1/k below 1 (upsample_pass.glsl).
+#define LG_UPSAMPLE_FORMAT rgba16f
+#define LG_UPSAMPLE_SKY vec4(0.0)
+#include "nodes/gi/irradiance_volume/shaders/upsample_pass.glsl"

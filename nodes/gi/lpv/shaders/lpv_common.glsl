@@ -6,7 +6,7 @@
 #define LG_PI 3.14159265358979
 
 struct LpvConstants {
-  vec4 origin_cell;  // xyz: the grid's corner (lpv_grid.h), w: a cell's edge in metres
+  vec4 origin_cell;  // xyz: the grid's corner (nodes/gi/common/cell_grid.h), w: a cell's edge in metres
   ivec4 counts;      // xyz: cells per axis, w: the RSM's edge in texels
   vec4 light;        // xyz: the way the light travels (unit), w: an RSM texel's area across the beam, m^2
   vec4 scales;       // x: fixed-point units per W/sr of injected intensity, y: per unit of occlusion

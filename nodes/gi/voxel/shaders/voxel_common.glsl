@@ -1,0 +1,52 @@
+// What gi.voxel's compute passes share (voxel_kernel.cpp fills the constants, std140): the grid
+// (nodes/gi/common/cell_grid.h, every count a power of two), the light and its shadow map's
+// projection, and the voxelization's fixed-point sums.
+#ifndef LG_VOXEL_COMMON_GLSL
+#define LG_VOXEL_COMMON_GLSL
+
+#define LG_PI 3.14159265358979
+
+struct VoxelConstants {
+  vec4 origin_cell;        // xyz: the grid's corner, w: a voxel's edge in metres
+  ivec4 counts;            // xyz: voxels per axis at level 0, w: levels in the chain
+  vec4 light;              // xyz: the way the light travels (unit), w: 1 when there is a light
+  vec4 irradiance;         // rgb: the light's irradiance, W/m^2; w: ao_distance, m
+  mat4 shadow_from_world;  // into the shadow map's clip space (reversed depth, 1 nearest the light)
+  ivec4 chain;             // x: the axis (0, 1, 2) along which the chain's images hold two halves
+};
+
+layout(std140, binding = 0) uniform ConstantsBlock { VoxelConstants voxel; };
+
+// The voxelization's sums, 8 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, unused.
+// Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two million triangles a voxel.
+#define LG_VOXEL_INTS 8
+const float kVoxelUnit = 1024.0;
+
+uint voxel_index(ivec3 c) {
+  return uint((c.z * voxel.counts.y + c.y) * voxel.counts.x + c.x);
+}
+
+// The voxel of a one-invocation-per-voxel dispatch (width counts.x, height counts.y x counts.z)
+// over a level whose counts are `counts`.
+ivec3 voxel_invocation_cell(ivec3 counts) {
+  ivec2 id = ivec2(gl_GlobalInvocationID.xy);
+  return ivec3(id.x, id.y % counts.y, id.y / counts.y);
+}
+
+// The chain: three 3D images, one per axis, each the light seen by rays travelling along that
+// axis, the positive direction in the first half of the image along voxel.chain.x (the grid's
+// longest axis, so that every level has both halves) and the negative in the second; mip l is
+// level l, whose counts are voxel_level_counts(l).
+ivec3 voxel_level_counts(int level) {
+  return max(voxel.counts.xyz >> level, ivec3(1));
+}
+
+// Where voxel c of a level of `counts` lies in its image: in the first half for rays travelling
+// the positive way (negative = 0), else in the second.
+ivec3 voxel_chain_texel(ivec3 c, ivec3 counts, int negative) {
+  ivec3 t = c;
+  t[voxel.chain.x] += negative * counts[voxel.chain.x];
+  return t;
+}
+
+#endif

@@ -1,0 +1,128 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// gi.voxel's cones, one invocation per G-buffer pixel (or per texel of the smaller target at
+// resolution_scale 1/k, as gi.lpv's lookup): six cones of 60 degrees (half-angle 30) over the
+// normal's hemisphere, one along the normal and five 60 degrees from it, 72 degrees apart. Each
+// starts one voxel out along the normal and marches front to back through the anisotropic chain
+// (voxel_common.glsl; the three directions facing the ray, weighted by the squares of its
+// components). A sample at distance t reads, trilinearly within one level, the level whose
+// voxels are as wide as the cone there (2 t tan 30, rounded down to a level), but never wider
+// than 2/3 of the sample's height h above the surface's tangent plane: the filter reaches one
+// voxel beyond the sample, so voxels of width w <= h / 1.5 never blend in the surface the cone
+// starts from (with the cone's own width an open floor lit itself through every coarse level:
+// E = 1.76 W/m^2 under a 10 W/m^2 sun, 82% of its own radiance times pi). Steps of one sample's
+// width, so that no voxel is skipped or counted twice; it stops once 99% opaque or out of the
+// grid. Nothing beyond the grid lights it (one bounce of the directional light, no sky).
+// Weights: the cosine-weighted share of the hemisphere inside the normal's cone is
+// sin^2(30 deg) = 1/4 exactly; the other five share the rest, 3/20 each. E = pi sum w_i L_i,
+// exact for a uniform radiance L. Ambient occlusion: 1 - sum w_i a_i with each cone's opacity
+// a_i gathered within ao_distance.
+// rgb: irradiance, W/m^2; a: coverage, 1 where the surface lies in the grid's box and there is a
+// light, else 0.
+#include "nodes/gi/voxel/shaders/voxel_common.glsl"
+#include "nodes/common/shaders/camera.glsl"
+#include "nodes/common/shaders/finite.glsl"
+#include "nodes/common/shaders/gbuffer.glsl"
+#include "nodes/common/shaders/joint_upsample.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std140, binding = 1) uniform CameraBlock { Camera camera; };  // at the G-buffer's size
+layout(binding = 2) uniform sampler2D depth_tex;
+layout(binding = 3) uniform sampler2D normal_tex;
+// The chain (voxel_common.glsl), per axis, trilinear within a level.
+layout(binding = 4) uniform sampler3D seen_x;
+layout(binding = 7) uniform sampler3D seen_y;
+layout(binding = 8) uniform sampler3D seen_z;
+layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
+layout(binding = 6, r8) uniform writeonly image2D ao;
+layout(push_constant) uniform Push {
+  int k;  // the G-buffer's resolution over the targets'
+};
+
+const float kTanHalfAngle = 0.57735027;  // tan 30 deg
+const float kCentreWeight = 0.25, kSideWeight = 0.15;
+
+// What a ray travelling along `negative` (0 or 1) of `image`'s axis sees at `uvw` (the grid's
+// box in [0, 1]^3) of `level`: within its half, clamped half a voxel inside it so the filter does
+// not blend the other half in.
+vec4 seen(sampler3D image, vec3 uvw, int level, int negative) {
+  int axis = voxel.chain.x;
+  float n = float(voxel_level_counts(level)[axis]);
+  uvw[axis] = (clamp(uvw[axis], 0.5 / n, 1.0 - 0.5 / n) + float(negative)) * 0.5;
+  return textureLod(image, uvw, float(level));
+}
+
+// The chain at `uvw` and `level` for a ray along `d` (unit): the three directions facing the ray,
+// weighted by d's squared components (they sum to 1).
+vec4 sample_chain(vec3 uvw, int level, vec3 d) {
+  vec3 w = d * d;
+  return w.x * seen(seen_x, uvw, level, int(d.x < 0.0)) + w.y * seen(seen_y, uvw, level, int(d.y < 0.0)) +
+         w.z * seen(seen_z, uvw, level, int(d.z < 0.0));
+}
+
+struct Cone {
+  vec3 light;      // radiance gathered, W/m^2/sr
+  float occluded;  // opacity gathered within ao_distance
+};
+
+// `cosine`: of the cone's axis with the normal (h grows by it per metre of t).
+Cone trace(vec3 origin, vec3 direction, float cosine) {
+  float cell = voxel.origin_cell.w;
+  vec3 grid_size = cell * vec3(voxel.counts.xyz);
+  float top = float(voxel.counts.w - 1);
+  vec3 light = vec3(0.0);
+  float opacity = 0.0, occluded = 0.0;
+  float t = cell;
+  for (int s = 0; s < 128 && opacity < 0.99; ++s) {
+    // The level whose voxels are at most that wide: a whole level, as blending in the next one
+    // would reach twice as far.
+    float level = min(floor(log2(max(min(2.0 * t * kTanHalfAngle, (cell + t * cosine) / 1.5), cell) / cell)), top);
+    float width = cell * exp2(level);
+    vec3 uvw = (origin + direction * t - voxel.origin_cell.xyz) / grid_size;
+    if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
+    vec4 v = sample_chain(uvw, int(level), direction);
+    light += (1.0 - opacity) * max(v.rgb, vec3(0.0));
+    opacity += (1.0 - opacity) * clamp(v.a, 0.0, 1.0);
+    if (t <= voxel.irradiance.w) occluded = opacity;
+    t += width;
+  }
+  return Cone(light, occluded);
+}
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(texel, imageSize(irradiance)))) return;
+  ivec2 source = upsample_source_texel(texel, k, textureSize(depth_tex, 0));
+  float depth = texelFetch(depth_tex, source, 0).r;
+  float cell = voxel.origin_cell.w;
+  vec3 p = depth > 0.0 ? world_position(camera, source, depth) : vec3(0.0);
+  vec3 g = (p - voxel.origin_cell.xyz) / cell;
+  vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
+  float len = length(n);
+  if (!(depth > 0.0) || !all_finite(vec4(p, 0.0)) || any(lessThan(g, vec3(0.0))) ||
+      any(greaterThan(g, vec3(voxel.counts.xyz))) || !(len > 1e-6) || voxel.light.w == 0.0) {
+    imageStore(irradiance, texel, vec4(0.0));
+    imageStore(ao, texel, vec4(1.0));
+    return;
+  }
+  n /= len;
+  // An orthonormal frame about n (Duff et al. 2017).
+  float s = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (s + n.z), b = n.x * n.y * a;
+  vec3 t1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x), t2 = vec3(b, s + n.y * n.y * a, -n.y);
+  vec3 origin = p + n * cell;
+  Cone centre = trace(origin, n, 1.0);
+  vec3 light = kCentreWeight * centre.light;
+  float occluded = kCentreWeight * centre.occluded;
+  for (int i = 0; i < 5; ++i) {
+    float phi = float(i) * (2.0 * LG_PI / 5.0);
+    vec3 d = 0.5 * n + 0.86602540 * (cos(phi) * t1 + sin(phi) * t2);
+    Cone side = trace(origin, d, 0.5);
+    light += kSideWeight * side.light;
+    occluded += kSideWeight * side.occluded;
+  }
+  vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
+  imageStore(irradiance, texel, vec4(e, 1.0));
+  imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
+}

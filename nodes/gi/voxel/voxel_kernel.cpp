@@ -1,0 +1,305 @@
+#include "nodes/gi/voxel/voxel_kernel.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "nodes/common/camera_constants.h"
+#include "nodes/common/compute.h"
+#include "nodes/common/node_params.h"
+#include "nodes/common/node_shaders.h"
+#include "nodes/gi/common/cell_grid.h"
+#include "nodes/gi/common/main_light.h"
+#include "nodes/lighting/deferred/shadow_projection.h"
+#include "nodes/scene/gbuffer/draw_constants.h"
+#include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/buffer.h"
+#include "runtime/gpu/descriptors.h"
+#include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/host_buffer.h"
+#include "runtime/gpu/image.h"
+#include "runtime/gpu/pipeline.h"
+#include "runtime/scene/scene_view.h"
+
+namespace lg {
+namespace {
+
+constexpr uint64_t kGridBytesPerVoxel = 8 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
+constexpr uint32_t kTrianglesPerGroup = 64;                   // voxelize.comp's local size
+
+struct Constants {  // shaders/voxel_common.glsl
+  glm::vec4 origin_cell;
+  glm::ivec4 counts;
+  glm::vec4 light;
+  glm::vec4 irradiance;
+  glm::mat4 shadow_from_world;
+  glm::ivec4 chain;
+};
+
+struct ShadowPush {  // lighting.deferred's shadow_draw.glsl
+  glm::mat4 shadow_from_world;
+  uint32_t draw_index;
+  uint32_t pad[3];
+};
+
+struct VoxelizePush {  // shaders/voxelize.comp
+  uint32_t draw_index, triangle_count;
+};
+
+class VoxelKernel final : public NodeKernel {
+ public:
+  explicit VoxelKernel(const PlanNode& node)
+      : resolution_(int(param_number(node, "resolution"))),
+        ao_distance_(float(param_number(node, "ao_distance"))),
+        facing_colour_(param_bool(node, "facing_colour")),
+        k_(resolution_divisor(node)) {}
+
+  void record(PassContext& ctx) override {
+    const std::string& pass = ctx.pass().pass;
+    if (pass == "shadow")
+      record_shadow(ctx);
+    else if (pass == "volume")
+      record_volume(ctx);
+    else if (pass == "upsample")
+      upsample(ctx);
+    else
+      throw std::logic_error("gi.voxel has no pass '" + pass + "'");
+  }
+
+ private:
+  // Once a frame, at its first pass: the light, the grid and the constants, all from this
+  // frame's scene (lights and objects may move every frame).
+  void prepare(PassContext& ctx) {
+    if (prepared_frame_ == ctx.frame_index() && constants_) return;
+    prepared_frame_ = ctx.frame_index();
+    const SceneView& scene = ctx.scene();
+    const Bounds bounds = draws_bounds(scene, ctx.gpu_scene().mesh_bounds());
+    grid_ = fit_power_of_two_grid(bounds, resolution_);
+    allocate(ctx);
+
+    Constants c{};
+    c.origin_cell = glm::vec4(grid_.origin, grid_.cell);
+    c.counts = glm::ivec4(grid_.counts, int(levels_));
+    c.chain = glm::ivec4(doubled_axis_, 0, 0, 0);
+    c.light = glm::vec4(0, -1, 0, 0);
+    c.irradiance = glm::vec4(0.0f, 0.0f, 0.0f, ao_distance_);
+    const int light = main_directional_light(scene);
+    light_present_ = light >= 0;
+    if (light_present_) {
+      const DirectionalLightData& d = scene.directional_lights[light];
+      const glm::vec3 direction = glm::normalize(d.direction);
+      c.light = glm::vec4(direction, 1.0f);
+      c.irradiance = glm::vec4(glm::max(d.irradiance, glm::vec3(0.0f)), ao_distance_);
+      c.shadow_from_world = shadow_from_world(bounds, direction);
+    }
+    shadow_from_world_ = c.shadow_from_world;
+    if (!constants_) {
+      constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    }
+    constants_->write_value(c);
+    draws_->write(draw_constants(scene));
+  }
+
+  // The sums and the chain, sized when the counts change (the box of a moving world may change
+  // them).
+  void allocate(PassContext& ctx) {
+    if (grid_.counts == allocated_counts_) return;
+    grid_sums_ = Buffer::dedicated(
+        ctx.gpu(), {.name = ctx.node().id + " voxel sums", .size = grid_.cell_count() * kGridBytesPerVoxel});
+    const int longest = std::max({grid_.counts.x, grid_.counts.y, grid_.counts.z});
+    levels_ = uint32_t(std::bit_width(unsigned(longest)));  // down to one voxel
+    auto image = [&](const std::string& name, glm::ivec3 counts, uint32_t mips) {
+      return Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name,
+                                          .kind = ImageKind::image3d,
+                                          .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                          .width = uint32_t(counts.x),
+                                          .height = uint32_t(counts.y),
+                                          .depth = uint32_t(counts.z),
+                                          .mips = mips,
+                                          .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
+    };
+    // Per axis, rays travelling the positive way in the first half along the longest axis and the
+    // negative way in the second (voxel_common.glsl).
+    doubled_axis_ = int(std::max_element(&grid_.counts.x, &grid_.counts.x + 3) - &grid_.counts.x);
+    glm::ivec3 extent = grid_.counts;
+    extent[doubled_axis_] *= 2;
+    const char* axes[3] = {"x", "y", "z"};
+    for (int a = 0; a < 3; ++a) seen_[a] = image(std::string("voxels seen along ") + axes[a], extent, levels_);
+    images_new_ = true;
+    allocated_counts_ = grid_.counts;
+  }
+
+  // Depth of every draw from the light, both sides of every face (lighting.deferred's shadow
+  // shaders; alpha-tested materials are drawn opaque).
+  void record_shadow(PassContext& ctx) {
+    prepare(ctx);
+    Image& map = ctx.image("tmp.shadow_map");
+    const uint32_t size = map.desc().width;
+    VkRenderingAttachmentInfo depth = cleared_attachment(map.view(), {.depthStencil = {0.0f, 0}});
+    const VkRenderingInfo rendering = rendering_info(size, size, {}, &depth);
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBeginRendering(cmd, &rendering);
+    if (light_present_) {
+      GraphicsPipelineDesc desc;
+      desc.name = ctx.pass().name;
+      desc.vertex_shader = node_shader("nodes/lighting/deferred/shaders/shadow.vert");
+      desc.fragment_shader = node_shader("nodes/lighting/deferred/shaders/shadow.frag");
+      desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+      desc.push_constant_bytes = sizeof(ShadowPush);
+      desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};  // positions only
+      desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)}};
+      desc.depth_format = map.desc().format;
+      desc.depth_test = desc.depth_write = true;
+      const Pipeline& pipeline = ctx.pipelines().graphics(desc);
+      set_viewport(cmd, size, size);
+      const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle())};
+      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+      const SceneView& scene = ctx.scene();
+      for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+        push_constants(cmd, pipeline, ShadowPush{shadow_from_world_, i, {}});
+        draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
+      }
+    }
+    vkCmdEndRendering(cmd);
+  }
+
+  // The steps in the node's own buffer and image, which the plan does not see, so it could not
+  // order separate passes by them.
+  void record_volume(PassContext& ctx) {
+    prepare(ctx);
+    voxelize(ctx);
+    inject(ctx);
+    build_chain(ctx);
+    trace_cones(ctx);
+  }
+
+  void voxelize(PassContext& ctx) {
+    VkCommandBuffer cmd = ctx.cmd();
+    // Last frame's injection read the sums; clear them for this frame's atomics.
+    memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+                   {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    vkCmdFillBuffer(cmd, grid_sums_.handle(), 0, VK_WHOLE_SIZE, 0);
+    memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                   {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    const SceneView& scene = ctx.scene();
+    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+      const GpuMesh& mesh = ctx.gpu_scene().mesh(scene.draws[i].mesh);
+      const VoxelizePush push{i, mesh.index_count / 3};
+      if (push.triangle_count == 0) continue;
+      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, draws_->handle()),
+                                        storage_buffer(2, mesh.vertices.handle()),
+                                        storage_buffer(3, mesh.indices.handle()),
+                                        storage_buffer(4, grid_sums_.handle())};
+      dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxelize.comp", writes, push.triangle_count, 1,
+                       std::as_bytes(std::span(&push, 1)), kTrianglesPerGroup);
+    }
+  }
+
+  // The sums into level 0 (the chain kept in the GENERAL layout).
+  void inject(PassContext& ctx) {
+    VkCommandBuffer cmd = ctx.cmd();
+    if (images_new_) {
+      for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    }
+    images_new_ = false;
+    compute_to_compute_barrier(cmd);  // the atomics; last frame's reads of the chain
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
+                                      storage_buffer(1, grid_sums_.handle()),
+                                      sampled_image(2, ctx.image("tmp.shadow_map").view(), ctx.nearest_sampler()),
+                                      storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
+                                      storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
+                                      storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1}))};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
+                     uint32_t(grid_.counts.y * grid_.counts.z));
+  }
+
+  void build_chain(PassContext& ctx) {
+    for (uint32_t level = 1; level < levels_; ++level) {
+      compute_to_compute_barrier(ctx.cmd());
+      const glm::ivec3 counts = glm::max(grid_.counts >> int(level), glm::ivec3(1));
+      std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle())};
+      for (uint32_t a = 0; a < 3; ++a)
+        writes.push_back(storage_image(1 + a, seen_[a].view({.base_mip = level - 1, .mip_count = 1})));
+      for (uint32_t a = 0; a < 3; ++a)
+        writes.push_back(storage_image(4 + a, seen_[a].view({.base_mip = level, .mip_count = 1})));
+      writes.push_back(storage_buffer(7, grid_sums_.handle()));
+      const int32_t push[2] = {int32_t(level), facing_colour_ ? 1 : 0};
+      dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_downsample.comp", writes, uint32_t(counts.x),
+                       uint32_t(counts.y * counts.z), std::as_bytes(std::span(push)));
+    }
+  }
+
+  void trace_cones(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());
+    // At the G-buffer's size: the cones start from positions reconstructed at its pixels.
+    Image& depth = ctx.image("in.gbuffer", 0);
+    camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
+    Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
+    Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
+    std::vector<DescriptorWrite> writes = {
+        uniform_buffer(0, constants_->handle()),
+        uniform_buffer(1, camera_->handle()),
+        sampled_image(2, depth.view(), ctx.nearest_sampler()),
+        sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        storage_image(5, target.view()),
+        storage_image(6, ao.view()),
+        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
+  }
+
+  // At resolution_scale below 1, the cones' smaller images to full resolution, guided by depth
+  // and normals (gi.irradiance_volume's upsample); at 1 the cones wrote the outputs themselves.
+  void upsample(PassContext& ctx) {
+    if (k_ == 1) return;
+    const std::pair<const char*, const char*> images[] = {
+        {"tmp.lowres", "nodes/gi/irradiance_volume/shaders/upsample.comp"},
+        {"tmp.ao_lowres", "nodes/gi/voxel/shaders/voxel_ao_upsample.comp"}};
+    const char* outputs[] = {"out.irradiance", "out.ao"};
+    for (int i = 0; i < 2; ++i) {
+      Image& low = ctx.image(images[i].first);
+      const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                        sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                        storage_image(3, ctx.image(outputs[i]).view())};
+      dispatch_compute(ctx, images[i].second, writes, low.desc().width, low.desc().height,
+                       std::as_bytes(std::span(&k_, 1)));
+    }
+  }
+
+  const int resolution_;
+  const float ao_distance_;
+  const bool facing_colour_;
+  const int32_t k_;  // the G-buffer's resolution over the cones' targets: 1 / resolution_scale
+  std::optional<uint64_t> prepared_frame_;
+  CellGrid grid_;
+  glm::mat4 shadow_from_world_{1.0f};
+  bool light_present_ = false;
+  glm::ivec3 allocated_counts_{0};  // none yet
+  uint32_t levels_ = 1;
+  std::optional<HostBuffer> constants_, draws_, camera_;
+  Buffer grid_sums_;
+  std::array<Image, 3> seen_;  // the chain as rays along x, y and z see it (voxel_common.glsl)
+  int doubled_axis_ = 0;       // the axis along which those hold both directions
+  bool images_new_ = false;    // not yet in the GENERAL layout
+};
+
+}  // namespace
+
+std::unique_ptr<NodeKernel> make_voxel_kernel(const PlanNode& node) {
+  return std::make_unique<VoxelKernel>(node);
+}
+
+}  // namespace lg

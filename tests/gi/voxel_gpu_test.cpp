@@ -1,0 +1,336 @@
+// gi.voxel on lavapipe, at tiny sizes:
+// - a floor beside a wall: with the wall's face lit, the floor beside it gets what the face gives
+//   it (an integral over the face), the open floor next to nothing and no occlusion, the corner
+//   some; with the face dark, next to nothing; with the sun at zero, exactly zero;
+// - a closed room lit from outside: the known leak through its ceiling stays below its bound;
+// - the frame after the sun turns and the wall moves equals a fresh renderer's;
+// - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
+//   every output finite, validation clean;
+// - a scene without a directional light drops the node from examples/gi-voxel.json, with the
+//   reason in the plan.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "api/renderer.h"
+#include "graph/compiler.h"
+#include "graph/graph_io.h"
+#include "nodes/builtin_schemas.h"
+#include "nodes/gi/path_tracer/path_transport.h"
+#include "nodes/raytrace/camera_pixels.h"
+#include "runtime/scene/make_scene_view.h"
+#include "runtime/scene/mesh_generators.h"
+#include "tests/runtime/gpu_test.h"
+
+namespace lg::test {
+namespace {
+
+constexpr FrameSize kFrame{64, 36};
+constexpr double kPi = 3.14159265358979323846;
+
+Graph voxel_graph(int resolution, double resolution_scale, bool facing_colour = false) {
+  Diagnostics d("voxel-test.json");
+  std::optional<Graph> graph = parse_graph_text(
+      R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "voxel", "type": "gi.voxel", "params": { "resolution": )" +
+          std::to_string(resolution) + R"(, "resolution_scale": )" + std::to_string(resolution_scale) +
+          R"(, "shadow_size": 256, "facing_colour": )" + (facing_colour ? "true" : "false") + R"( } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "voxel.gbuffer" } ],
+    "outputs": [ "voxel.irradiance", "voxel.ao" ] })",
+      d);
+  if (!graph) throw std::runtime_error(d.to_string());
+  return std::move(*graph);
+}
+
+std::unique_ptr<Renderer> make_renderer(const Graph& graph) {
+  RendererOptions options;
+  options.device.validation = true;
+  options.alias = false;
+  auto renderer = std::make_unique<Renderer>(options);
+  renderer->set_graph(graph);
+  return renderer;
+}
+
+void add_camera_and_sun(World& world, glm::vec3 eye, glm::vec3 look, glm::vec3 sun_direction, float intensity) {
+  Entity camera = world.create("camera");
+  world.add(camera, Camera{});
+  Transform& t = world.add(camera, Transform{});
+  t.position = eye;
+  t.rotation = look_rotation(look);
+  Entity sun = world.create("sun");
+  world.add(sun, DirectionalLight{.intensity = intensity});
+  world.add(sun, Transform{}).rotation = look_rotation(sun_direction);
+}
+
+// The sun of floor_and_wall(): from the east, high, it lights the floor and the wall's east face;
+// from the west the wall shades the floor beside it and its east face is dark.
+constexpr glm::vec3 kSunFromTheEast{-0.6f, -1.0f, -0.2f}, kSunFromTheWest{0.6f, -1.0f, -0.2f};
+constexpr float kWhite = 0.8f, kWallFace = -2.0f, kWallHeight = 2.0f, kWallHalfLength = 2.0f;
+
+// A white 4 m floor and, standing on it along its west edge, a white wall 2 m high facing east.
+World floor_and_wall(glm::vec3 sun_direction, float sun_intensity) {
+  World world;
+  PbrMaterial white;
+  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
+  const int material = world.add_material(white);
+  Entity floor = world.create("floor");
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), material});
+  world.add(floor, Transform{});
+  Entity wall = world.create("wall");
+  world.add(wall, MeshRenderer{world.add_mesh(make_box({0.2f, kWallHeight, 2.0f * kWallHalfLength})), material});
+  world.add(wall, Transform{}).position = {kWallFace - 0.1f, 0.5f * kWallHeight, 0.0f};
+  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, sun_direction, sun_intensity);
+  return world;
+}
+
+// The irradiance at floor point p from the wall's east face of uniform radiance `radiance`: the
+// integral of L cos(at p) cos(at the wall) / r^2 over the face, by the midpoint rule on 2.5 cm
+// squares (the nearest strip pixels lie 5 cm or more from the face, where that rule is within
+// 1% of the exact form factor).
+double irradiance_from_the_wall(glm::dvec3 p, double radiance) {
+  constexpr int rows = 80, columns = 160;
+  const double dy = kWallHeight / rows, dz = 2.0 * kWallHalfLength / columns;
+  double e = 0;
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < columns; ++j) {
+      const glm::dvec3 r = glm::dvec3(kWallFace, (i + 0.5) * dy, -kWallHalfLength + (j + 0.5) * dz) - p;
+      const double r2 = glm::dot(r, r);
+      e += radiance * (r.y / std::sqrt(r2)) * (-r.x / std::sqrt(r2)) / r2 * dy * dz;
+    }
+  return e;
+}
+
+struct FloorStrips {
+  double near_wall = 0, far_side = 0, near_ao = 0, far_ao = 0;
+  double near_expected = 0;  // irradiance_from_the_wall() over the near strip's pixels
+};
+
+// The node's mean irradiance (green) and occlusion on the floor's pixels within 0.6 m of the wall
+// and on those more than 2.4 m from it (the floor spans x from -2 to 2), found by tracing the
+// pixels' rays on the CPU; and what the near strip should get from a wall face of `wall_radiance`.
+FloorStrips floor_strips(const World& world, const std::vector<float>& e, const std::vector<float>& ao,
+                         double wall_radiance) {
+  const SceneView view = make_scene_view(world, float(kFrame.width) / kFrame.height);
+  const PathScene scene(view, PathEnvironment::none());
+  const PathTransport transport(scene, 1);
+  const CameraPixels camera(view.camera, kFrame.width, kFrame.height);
+  FloorStrips out;
+  size_t near = 0, far = 0;
+  for (uint32_t y = 0; y < kFrame.height; ++y)
+    for (uint32_t x = 0; x < kFrame.width; ++x) {
+      const auto s = transport.visible_surface(camera.eye(), camera.ray_direction(x, y), true);
+      if (!s || s->normal.y < 0.9 || s->position.y > 0.01) continue;
+      const size_t i = 4 * (size_t(y) * kFrame.width + x);
+      if (s->position.x < -1.4) {
+        out.near_wall += e[i + 1], out.near_ao += ao[i], ++near;
+        out.near_expected += irradiance_from_the_wall(s->position, wall_radiance);
+      }
+      if (s->position.x > 0.4) out.far_side += e[i + 1], out.far_ao += ao[i], ++far;
+    }
+  EXPECT_GT(near, 20u);
+  EXPECT_GT(far, 20u);
+  out.near_wall /= double(std::max<size_t>(near, 1)), out.near_ao /= double(std::max<size_t>(near, 1));
+  out.near_expected /= double(std::max<size_t>(near, 1));
+  out.far_side /= double(std::max<size_t>(far, 1)), out.far_ao /= double(std::max<size_t>(far, 1));
+  return out;
+}
+
+// The sun from the east: the wall's east face sends L = 0.8 E cos / pi back (cos = 0.51), and the
+// floor beside it must get what that face gives it (the integral over the face, one bounce: the
+// floor's light reflected by the wall back to the floor is a second bounce, which the node does
+// not carry) within 30%: six 60-degree cones are a coarse quadrature of the hemisphere, and the
+// voxels are 13 cm here (measured +13%). The open floor 2.4 m away sees the face far and low: at
+// most a fifth of the near strip (measured 1/11), and nothing occludes it (AO near 1: the cones do
+// not see the floor they start from, docs/voxel.md), while the corner is occluded. The sun from
+// the west leaves the face towards the strip dark: next to nothing (measured 4.6% of the lit
+// case). With the sun at zero every voxel is black, and the irradiance must be exactly zero, its
+// coverage still 1.
+TEST(Voxel, LightsTheFloorBesideALitWallAndNothingWithoutLight) {
+  auto renderer = make_renderer(voxel_graph(32, 1.0));
+  const World world = floor_and_wall(kSunFromTheEast, 10.0f);
+  renderer->render(world, kFrame);
+  const double wall_radiance = kWhite * 10.0 * -kSunFromTheEast.x / glm::length(kSunFromTheEast) / kPi;
+  const FloorStrips lit = floor_strips(world, renderer->executor().read_image("voxel.irradiance"),
+                                       renderer->executor().read_image("voxel.ao"), wall_radiance);
+  std::printf(
+      "sun from the east: floor beside the wall E %.4f (its face gives %.4f), AO %.3f; far side E %.4f, AO %.3f\n",
+      lit.near_wall, lit.near_expected, lit.near_ao, lit.far_side, lit.far_ao);
+  EXPECT_NEAR(lit.near_wall, lit.near_expected, 0.3 * lit.near_expected);
+  EXPECT_LT(5.0 * lit.far_side, lit.near_wall);
+  EXPECT_GT(lit.far_ao, 0.95);
+  EXPECT_LT(lit.near_ao + 0.1, lit.far_ao);
+
+  const World shaded = floor_and_wall(kSunFromTheWest, 10.0f);
+  renderer->render(shaded, kFrame);
+  const FloorStrips dark_face = floor_strips(shaded, renderer->executor().read_image("voxel.irradiance"),
+                                             renderer->executor().read_image("voxel.ao"), 0.0);
+  std::printf("sun from the west: floor beside the wall E %.4f\n", dark_face.near_wall);
+  EXPECT_LT(dark_face.near_wall, 0.1 * lit.near_wall);
+
+  renderer->render(floor_and_wall(kSunFromTheEast, 0.0f), kFrame);
+  const std::vector<float> none = renderer->executor().read_image("voxel.irradiance");
+  size_t covered = 0;
+  for (size_t i = 0; i < none.size(); ++i) {
+    if (i % 4 == 3)
+      covered += none[i] == 1.0f;
+    else
+      EXPECT_EQ(none[i], 0.0f) << "value " << i;
+  }
+  EXPECT_GT(covered, size_t(kFrame.width) * kFrame.height / 2);
+  expect_no_validation_messages(renderer->context());
+}
+
+// A closed room (4 x 3 x 4 m inside, walls, floor and ceiling 0.1 m slabs) under a 10 W/m^2 sun
+// from above: nothing lit is inside, so the truth inside is 0 everywhere. The node's known leak
+// (docs/voxel.md): the voxelization is a hollow shell of one-voxel layers, and at coarse levels a
+// voxel holding the ceiling slab shows rays travelling sideways its sunlit top row beside its dark
+// bottom row, so the side cones see through the ceiling. Bound: the mean irradiance inside below
+// 3% of pi x the roof's radiance (measured 1.8% at resolution 32, the same with 0.4 m slabs and at
+// 64), so that a change that makes it worse fails; with facing_colour, which hides the top row
+// from sideways rays, below 0.1% (measured 0.00%).
+TEST(Voxel, ClosedRoomLitFromOutsideLeaksBelowItsBound) {
+  World world;
+  PbrMaterial white;
+  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
+  const int material = world.add_material(white);
+  auto slab = [&](glm::vec3 size, glm::vec3 at) {
+    Entity e = world.create("slab");
+    world.add(e, MeshRenderer{world.add_mesh(make_box(size)), material});
+    world.add(e, Transform{}).position = at;
+  };
+  const float t = 0.1f;
+  slab({4 + 2 * t, t, 4 + 2 * t}, {0, -t / 2, 0});
+  slab({4 + 2 * t, t, 4 + 2 * t}, {0, 3 + t / 2, 0});
+  slab({t, 3, 4}, {-2 - t / 2, 1.5f, 0});
+  slab({t, 3, 4}, {2 + t / 2, 1.5f, 0});
+  slab({4, 3, t}, {0, 1.5f, -2 - t / 2});
+  slab({4, 3, t}, {0, 1.5f, 2 + t / 2});
+  const glm::vec3 sun{-0.1f, -1.0f, -0.1f};
+  add_camera_and_sun(world, {0.0f, 2.5f, 1.8f}, {0.0f, -0.8f, -1.0f}, sun, 10.0f);
+  const double roof = kWhite * 10.0 * -sun.y / glm::length(sun) / kPi;
+  for (const bool facing : {false, true}) {
+    auto renderer = make_renderer(voxel_graph(32, 1.0, facing));
+    renderer->render(world, kFrame);
+    const std::vector<float> e = renderer->executor().read_image("voxel.irradiance");
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < e.size(); i += 4)
+      if (e[i + 3] > 0.5f) sum += e[i + 1], ++n;
+    std::printf("inside the closed room, facing_colour %d: mean E %.4f, %.2f%% of pi x the roof's radiance\n", facing,
+                sum / double(n), 100.0 * sum / double(n) / (kPi * roof));
+    ASSERT_EQ(n, size_t(kFrame.width) * kFrame.height);  // every pixel sees the inside
+    EXPECT_LT(sum / double(n), (facing ? 0.001 : 0.03) * kPi * roof);
+    expect_no_validation_messages(renderer->context());
+  }
+}
+
+// Nothing is kept between frames but the buffers: after the sun turns to the west and the wall
+// rises 0.5 m (the box grows from 2 m to 2.5 m high, so the grid's counts go from 32 x 16 x 32 to
+// 32 x 32 x 32 and the images are made anew), the next frame equals a fresh renderer's frame of
+// the changed scene (integer atomics and fixed passes make both exact up to the half floats,
+// hence 1e-3 of the largest value).
+TEST(Voxel, NextFrameFollowsAMovedWallAndATurnedSun) {
+  World world = floor_and_wall(kSunFromTheEast, 10.0f);
+  const Graph graph = voxel_graph(32, 1.0);
+  auto renderer = make_renderer(graph);
+  renderer->render(world, kFrame);
+  const std::vector<float> before = renderer->executor().read_image("voxel.irradiance");
+  world.each<DirectionalLight, Transform>(
+      [](Entity, DirectionalLight&, Transform& t) { t.rotation = look_rotation(kSunFromTheWest); });
+  world.each<MeshRenderer, Transform>([](Entity, MeshRenderer&, Transform& t) {
+    if (t.position.x < -1.0f) t.position.y += 0.5f;  // the wall
+  });
+  renderer->render(world, kFrame);
+  const std::vector<float> moved = renderer->executor().read_image("voxel.irradiance");
+  auto fresh = make_renderer(graph);
+  fresh->render(world, kFrame);
+  const std::vector<float> expected = fresh->executor().read_image("voxel.irradiance");
+
+  ASSERT_EQ(moved.size(), expected.size());
+  double largest = 0, worst = 0, change = 0;
+  for (size_t i = 0; i < expected.size(); ++i)
+    if (i % 4 != 3) {
+      largest = std::max(largest, double(std::abs(before[i])));
+      worst = std::max(worst, double(std::abs(moved[i] - expected[i])));
+      change += std::abs(moved[i] - before[i]);
+    }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_GT(change, 0.0);  // the frame did change
+  EXPECT_LE(worst, 1e-3 * largest);
+  expect_no_validation_messages(renderer->context());
+  expect_no_validation_messages(fresh->context());
+}
+
+// Zero-area triangles (all three corners on one point, and on one line), zero normals, a NaN
+// base colour on one mesh and a sun 1e30 W/m^2 bright, at resolution_scale 0.5 (the upsample
+// too): both outputs finite, validation clean.
+TEST(Voxel, StaysFiniteOnDegenerateInput) {
+  World world;
+  PbrMaterial plain;
+  PbrMaterial broken;
+  broken.base_color = glm::vec4(std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f, 1.0f);
+  Entity floor = world.create("floor");
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(plain)});
+  world.add(floor, Transform{});
+  Entity box = world.create("box");
+  world.add(box, MeshRenderer{world.add_mesh(make_box({1.0f, 1.0f, 1.0f})), world.add_material(broken)});
+  world.add(box, Transform{}).position = {0.5f, 0.5f, 0.0f};
+  MeshData flat;  // a point and a line as triangles, normals of zero length
+  flat.positions = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {-1, 0.5f, 0}, {0, 0.5f, 0}, {1, 0.5f, 0}};
+  flat.normals.assign(6, glm::vec3(0.0f));
+  flat.indices = {0, 1, 2, 3, 4, 5};
+  Entity degenerate = world.create("degenerate");
+  world.add(degenerate, MeshRenderer{world.add_mesh(std::move(flat)), world.add_material(plain)});
+  world.add(degenerate, Transform{});
+  add_camera_and_sun(world, {0.0f, 2.0f, 4.0f}, {0.0f, -0.4f, -1.0f}, {0.3f, -1.0f, -0.4f}, 1e30f);
+
+  auto renderer = make_renderer(voxel_graph(16, 0.5));
+  renderer->render(world, kFrame);
+  const std::vector<float> e = renderer->executor().read_image("voxel.irradiance");
+  const std::vector<float> ao = renderer->executor().read_image("voxel.ao");
+  size_t bad = 0, covered = 0;
+  for (size_t i = 0; i < e.size(); ++i) {
+    bad += !std::isfinite(e[i]) + !std::isfinite(ao[i]);
+    covered += i % 4 == 3 && e[i] > 0.5f;
+  }
+  EXPECT_EQ(bad, 0u);
+  EXPECT_GT(covered, 0u);  // the floor is in the grid
+  expect_no_validation_messages(renderer->context());
+}
+
+// examples/gi-voxel.json on a scene without a directional light: gi.voxel is bypassed, the plan
+// says why, none of its passes run, and lighting.ibl stays (its irradiance_volume input unlinked).
+TEST(Voxel, DroppedWithoutADirectionalLight) {
+  Diagnostics d;
+  std::optional<Graph> graph = load_graph_file(LUMAGRAPH_SOURCE_DIR "/examples/gi-voxel.json", d);
+  ASSERT_TRUE(graph) << d.to_string();
+  CompileOptions options;
+  options.scene = default_scene_summary();
+  options.scene.directional_lights = 0;
+  const CompileResult result = compile(*graph, builtin_registry(), options, d);
+  ASSERT_TRUE(result.plan) << d.to_string();
+  auto state_of = [&](const std::string& id) {
+    for (const PlanNode& n : result.plan->nodes)
+      if (n.id == id) return std::pair{n.state, n.reason};
+    return std::pair{NodeState::Kind::culled, std::string("missing")};
+  };
+  EXPECT_EQ(state_of("voxel").first, NodeState::Kind::bypassed);
+  EXPECT_EQ(state_of("voxel").second, "the scene has no directional lights");
+  EXPECT_EQ(state_of("ibl").first, NodeState::Kind::active);
+  for (const PlanPass& p : result.plan->passes) EXPECT_NE(p.name.rfind("voxel/", 0), 0u) << p.name;
+
+  options.scene.directional_lights = 1;  // and with one, its three passes
+  const CompileResult lit = compile(*graph, builtin_registry(), options, d);
+  ASSERT_TRUE(lit.plan) << d.to_string();
+  EXPECT_EQ(std::count_if(lit.plan->passes.begin(), lit.plan->passes.end(),
+                          [](const PlanPass& p) { return p.name.rfind("voxel/", 0) == 0; }),
+            3);
+}
+
+}  // namespace
+}  // namespace lg::test
