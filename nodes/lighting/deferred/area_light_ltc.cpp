@@ -23,45 +23,36 @@ float specular_result(float radiance, float integral) {
 
 }  // namespace
 
-LtcFrame ltc_frame(vec3 n, vec3 v, glm::vec4 entry) {
-  LtcFrame f;
-  f.n = glm::normalize(n);
-  vec3 t1 = v - f.n * glm::dot(f.n, v);
+glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
+  n = glm::normalize(n);
+  vec3 t1 = v - n * glm::dot(n, v);
   const float len = glm::length(t1);
   // Seen straight on, any tangent serves: the lobe is round there.
-  t1 = len > 1e-6f ? t1 / len : any_perpendicular(f.n);
-  const vec3 t2 = glm::cross(f.n, t1);
-  f.to_cosine = ltc_inverse(entry) * glm::transpose(glm::mat3(t1, t2, f.n));
-  // M^-1 maps the frame's (x, z) by [e.x e.y; e.z e.w], so the frame's z is
-  // (e.x y.z - e.z y.x) / det: the surface's horizon is a plane in the cosine's space (its scale
-  // is free: only signs and ratios of distances to it are used).
-  const float det = entry.x * entry.w - entry.y * entry.z;
-  f.horizon = vec3(-entry.z, 0.0f, entry.x) * det;
-  return f;
-}
-
-vec3 ltc_direction(const LtcFrame& frame, vec3 x) {
-  return glm::normalize(frame.to_cosine * x);
+  t1 = len > 1e-6f ? t1 / len : any_perpendicular(n);
+  const vec3 t2 = glm::cross(n, t1);
+  return ltc_inverse(entry) * glm::transpose(glm::mat3(t1, t2, n));
 }
 
 namespace {
 
-// The Lambert formula's term of the edge between unit vectors a and b: its angle times the z of
-// its unit normal.
+// The Lambert formula's term of edge a-b: its angle times the z of its unit normal.
 float edge_term(vec3 a, vec3 b) {
-  const vec3 c = glm::cross(a, b);
+  const vec3 e0 = glm::normalize(a), e1 = glm::normalize(b);
+  const vec3 c = glm::cross(e0, e1);
   const float s = glm::length(c);
   // atan2 keeps the angle exact for short edges, where acos of the dot product loses it.
-  return s > 0.0f ? c.z * std::atan2(s, glm::dot(a, b)) / s : 0.0f;
+  return s > 0.0f ? c.z * std::atan2(s, glm::dot(e0, e1)) / s : 0.0f;
 }
 
-// Where the great arc a-b crosses the plane through the origin (da, db: a's and b's distances
-// along its normal, of opposite signs), as a unit vector.
+// Where edge a-b crosses the plane through the origin with normal m (da, db: a's and b's
+// distances along m, of opposite signs).
 vec3 crossing(vec3 a, vec3 b, float da, float db) {
-  return glm::normalize(a + (b - a) * (da / (da - db)));
+  return a + (b - a) * (da / (da - db));
 }
 
-void add_cosine_edge(LtcClip& c, vec3 a, vec3 b) {
+}  // namespace
+
+void ltc_add_cosine_edge(LtcCosineClip& c, vec3 a, vec3 b) {
   if (a.z > 0.0f && b.z > 0.0f) {
     c.sum += edge_term(a, b);
   } else if (a.z > 0.0f) {
@@ -75,29 +66,34 @@ void add_cosine_edge(LtcClip& c, vec3 a, vec3 b) {
   }
 }
 
-}  // namespace
-
 void ltc_add_edge(LtcPolygon& poly, vec3 a, vec3 b) {
-  const float da = glm::dot(poly.horizon, a), db = glm::dot(poly.horizon, b);
-  LtcClip& s = poly.surface;
+  const float da = glm::dot(poly.n, a), db = glm::dot(poly.n, b);
   if (da > 0.0f && db > 0.0f) {
-    add_cosine_edge(poly.cosine, a, b);
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
   } else if (da > 0.0f) {
-    s.exit = crossing(a, b, da, db);
-    s.exited = true;
-    add_cosine_edge(poly.cosine, a, s.exit);
+    poly.exit = crossing(a, b, da, db);
+    poly.exited = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit);
   } else if (db > 0.0f) {
-    s.entry = crossing(a, b, da, db);
-    s.entered = true;
-    add_cosine_edge(poly.cosine, s.entry, b);
+    poly.entry = crossing(a, b, da, db);
+    poly.entered = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
   }
 }
 
 float ltc_finish(LtcPolygon& poly) {
-  if (poly.surface.exited && poly.surface.entered) add_cosine_edge(poly.cosine, poly.surface.exit, poly.surface.entry);
-  LtcClip& c = poly.cosine;
+  if (poly.exited && poly.entered)
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit, poly.to_cosine * poly.entry);
+  LtcCosineClip& c = poly.cosine;
   if (c.exited && c.entered) c.sum += edge_term(c.exit, c.entry);
   return std::fabs(c.sum) / (2.0f * kAreaLightPi);
+}
+
+LtcPolygon ltc_polygon(vec3 n, vec3 v, glm::vec4 entry) {
+  LtcPolygon poly;
+  poly.n = glm::normalize(n);
+  poly.to_cosine = ltc_to_cosine(n, v, entry);
+  return poly;
 }
 
 bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
@@ -135,24 +131,22 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
 }
 
 vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
-  // End 0's half circle faces away from end 1 (through -along) from angle pi / 2 to 3 pi / 2;
-  // end 1's is its negative (through +along).
+  // End 0's half circle faces away from end 1 (through -along), end 1's through +along.
   const int half = j / (kLtcArcSegments + 1);
-  const float angle = 0.5f * kAreaLightPi + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);
-  const vec3 offset = std::cos(angle) * o.along + std::sin(angle) * o.side;
-  return half == 0 ? o.ends[0] + o.radii[0] * offset : o.ends[1] - o.radii[1] * offset;
+  const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
+  const float angle = start + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);
+  return o.ends[half] + o.radii[half] * (std::cos(angle) * o.along + std::sin(angle) * o.side);
 }
 
 namespace {
 
 float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
-  const LtcFrame f = ltc_frame(n, v, entry);
   LtcOutline o;
-  if (!ltc_capsule_outline(a, b, radius, f.n, o)) return 0.0f;
-  LtcPolygon poly{f.horizon, {}, {}};
-  vec3 previous = ltc_direction(f, ltc_outline_vertex(o, kLtcOutlineVertices - 1));
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0f;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 previous = ltc_outline_vertex(o, kLtcOutlineVertices - 1);
   for (int j = 0; j < kLtcOutlineVertices; ++j) {
-    const vec3 next = ltc_direction(f, ltc_outline_vertex(o, j));
+    const vec3 next = ltc_outline_vertex(o, j);
     ltc_add_edge(poly, previous, next);
     previous = next;
   }
@@ -175,10 +169,9 @@ float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, glm::vec
   const vec3 normal = glm::cross(light.half_x, light.half_y);
   // A one-sided light shines on points in front of it only; its plane holds none.
   if (!light.two_sided && !(glm::dot(c, normal) < 0.0f)) return 0.0f;
-  const LtcFrame f = ltc_frame(n, v, entry);
-  LtcPolygon poly{f.horizon, {}, {}};
-  const vec3 corners[4] = {ltc_direction(f, c - light.half_x - light.half_y), ltc_direction(f, c + light.half_x - light.half_y),
-                           ltc_direction(f, c + light.half_x + light.half_y), ltc_direction(f, c - light.half_x + light.half_y)};
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  const vec3 corners[4] = {c - light.half_x - light.half_y, c + light.half_x - light.half_y,
+                           c + light.half_x + light.half_y, c - light.half_x + light.half_y};
   for (int i = 0; i < 4; ++i) ltc_add_edge(poly, corners[i], corners[(i + 1) % 4]);
   return specular_result(light.radiance, ltc_finish(poly));
 }

@@ -1,7 +1,7 @@
 // Area-light specular by linearly transformed cosines (Heitz et al. 2016): the GGX lobe at the
 // view is replaced by the cosine lobe that M (ltc_table.h) carries into its shape, whose integral
 // over a polygon is the Lambert polygon formula on the polygon carried back by M^-1 and clipped to
-// the cosine's horizon. Float math, ported step by step to shaders/area_light_ltc.glsl.
+// the cosine's horizon. Float math, ported line by line to shaders/area_light_ltc.glsl.
 //
 // Each returns L I: the light's radiance times the fraction of the lobe's energy the light covers
 // (I in [0, 1]). The specular radiance toward v is that times the lobe's directional albedo
@@ -22,33 +22,30 @@ namespace lg {
 inline constexpr int kLtcArcSegments = 4;
 inline constexpr int kLtcOutlineVertices = 2 * (kLtcArcSegments + 1);
 
-// The LTC's frame at a surface, made once for all its lights: world directions to the cosine's
-// space (the frame of n (z) and v (x), then M^-1), and the surface's horizon carried there.
-struct LtcFrame {
-  glm::vec3 n{0.0f};
-  glm::mat3 to_cosine{1.0f};
-  glm::vec3 horizon{0.0f};
-};
-LtcFrame ltc_frame(glm::vec3 n, glm::vec3 v, glm::vec4 entry);
+// World directions to the LTC's cosine space at a surface: the frame of n (z) and v (x), then
+// M^-1.
+glm::mat3 ltc_to_cosine(glm::vec3 n, glm::vec3 v, glm::vec4 entry);
 
-// A polygon's vertex relative to the shaded point, carried into the cosine's space (a unit vector).
-glm::vec3 ltc_direction(const LtcFrame& frame, glm::vec3 x);
-
-// I of a convex polygon, fed one edge at a time (either winding; vertices from ltc_direction, each
-// carried and normalised once) and clipped as it goes, without storing the polygon (the shaders
-// have no cheap arrays): each edge is clipped to the surface's horizon (the GGX lobe is 0 below
-// it, the fitted cosine not quite), then to the cosine's horizon, and the Lambert formula's term
-// of what is left summed; where a clip cut the polygon, the edge along the plane from where it
-// left to where it came back is added by ltc_finish.
-struct LtcClip {
+// I of a convex polygon, fed one edge at a time (either winding, relative to the shaded point)
+// and clipped as it goes, without storing the polygon (the shaders have no cheap arrays): each
+// edge is clipped to the horizon of the unit normal n (the GGX lobe is 0 below it, the fitted
+// cosine not quite), carried into the cosine's space and clipped to its horizon, and the Lambert
+// formula's term of what is left summed; where a clip cut the polygon, the edge along the plane
+// from where it left to where it came back is added by ltc_finish.
+struct LtcCosineClip {
   float sum = 0.0f;
   glm::vec3 exit{0.0f}, entry{0.0f};
   bool exited = false, entered = false;
 };
 struct LtcPolygon {
-  glm::vec3 horizon{0.0f};
-  LtcClip surface, cosine;
+  glm::vec3 n{0.0f};
+  glm::mat3 to_cosine{1.0f};
+  glm::vec3 exit{0.0f}, entry{0.0f};
+  bool exited = false, entered = false;
+  LtcCosineClip cosine;
 };
+LtcPolygon ltc_polygon(glm::vec3 n, glm::vec3 v, glm::vec4 entry);
+void ltc_add_cosine_edge(LtcCosineClip& c, glm::vec3 a, glm::vec3 b);
 void ltc_add_edge(LtcPolygon& poly, glm::vec3 a, glm::vec3 b);
 float ltc_finish(LtcPolygon& poly);
 

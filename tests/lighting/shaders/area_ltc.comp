@@ -25,10 +25,10 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= cases.length()) return;
   Case k = cases[i];
-  LtcFrame f = ltc_frame(k.n.xyz, k.v.xyz, ltc_lookup(max(dot(k.n.xyz, k.v.xyz), 1e-4), k.p.w));
+  vec4 entry = ltc_lookup(max(dot(k.n.xyz, k.v.xyz), 1e-4), k.p.w);
   float e = 0.0;
-  if (k.n.w == 0.0) e = ltc_sphere_specular(k.a.xyz, k.a.w, k.p.xyz, f);
-  else if (k.n.w == 1.0) e = ltc_tube_specular(k.a.xyz, k.b.xyz, k.a.w, k.p.xyz, f);
-  else e = ltc_rect_specular(k.a.xyz, k.b.xyz, k.c.xyz, k.a.w > 0.0, k.p.xyz, f);
+  if (k.n.w == 0.0) e = ltc_sphere_specular(k.a.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, entry);
+  else if (k.n.w == 1.0) e = ltc_tube_specular(k.a.xyz, k.b.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, entry);
+  else e = ltc_rect_specular(k.a.xyz, k.b.xyz, k.c.xyz, k.a.w > 0.0, k.p.xyz, k.n.xyz, k.v.xyz, entry);
   integral[i] = e;
 }

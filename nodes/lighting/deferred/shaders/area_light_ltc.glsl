@@ -1,7 +1,6 @@
 // Area-light specular by linearly transformed cosines: the GLSL twin of area_light_ltc.cpp (which
 // states the method). Each returns I, the fraction of the GGX lobe's energy the light covers (the
-// caller multiplies by the radiance); the frame, ltc_frame(n, v, ltc_lookup(n.v, roughness))
-// (ltc_table.glsl), is made once a pixel for all its lights.
+// caller multiplies by the radiance); `entry` is ltc_lookup(n.v, roughness) (ltc_table.glsl).
 #ifndef LG_AREA_LIGHT_LTC_GLSL
 #define LG_AREA_LIGHT_LTC_GLSL
 
@@ -18,45 +17,28 @@ float ltc_specular_result(float integral) {
   return clamp(finite_or_zero(integral), 0.0, 1.0);
 }
 
-// The Lambert formula's term of the edge between unit vectors a and b.
-float ltc_edge_term(vec3 a, vec3 b) {
-  vec3 c = cross(a, b);
-  float s = length(c);
-  return s > 0.0 ? c.z * atan(s, dot(a, b)) / s : 0.0;
-}
-
-// Where the great arc a-b crosses the plane through the origin (da, db: a's and b's distances
-// along its normal, of opposite signs), as a unit vector.
-vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
-  return normalize(a + (b - a) * (da / (da - db)));
-}
-
-struct LtcFrame {
-  vec3 n;
-  mat3 to_cosine;
-  vec3 horizon;
-};
-
-LtcFrame ltc_frame(vec3 n, vec3 v, vec4 e) {
+mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
   n = normalize(n);
   vec3 t1 = v - n * dot(n, v);
   float len = length(t1);
   t1 = len > 1e-6 ? t1 / len : ltc_any_perpendicular(n);
   vec3 t2 = cross(n, t1);
   mat3 m_inv = mat3(vec3(e.x, 0.0, e.z), vec3(0.0, 1.0, 0.0), vec3(e.y, 0.0, e.w));
-  // M^-1 maps the frame's (x, z) by [e.x e.y; e.z e.w], so the frame's z is
-  // (e.x y.z - e.z y.x) / det: the surface's horizon, a plane in the cosine's space (its scale is
-  // free: only signs and ratios of distances to it are used).
-  float det = e.x * e.w - e.y * e.z;
-  return LtcFrame(n, m_inv * transpose(mat3(t1, t2, n)), vec3(-e.z, 0.0, e.x) * det);
+  return m_inv * transpose(mat3(t1, t2, n));
 }
 
-// A polygon's vertex relative to the shaded point, carried into the cosine's space.
-vec3 ltc_direction(LtcFrame f, vec3 x) {
-  return normalize(f.to_cosine * x);
+float ltc_edge_term(vec3 a, vec3 b) {
+  vec3 e0 = normalize(a), e1 = normalize(b);
+  vec3 c = cross(e0, e1);
+  float s = length(c);
+  return s > 0.0 ? c.z * atan(s, dot(e0, e1)) / s : 0.0;
 }
 
-struct LtcClip {
+vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
+  return a + (b - a) * (da / (da - db));
+}
+
+struct LtcCosineClip {
   float sum;
   vec3 exit_;
   vec3 entry;
@@ -65,17 +47,21 @@ struct LtcClip {
 };
 
 struct LtcPolygon {
-  vec3 horizon;
-  LtcClip surface;
-  LtcClip cosine;
+  vec3 n;
+  mat3 to_cosine;
+  vec3 exit_;
+  vec3 entry;
+  bool exited;
+  bool entered;
+  LtcCosineClip cosine;
 };
 
-LtcPolygon ltc_polygon(LtcFrame f) {
-  LtcClip none = LtcClip(0.0, vec3(0.0), vec3(0.0), false, false);
-  return LtcPolygon(f.horizon, none, none);
+LtcPolygon ltc_polygon(vec3 n, vec3 v, vec4 entry) {
+  LtcCosineClip c = LtcCosineClip(0.0, vec3(0.0), vec3(0.0), false, false);
+  return LtcPolygon(normalize(n), ltc_to_cosine(n, v, entry), vec3(0.0), vec3(0.0), false, false, c);
 }
 
-void ltc_add_cosine_edge(inout LtcClip c, vec3 a, vec3 b) {
+void ltc_add_cosine_edge(inout LtcCosineClip c, vec3 a, vec3 b) {
   if (a.z > 0.0 && b.z > 0.0) {
     c.sum += ltc_edge_term(a, b);
   } else if (a.z > 0.0) {
@@ -89,25 +75,24 @@ void ltc_add_cosine_edge(inout LtcClip c, vec3 a, vec3 b) {
   }
 }
 
-// Edge a-b, both from ltc_direction: clipped to the surface's horizon, then to the cosine's.
 void ltc_add_edge(inout LtcPolygon poly, vec3 a, vec3 b) {
-  float da = dot(poly.horizon, a), db = dot(poly.horizon, b);
+  float da = dot(poly.n, a), db = dot(poly.n, b);
   if (da > 0.0 && db > 0.0) {
-    ltc_add_cosine_edge(poly.cosine, a, b);
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
   } else if (da > 0.0) {
-    poly.surface.exit_ = ltc_crossing(a, b, da, db);
-    poly.surface.exited = true;
-    ltc_add_cosine_edge(poly.cosine, a, poly.surface.exit_);
+    poly.exit_ = ltc_crossing(a, b, da, db);
+    poly.exited = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit_);
   } else if (db > 0.0) {
-    poly.surface.entry = ltc_crossing(a, b, da, db);
-    poly.surface.entered = true;
-    ltc_add_cosine_edge(poly.cosine, poly.surface.entry, b);
+    poly.entry = ltc_crossing(a, b, da, db);
+    poly.entered = true;
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
   }
 }
 
 float ltc_finish(inout LtcPolygon poly) {
-  if (poly.surface.exited && poly.surface.entered)
-    ltc_add_cosine_edge(poly.cosine, poly.surface.exit_, poly.surface.entry);
+  if (poly.exited && poly.entered)
+    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * poly.entry);
   if (poly.cosine.exited && poly.cosine.entered) poly.cosine.sum += ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
   return abs(poly.cosine.sum) / (2.0 * LG_PI);
 }
@@ -151,46 +136,42 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
   return true;
 }
 
-// (cos, sin) of pi / 2 + pi k / LG_LTC_ARC_SEGMENTS: end 0's half circle (end 1's is its negative).
-const vec2 LG_LTC_ARC[LG_LTC_ARC_SEGMENTS + 1] =
-    vec2[](vec2(0.0, 1.0), vec2(-0.70710678, 0.70710678), vec2(-1.0, 0.0), vec2(-0.70710678, -0.70710678), vec2(0.0, -1.0));
-
 vec3 ltc_outline_vertex(LtcOutline o, int j) {
   int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
-  vec2 arc = LG_LTC_ARC[j - half_ * (LG_LTC_ARC_SEGMENTS + 1)];
-  vec3 offset = arc.x * o.along + arc.y * o.side;
-  return half_ == 0 ? o.end0 + o.radius0 * offset : o.end1 - o.radius1 * offset;
+  float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
+  float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
+  vec3 offset = cos(angle) * o.along + sin(angle) * o.side;
+  return half_ == 0 ? o.end0 + o.radius0 * offset : o.end1 + o.radius1 * offset;
 }
 
-float ltc_capsule_integral(vec3 a, vec3 b, float radius, LtcFrame f) {
+float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
   LtcOutline o;
-  if (!ltc_capsule_outline(a, b, radius, f.n, o)) return 0.0;
-  LtcPolygon poly = ltc_polygon(f);
-  vec3 previous = ltc_direction(f, ltc_outline_vertex(o, LG_LTC_OUTLINE_VERTICES - 1));
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0;
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 previous = ltc_outline_vertex(o, LG_LTC_OUTLINE_VERTICES - 1);
   for (int j = 0; j < LG_LTC_OUTLINE_VERTICES; ++j) {
-    vec3 next = ltc_direction(f, ltc_outline_vertex(o, j));
+    vec3 next = ltc_outline_vertex(o, j);
     ltc_add_edge(poly, previous, next);
     previous = next;
   }
   return ltc_finish(poly);
 }
 
-float ltc_sphere_specular(vec3 center, float radius, vec3 p, LtcFrame f) {
+float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
   vec3 c = center - p;
-  return ltc_specular_result(ltc_capsule_integral(c, c, radius, f));
+  return ltc_specular_result(ltc_capsule_integral(c, c, radius, n, v, entry));
 }
 
-float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, LtcFrame f) {
-  return ltc_specular_result(ltc_capsule_integral(end0 - p, end1 - p, radius, f));
+float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
+  return ltc_specular_result(ltc_capsule_integral(end0 - p, end1 - p, radius, n, v, entry));
 }
 
-float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, LtcFrame f) {
+float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, vec4 entry) {
   vec3 c = center - p;
   vec3 normal = cross(hx, hy);
   if (!two_sided && !(dot(c, normal) < 0.0)) return 0.0;
-  LtcPolygon poly = ltc_polygon(f);
-  vec3 c0 = ltc_direction(f, c - hx - hy), c1 = ltc_direction(f, c + hx - hy);
-  vec3 c2 = ltc_direction(f, c + hx + hy), c3 = ltc_direction(f, c - hx + hy);
+  LtcPolygon poly = ltc_polygon(n, v, entry);
+  vec3 c0 = c - hx - hy, c1 = c + hx - hy, c2 = c + hx + hy, c3 = c - hx + hy;
   ltc_add_edge(poly, c0, c1);
   ltc_add_edge(poly, c1, c2);
   ltc_add_edge(poly, c2, c3);

@@ -42,7 +42,7 @@ vec3 area_radiance(Surface s) {
   vec3 diffuse_brdf = s.diffuse_color / LG_PI;
   vec3 r = reflection_dir(s);
   // alpha = roughness^2 above its floor, where the table's entries are alike.
-  LtcFrame ltc = ltc_frame(s.normal, s.view, ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha)));
+  vec4 ltc = ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha));
   vec3 added = vec3(0.0);
   for (uint i = 0; i < counts.z; ++i) {
     SphereLight l = spheres[i];
@@ -51,7 +51,7 @@ vec3 area_radiance(Surface s) {
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, sphere_extent(radius, normalize(s.position - c)));
     added += diffuse_brdf * radiance * sphere_irradiance(c, radius, s.position, s.normal);
     if (area_specular_ltc) {
-      added += radiance * s.specular_albedo * ltc_sphere_specular(c, radius, s.position, ltc);
+      added += radiance * s.specular_albedo * ltc_sphere_specular(c, radius, s.position, s.normal, s.view, ltc);
       continue;
     }
     RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
@@ -65,7 +65,7 @@ vec3 area_radiance(Surface s) {
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.end1.w, c, tube_extent(a, b, radius, normalize(s.position - c)));
     added += diffuse_brdf * radiance * tube_irradiance(a, b, radius, s.position, s.normal);
     if (area_specular_ltc) {
-      added += radiance * s.specular_albedo * ltc_tube_specular(a, b, radius, s.position, ltc);
+      added += radiance * s.specular_albedo * ltc_tube_specular(a, b, radius, s.position, s.normal, s.view, ltc);
       continue;
     }
     RepresentativePoint rp = tube_specular_point(a, b, radius, s.position, r, s.alpha);
@@ -82,7 +82,7 @@ vec3 area_radiance(Surface s) {
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, rect_extent(hx, hy, normalize(s.position - c)));
     added += diffuse_brdf * radiance * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
     if (area_specular_ltc) {
-      added += radiance * s.specular_albedo * ltc_rect_specular(c, hx, hy, two_sided, s.position, ltc);
+      added += radiance * s.specular_albedo * ltc_rect_specular(c, hx, hy, two_sided, s.position, s.normal, s.view, ltc);
       continue;
     }
     RepresentativePoint rp = rect_specular_point(c, hx, hy, two_sided, s.position, r, s.alpha);
