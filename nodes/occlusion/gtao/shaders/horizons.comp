@@ -16,8 +16,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // 64x36 until the pipeline was destroyed (docs/reliability.md, the soak).
 layout(constant_id = 0) const uint slices = 2u;
 layout(constant_id = 1) const uint steps = 2u;  // per side of each slice
-// 1 / resolution_scale: which of noisy and surface is written (lavapipe runs both sides of a
-// branch on a uniform, masked, so the other store must not be in the pipeline).
+// 1 / resolution_scale: the depth mips' texel size, and which of noisy and surface is written
+// (lavapipe runs both sides of a branch on a uniform, masked, so the other store must not be in
+// the pipeline); a constant, so that at 1 the sample arithmetic folds to what it was before the
+// mips started on the grid.
 layout(constant_id = 2) const int grid_divisor = 1;
 
 layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
@@ -81,10 +83,11 @@ vec2 bent_terms(vec3 h, vec2 cs_n) {
 // (Level sizes follow from the grid's, noisy's, without querying the texture per sample.)
 vec3 sample_position(vec2 uv, int mip, ivec2 grid) {
   ivec2 level = max(grid >> mip, ivec2(1));
-  float k = blend.z, texel_pixels = k * float(1 << mip);
-  vec2 offset = vec2(0.5 * (texel_pixels - k + 1.0));  // texel 0's point, in G-buffer pixels
-  ivec2 t = clamp(ivec2((uv * viewport.xy - offset) / texel_pixels + 0.5), ivec2(0), level - 1);
-  vec2 point = (vec2(t) * texel_pixels + offset) * viewport.zw;
+  float texel_pixels = float(grid_divisor << mip);
+  // The nearest texel's point: t = floor((x - 1/2 + k/2) / (k 2^mip)) for pixel coordinate x.
+  ivec2 t = ivec2((uv * viewport.xy + 0.5 * float(grid_divisor - 1)) / texel_pixels);
+  t = clamp(t, ivec2(0), level - 1);
+  vec2 point = (vec2(t) * texel_pixels + 0.5 * (texel_pixels - float(grid_divisor - 1))) * viewport.zw;
   return view_position(point, linear_depth(texelFetch(depth_mips, t, mip).r));
 }
 
@@ -176,7 +179,7 @@ void main() {
       // A mip texel (k 2^mip pixels) at most 1/80 of the offset, or mip 0: averaged depth across
       // a silhouette is a surface that is not there, and coarser levels (1/10, as XeGTAO) raised
       // the bunny's error at 1280x720 from 0.037 to 0.042 (lumagraph-bench-ao).
-      int mip = int(clamp(log2(max(offset_px, 1.0) / blend.z) - 6.3, 0.0, last_mip));
+      int mip = int(clamp(log2(max(offset_px, 1.0) / float(grid_divisor)) - 6.3, 0.0, last_mip));
       for (int side = 0; side < 2; ++side) {
         vec2 suv = side == 0 ? uv + offset : uv - offset;
         if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) continue;
