@@ -3,8 +3,8 @@
 // with the raw occlusion (it has read that depth and normal), the denoiser replaces the
 // occlusion, and upsample.comp fetches one image per tap for occlusion and its joint bilateral
 // guide, not three (occlusion, G-buffer depth, G-buffer normal). On lavapipe texel fetches are
-// the upsample's cost, the G-buffer normal's (rgb10a2) the dearest: one more per texel in the
-// denoiser measured +35 ms at load 7, where the denoiser took 15-30.
+// the upsample's cost, the G-buffer normal's (rgb10a2, k pixels apart) measured the dearest:
+// one more per texel in the denoiser cost +35 ms at load 7, where the denoiser took 15-30.
 // Layout: occlusion, device depth carrying the sign of the normal's z, the normal's x and y.
 // Half floats keep device depth to 0.05% (the guide's distance term works at 5%) and the normal
 // within 2 degrees where z is near 0 (the guide's normal term works at 30).
