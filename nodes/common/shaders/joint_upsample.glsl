@@ -47,14 +47,22 @@ struct UpsampleGuide {
   vec3 normal[4];  // unnormalized (decode_normal_unnormalized): the dot products need no more
 };
 
+// Sets tap t of `guide` to the surface with G-buffer depth `depth` (0: sky) and normal n
+// (unnormalized, or unit). For a caller that keeps each texel's surface beside its values
+// (occlusion.gtao) and so fetches no G-buffer texels for the guide.
+void upsample_guide_tap(inout UpsampleGuide guide, int t, float depth, vec3 n) {
+  guide.depth[t] = depth;
+  guide.distance_scale[t] = depth > 0.0 ? 1.0 / (depth * LG_UPSAMPLE_DISTANCE_SCALE) : 0.0;
+  guide.normal[t] = n;
+}
+
 UpsampleGuide upsample_guide(sampler2D depth_tex, sampler2D normal_tex, ivec2 low, int k, ivec2 low_size) {
   ivec2 full_size = textureSize(depth_tex, 0);
   UpsampleGuide guide;
   for (int t = 0; t < 4; ++t) {
     ivec2 source = upsample_source_texel(min(low + ivec2(t & 1, t >> 1), low_size - 1), k, full_size);
-    guide.depth[t] = texelFetch(depth_tex, source, 0).r;
-    guide.distance_scale[t] = guide.depth[t] > 0.0 ? 1.0 / (guide.depth[t] * LG_UPSAMPLE_DISTANCE_SCALE) : 0.0;
-    guide.normal[t] = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
+    upsample_guide_tap(guide, t, texelFetch(depth_tex, source, 0).r,
+                       decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb));
   }
   return guide;
 }

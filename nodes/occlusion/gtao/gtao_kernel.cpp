@@ -99,7 +99,7 @@ class GtaoKernel final : public NodeKernel {
 
   void prefilter(PassContext& ctx) {
     Image& mips = ctx.image("tmp.depth_mips");
-    write_constants(ctx, mips);
+    write_constants(ctx, ctx.image("in.gbuffer", 0));
     std::vector<DescriptorWrite> writes = {uniform_buffer(0, constants_->handle()),
                                            sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler())};
     // A small image has fewer mips than the shader writes: the extra levels go to the last one.
@@ -107,50 +107,53 @@ class GtaoKernel final : public NodeKernel {
       const uint32_t mip = std::min(level, mips.desc().mips - 1);
       writes.push_back(storage_image(2 + level, mips.view({.base_mip = mip, .mip_count = 1})));
     }
-    // One invocation a 2x2 quad, 8x8 invocations a 16x16 tile.
+    // One invocation a 2x2 quad of grid texels, 8x8 invocations a 16x16 tile.
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/prefilter.comp", writes, (mips.desc().width + 1) / 2,
                      (mips.desc().height + 1) / 2, {}, 8);
   }
 
-  // On the grid of resolution_scale (noisy's extent), reading the full-resolution depth mips
-  // and normals at each texel's G-buffer pixel.
+  // On the grid of resolution_scale (noisy's extent, as the depth mips' first level), reading
+  // the normal at each texel's G-buffer pixel.
   void horizons(PassContext& ctx) {
     Image& noisy = ctx.image("tmp.noisy");
     Image& depth_mips = ctx.image("tmp.depth_mips");
-    write_constants(ctx, depth_mips);
+    write_constants(ctx, ctx.image("in.gbuffer", 1));
     Image& bent = ctx.image(full_resolution() ? "out.bent_normals" : "tmp.bent_low");
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
                                       sampled_image(1, depth_mips.view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
                                       storage_image(3, noisy.view()),
                                       storage_image(4, ctx.image("tmp.edges").view()),
-                                      storage_image(5, bent.view())};
-    const uint32_t quality[] = {quality_.slices, quality_.steps};  // horizons.comp's specialization
+                                      storage_image(5, bent.view()),
+                                      storage_image(6, ctx.image("tmp.surface").view())};
+    const uint32_t specialization[] = {quality_.slices, quality_.steps, uint32_t(k_)};  // horizons.comp's
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/horizons.comp", writes, noisy.desc().width, noisy.desc().height,
-                     {}, kTileSize, quality);
+                     {}, kTileSize, specialization);
   }
 
   // On the same grid; the history it blends is the full-resolution output of the last frame.
+  // From noisy into out.ao at resolution_scale 1, else from surface into ao_guide.
   void denoise(PassContext& ctx) {
     write_constants(ctx, ctx.image("in.gbuffer", 4));
-    Image& ao = ctx.image(full_resolution() ? "out.ao" : "tmp.ao_low");
-    Image& noisy = ctx.image("tmp.noisy");
+    Image& noisy = ctx.image(full_resolution() ? "tmp.noisy" : "tmp.surface");
     Image& history = ctx.has("in.history") ? ctx.image("in.history") : noisy;
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
                                       sampled_image(1, noisy.view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("tmp.edges").view(), ctx.nearest_sampler()),
                                       sampled_image(3, ctx.image("in.gbuffer", 4).view(), ctx.nearest_sampler()),
                                       sampled_image(4, history.view(), ctx.linear_sampler()),
-                                      storage_image(5, ao.view())};
-    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/denoise.comp", writes, (ao.desc().width + 1) / 2,
-                     (ao.desc().height + 1) / 2, {}, 8);  // 2x2 pixels an invocation
+                                      storage_image(5, ctx.image("out.ao").view()),
+                                      storage_image(6, ctx.image("tmp.ao_guide").view())};
+    const uint32_t divisor[] = {uint32_t(k_)};  // denoise.comp's specialization
+    dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/denoise.comp", writes, (noisy.desc().width + 1) / 2,
+                     (noisy.desc().height + 1) / 2, {}, 8, divisor);  // 2x2 texels an invocation
   }
 
   // One invocation per grid texel, each writing its block of k x k pixels. At full resolution
   // the horizons and the denoiser wrote the outputs themselves, and there is nothing to do.
   void upsample(PassContext& ctx) {
     if (full_resolution()) return;
-    Image& low = ctx.image("tmp.ao_low");
+    Image& low = ctx.image("tmp.ao_guide");
     const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
                                       sampled_image(1, ctx.image("tmp.bent_low").view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),

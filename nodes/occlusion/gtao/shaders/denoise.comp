@@ -12,11 +12,19 @@
 // invocation.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 1) uniform sampler2D noisy;
+layout(binding = 1) uniform sampler2D noisy;  // below resolution_scale 1, horizons.comp's surface
 layout(binding = 2) uniform sampler2D edges;
 layout(binding = 3) uniform sampler2D motion;
 layout(binding = 4) uniform sampler2D history;  // bilinear; bound to `noisy` when absent
-layout(binding = 5, r8) uniform writeonly image2D ao;  // on the horizon grid, as noisy and edges
+// 1 / resolution_scale, fixed when the pipeline is made: lavapipe runs both sides of a branch
+// on a uniform (masked), so the store this scale does not make must not be in its pipeline.
+layout(constant_id = 0) const int grid_divisor = 1;
+
+// On the horizon grid, as noisy and edges: ao at resolution_scale 1 (the node's output), else
+// ao_guide (ao_guide.glsl: the texel's surface carried over from noisy), the other one bound but
+// not written.
+layout(binding = 5, r8) uniform writeonly image2D ao;
+layout(binding = 6, rgba16f) uniform writeonly image2D ao_guide;
 
 vec4 unpack_edges(float packed) {
   uint bits = uint(round(packed * 255.0));
@@ -24,8 +32,8 @@ vec4 unpack_edges(float packed) {
 }
 
 // Pixel `texel` of the quad whose 4x4 block of raw occlusion (the quad and its one-pixel ring)
-// is `block`; `corner` is the pixel's place in the quad (0 or 1 each way).
-void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4]) {
+// is `block`; `corner` is the pixel's place in the quad (0 or 1 each way), `own` its noisy texel.
+void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4], vec4 own) {
   vec4 e = unpack_edges(texelFetch(edges, texel, 0).r);  // left, right, top, bottom
   float sum = 0.0, weight = 0.0, lo = 1.0, hi = 0.0;
   for (int y = -1; y <= 1; ++y)
@@ -53,18 +61,26 @@ void denoise_pixel(ivec2 texel, ivec2 corner, float block[4][4]) {
       result = mix(current, past, blend.x);
     }
   }
-  imageStore(ao, texel, vec4(result));
+  if (grid_divisor > 1)
+    imageStore(ao_guide, texel, vec4(result, own.yzw));
+  else
+    imageStore(ao, texel, vec4(result));
 }
 
 void main() {
-  ivec2 size = imageSize(ao);
+  ivec2 size = textureSize(noisy, 0);
   ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * 2;
   if (any(greaterThanEqual(origin, size))) return;
   float block[4][4];
+  vec4 quad[2][2];  // the quad's own texels, whole
   for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 4; ++x)
-      block[y][x] = texelFetch(noisy, clamp(origin + ivec2(x - 1, y - 1), ivec2(0), size - 1), 0).r;
+    for (int x = 0; x < 4; ++x) {
+      vec4 v = texelFetch(noisy, clamp(origin + ivec2(x - 1, y - 1), ivec2(0), size - 1), 0);
+      block[y][x] = v.r;
+      if (x >= 1 && x <= 2 && y >= 1 && y <= 2) quad[y - 1][x - 1] = v;
+    }
   for (int y = 0; y < 2; ++y)
     for (int x = 0; x < 2; ++x)
-      if (all(lessThan(origin + ivec2(x, y), size))) denoise_pixel(origin + ivec2(x, y), ivec2(x, y), block);
+      if (all(lessThan(origin + ivec2(x, y), size)))
+        denoise_pixel(origin + ivec2(x, y), ivec2(x, y), block, quad[y][x]);
 }

@@ -6,6 +6,7 @@
 // form with the normal projected into the slice. An open plane gives exactly 1. The same
 // integral, weighted by direction, gives the bent normal; the visibility gives its cone.
 #include "nodes/common/shaders/gbuffer.glsl"
+#include "nodes/occlusion/gtao/shaders/ao_guide.glsl"
 #include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -15,13 +16,21 @@ layout(local_size_x = 8, local_size_y = 8) in;
 // 64x36 until the pipeline was destroyed (docs/reliability.md, the soak).
 layout(constant_id = 0) const uint slices = 2u;
 layout(constant_id = 1) const uint steps = 2u;  // per side of each slice
+// 1 / resolution_scale: the depth mips' texel size, and which of noisy and surface is written
+// (lavapipe runs both sides of a branch on a uniform, masked, so the other store must not be in
+// the pipeline); a constant, so that at 1 the sample arithmetic folds to what it was before the
+// mips started on the grid.
+layout(constant_id = 2) const int grid_divisor = 1;
 
 layout(binding = 1) uniform sampler2D depth_mips;  // device depth with averaged mips
 layout(binding = 2) uniform sampler2D gbuffer_normal;
 // On the horizon grid (grid_pixel): the G-buffer's extent at resolution_scale 1, else 1/k of it.
-layout(binding = 3, r8) uniform writeonly image2D noisy;
+layout(binding = 3, r8) uniform writeonly image2D noisy;  // at resolution_scale 1
 layout(binding = 4, r8) uniform writeonly image2D edges;
 layout(binding = 5, rgba8_snorm) uniform writeonly image2D bent_normals;
+// Below resolution_scale 1, noisy's visibility beside the texel's surface (ao_guide.glsl), which
+// the denoiser then carries to the upsample.
+layout(binding = 6, rgba16f) uniform writeonly image2D surface;
 
 const float PI = 3.14159265358979;
 const float HALF_PI = 1.57079632679490;
@@ -64,24 +73,29 @@ vec2 bent_terms(vec3 h, vec2 cs_n) {
   return vec2(along, toward);
 }
 
-// Mip k's texel i averages mip-0 texels [2^k i, 2^k (i + 1)), which on a plane is the plane's
-// depth at the block's centre (device depth is affine across the screen on planes). So a sample
-// reads the texel of its level that holds it and stands at that texel's centre: a point on the
-// surface, never one lifted off a flat floor by filtering or by a level that does not tile the
-// image exactly (odd sizes).
-// (Level sizes follow from mip 0's, the viewport, without querying the texture per sample.)
-vec3 sample_position(vec2 uv, int mip) {
-  ivec2 level = max(ivec2(viewport.xy) >> mip, ivec2(1));
-  ivec2 t = clamp(ivec2(uv * viewport.xy / float(1 << mip)), ivec2(0), level - 1);
-  vec2 centre = (vec2(t) + 0.5) * float(1 << mip) * viewport.zw;
-  return view_position(centre, linear_depth(texelFetch(depth_mips, t, mip).r));
+// The depth mips start on the horizon grid (prefilter.comp): mip 0's texel i is the depth at
+// G-buffer pixel k i, and mip m's texel t averages mip-0 texels [2^m t, 2^m (t + 1)), which on a
+// plane is the plane's depth at the mean of their pixels: G-buffer pixel
+// k 2^m t + (k 2^m - k) / 2, in pixel-centre terms k 2^m (t + 1/2) - (k - 1) / 2 (at k = 1 the
+// block's centre). So a sample reads the texel of its level nearest to it and stands at that
+// point: a point on the surface, never one lifted off a flat floor by filtering or by a level
+// that does not tile the image exactly (odd sizes).
+// (Level sizes follow from the grid's, noisy's, without querying the texture per sample.)
+vec3 sample_position(vec2 uv, int mip, ivec2 grid) {
+  ivec2 level = max(grid >> mip, ivec2(1));
+  float texel_pixels = float(grid_divisor << mip);
+  // The nearest texel's point: t = floor((x - 1/2 + k/2) / (k 2^mip)) for pixel coordinate x.
+  ivec2 t = ivec2((uv * viewport.xy + 0.5 * float(grid_divisor - 1)) / texel_pixels);
+  t = clamp(t, ivec2(0), level - 1);
+  vec2 point = (vec2(t) * texel_pixels + 0.5 * (texel_pixels - float(grid_divisor - 1))) * viewport.zw;
+  return view_position(point, linear_depth(texelFetch(depth_mips, t, mip).r));
 }
 
 // Four depth-edge weights (left, right, top, bottom) in 2 bits each: 1 where the neighbour's
 // depth continues this texel's plane, 0 across a discontinuity (for the denoiser, which runs on
 // the same grid).
 float neighbour_depth(ivec2 texel, ivec2 grid) {
-  return linear_depth(texelFetch(depth_mips, grid_pixel(clamp(texel, ivec2(0), grid - 1)), 0).r);
+  return linear_depth(texelFetch(depth_mips, clamp(texel, ivec2(0), grid - 1), 0).r);
 }
 
 float pack_edges(ivec2 texel, ivec2 grid, float z) {
@@ -97,15 +111,23 @@ float pack_edges(ivec2 texel, ivec2 grid, float z) {
   return dot(q, vec4(64.0, 16.0, 4.0, 1.0)) / 255.0;
 }
 
+void store_visibility(ivec2 texel, float visibility, float device_depth, vec3 world_n) {
+  if (grid_divisor > 1)
+    imageStore(surface, texel, pack_ao_guide(visibility, device_depth, world_n));
+  else
+    imageStore(noisy, texel, vec4(visibility));
+}
+
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 grid = imageSize(noisy);
   if (any(greaterThanEqual(texel, grid))) return;
   ivec2 pixel = grid_pixel(texel);
   vec2 uv = (vec2(pixel) + 0.5) * viewport.zw;
-  float z = linear_depth(texelFetch(depth_mips, pixel, 0).r);
+  float device_depth = texelFetch(depth_mips, texel, 0).r;
+  float z = linear_depth(device_depth);
   if (!(z < 1e7)) {  // no surface: nothing occludes the sky
-    imageStore(noisy, texel, vec4(1.0));
+    store_visibility(texel, 1.0, 0.0, vec3(0.0, 0.0, 1.0));
     imageStore(edges, texel, vec4(1.0));
     imageStore(bent_normals, texel, vec4(0.0, 0.0, 0.0, 0.0));
     return;
@@ -154,14 +176,14 @@ void main() {
       float t = min_t + (1.0 - min_t) * (float(s) + step_noise) / float(steps);
       vec2 offset = omega * (t * screen_radius) * viewport.zw;
       float offset_px = t * screen_radius;
-      // A mip texel at most 1/80 of the offset: averaged depth across a silhouette is a surface
-      // that is not there, and coarser levels (1/10, as XeGTAO) raised the bunny's error at
-      // 1280x720 from 0.037 to 0.042 (lumagraph-bench-ao).
-      int mip = int(clamp(log2(max(offset_px, 1.0)) - 6.3, 0.0, last_mip));
+      // A mip texel (k 2^mip pixels) at most 1/80 of the offset, or mip 0: averaged depth across
+      // a silhouette is a surface that is not there, and coarser levels (1/10, as XeGTAO) raised
+      // the bunny's error at 1280x720 from 0.037 to 0.042 (lumagraph-bench-ao).
+      int mip = int(clamp(log2(max(offset_px, 1.0) / float(grid_divisor)) - 6.3, 0.0, last_mip));
       for (int side = 0; side < 2; ++side) {
         vec2 suv = side == 0 ? uv + offset : uv - offset;
         if (any(lessThan(suv, vec2(0.0))) || any(greaterThan(suv, vec2(1.0)))) continue;
-        vec3 delta = sample_position(suv, mip) - p;
+        vec3 delta = sample_position(suv, mip, grid) - p;
         float dist_squared = dot(delta, delta);
         if (!(dist_squared > 1e-12)) continue;
         float shc = dot(delta, view_vec) * inversesqrt(dist_squared);
@@ -197,7 +219,7 @@ void main() {
   vec3 world_bent = bent_length > 1e-6 ? normalize(mat3(world_from_view) * (bent / bent_length)) : world_n;
   // A cosine-weighted visible cone of half-angle a has visibility sin^2 a: its cosine is
   // sqrt(1 - visibility).
-  imageStore(noisy, texel, vec4(visibility));
+  store_visibility(texel, visibility, device_depth, world_n);
   imageStore(edges, texel, vec4(pack_edges(texel, grid, z)));
   imageStore(bent_normals, texel, vec4(world_bent, sqrt(max(1.0 - visibility, 0.0))));
 }

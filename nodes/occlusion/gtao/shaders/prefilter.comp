@@ -1,19 +1,23 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Device depth and its averaged mips, five levels in one dispatch: each invocation copies a 2x2
-// quad and averages it into mip 1 in registers, then each 8x8 workgroup (a 16x16 tile) reduces
-// its mip-1 texels through shared memory. A quad per invocation rather than a texel, and one
-// barrier per level into alternating arrays, because lavapipe pays for every invocation and
-// every barrier: this cut the pass from 37 to 17 ms at 1280x720 (lumagraph-bench-ao).
+// Device depth on the horizon grid and its averaged mips, five levels in one dispatch: each
+// invocation copies a 2x2 quad of grid texels and averages it into mip 1 in registers, then each
+// 8x8 workgroup (a 16x16 tile) reduces its mip-1 texels through shared memory. A quad per
+// invocation rather than a texel, and one barrier per level into alternating arrays, because
+// lavapipe pays for every invocation and every barrier: this cut the pass from 37 to 17 ms at
+// 1280x720 (lumagraph-bench-ao).
+// Mip 0 is the grid's own (resolution_scale 1/k): texel i is the G-buffer's depth at grid_pixel(i),
+// the pixel the horizon search runs at, so a texel's depth and its position are an exact point
+// of the surface; below resolution_scale 1 the chain costs 1/k^2 of the full-resolution one.
 // Reversed-Z device depth is near / linear depth, which is affine across the screen on any
-// plane, so a block's average is the plane's value at the block's centre and bilinear taps
+// plane, so a block's average is the plane's value at the mean of its points and bilinear taps
 // between mip texels are exact on planes: far horizon samples read coarse mips without biasing
 // flat surfaces toward occlusion.
 #include "nodes/occlusion/gtao/shaders/gtao_constants.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 1) uniform sampler2D device_depth;
+layout(binding = 1) uniform sampler2D device_depth;  // the G-buffer's
 layout(binding = 2, r32f) uniform writeonly image2D mip0;
 layout(binding = 3, r32f) uniform writeonly image2D mip1;
 layout(binding = 4, r32f) uniform writeonly image2D mip2;
@@ -31,7 +35,7 @@ float average_valid(vec4 q) {
 
 float copy_texel(ivec2 texel, ivec2 size) {
   if (any(greaterThanEqual(texel, size))) return -1.0;  // left out of the averages
-  float d = texelFetch(device_depth, texel, 0).r;
+  float d = texelFetch(device_depth, grid_pixel(texel), 0).r;
   imageStore(mip0, texel, vec4(d));
   return d;
 }
@@ -45,7 +49,7 @@ void store(int level, ivec2 texel, float d) {
 void main() {
   ivec2 local = ivec2(gl_LocalInvocationID.xy);
   ivec2 quad = ivec2(gl_GlobalInvocationID.xy);  // this invocation's mip-1 texel
-  ivec2 size = textureSize(device_depth, 0);
+  ivec2 size = imageSize(mip0);
   ivec2 texel = quad * 2;
   float m = average_valid(vec4(copy_texel(texel, size), copy_texel(texel + ivec2(1, 0), size),
                                copy_texel(texel + ivec2(0, 1), size), copy_texel(texel + ivec2(1, 1), size)));
