@@ -158,5 +158,36 @@ TEST(CaptureVolume, TheVolumesLightReachesTheCapturedWall) {
   EXPECT_LT(worst, 0.05);
 }
 
+// Without an environment the capture needs no environment inputs, but the volume's light is split
+// from the specular by the DFG table: linked without brdf_lut, the frame fails naming the node and
+// the missing input, rather than reading the placeholder as a table.
+TEST(CaptureVolume, AVolumeWithoutTheDfgTableIsRefusedByName) {
+  std::string world_text = kWorld;
+  const std::string environment = R"("environment": {"intensity": 1},)";
+  world_text.erase(world_text.find(environment), environment.size());
+  const World world = parse_scene_file(world_text, "capture-volume-test.world.json");
+  Diagnostics d("capture-volume-test.json");
+  std::optional<Graph> g = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "volume", "type": "gi.irradiance_volume", "params": { "rays": 16, "bounces": 1 } },
+      { "id": "probes", "type": "gi.reflection_capture", "params": { "capture": "raster", "face_size": 4, "mips": 1 } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "volume.gbuffer" }, { "from": "gbuf.gbuffer", "to": "probes.gbuffer" },
+               { "from": "volume.probes", "to": "probes.probe_volume" } ],
+    "outputs": [ "probes.reflections" ] })",
+                                            d);
+  ASSERT_TRUE(g) << d.to_string();
+  Renderer renderer;
+  renderer.set_graph(std::move(*g));
+  try {
+    renderer.render(world, kFrame);
+    FAIL() << "the frame ran without the DFG table";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("gi.reflection_capture 'probes': with 'probe_volume' linked the input "
+                                         "'brdf_lut' must be linked too"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace lg::test
