@@ -40,9 +40,9 @@ vec3 environment_irradiance_over_pi(vec3 n, bool from_sh) {
 }
 
 // The diffuse image-based light leaving a surface: `irradiance_over_pi` (E / pi) reflected by
-// what the specular lobe leaves at this view (`scale_bias`: the DFG table's), times the material's
-// own occlusion, as lighting.ibl shades it.
-vec3 image_based_diffuse(vec3 diffuse_color, vec3 f0, vec2 scale_bias, vec3 irradiance_over_pi, float occlusion) {
+// what the specular lobe leaves at this view (`scale_bias`: the DFG table's), times `occlusion`
+// (per channel: lighting.ibl's multi-bounce occlusion is coloured).
+vec3 image_based_diffuse(vec3 diffuse_color, vec3 f0, vec2 scale_bias, vec3 irradiance_over_pi, vec3 occlusion) {
   return diffuse_color * (1.0 - specular_albedo(f0, scale_bias)) * irradiance_over_pi * occlusion;
 }
 

@@ -44,7 +44,7 @@ vec3 forward_radiance(Draw d, MaterialSample m) {
   if (diffuse_light) {
     float occlusion = clamp(m.occlusion, 0.0, 1.0);
     vec2 scale_bias = dfg_scale_bias(clamp(dot(s.normal, s.view), 1e-4, 1.0), roughness);
-    radiance += image_based_diffuse(albedo * (1.0 - metalness), s.f0, scale_bias, irradiance_over_pi, occlusion);
+    radiance += image_based_diffuse(albedo * (1.0 - metalness), s.f0, scale_bias, irradiance_over_pi, vec3(occlusion));
     if (environment) radiance += intensity * environment_specular(s.normal, s.view, s.f0, roughness, occlusion, scale_bias);
   }
   return finite_or_zero(radiance + m.emission);
