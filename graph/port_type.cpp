@@ -29,6 +29,10 @@ const std::map<std::string, KindInfo, std::less<>>& kinds() {
        {ResourceKind::texture3d, "a 3D texture", {{"sh", {{"", "rgba16f", 8}}}, {"mask", {{"", "r8", 1}}}}}},
       {"sh", {ResourceKind::buffer, "a spherical-harmonics buffer", {{"", {{"", "buffer", 16}}}}}},
       {"scalar", {ResourceKind::buffer, "a scalar", {{"", {{"", "buffer", 4}}}}}},
+      // gi.irradiance_volume's probe volumes: the block of 64 volumes of 160 bytes its lookup
+      // reads (nodes/gi/irradiance_volume/probe_atlas.h, GpuProbeVolume x kMaxProbeVolumes); the
+      // atlas images stay with the producing kernel (PassContext::producer).
+      {"probe_volume", {ResourceKind::buffer, "a probe volume", {{"", {{"", "buffer", 64 * 160}}}}}},
       {"gbuffer",
        {ResourceKind::texture2d,
         "a G-buffer",

@@ -165,7 +165,8 @@ void Executor::record_frame(VkCommandBuffer cmd, const SceneView& scene, GpuScen
   const uint32_t whole = timestamps_.begin(cmd, "frame");
   if (frames_ == 0) clear_history(cmd);
   const FrameResources frame{
-      context_, context_.pipelines(), cmd, plan_, memory_.resources, linear_, nearest_, frames_, scene, gpu_scene};
+      context_, context_.pipelines(), cmd, plan_, memory_.resources, linear_, nearest_, frames_, scene, gpu_scene,
+      kernels_};
   BarrierBatch batch;
   size_t next_barrier = 0;
   for (size_t p = 0; p < plan_.passes.size(); ++p) {

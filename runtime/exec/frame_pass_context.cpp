@@ -38,6 +38,14 @@ Buffer& FramePassContext::buffer(std::string_view slot) {
   missing(slot, 0, "buffer");
 }
 
+NodeKernel* FramePassContext::producer(std::string_view slot) {
+  if (!slot.starts_with("in.")) return nullptr;
+  const PlanAccess* a = find(slot, 0);
+  if (!a) return nullptr;
+  const int node = frame_.plan.resources[a->resource].desc.node;
+  return node >= 0 && size_t(node) < frame_.kernels.size() ? frame_.kernels[node].get() : nullptr;
+}
+
 VkSampler FramePassContext::linear_sampler() {
   return frame_.linear.handle();
 }

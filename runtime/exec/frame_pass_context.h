@@ -2,6 +2,9 @@
 // bound to the images and buffers placed for them this frame.
 #pragma once
 
+#include <memory>
+#include <span>
+
 #include "runtime/exec/node_kernel.h"
 #include "runtime/exec/plan_memory.h"
 
@@ -21,6 +24,7 @@ struct FrameResources {
   uint64_t frame_index;
   const SceneView& scene;
   GpuScene& gpu_scene;
+  std::span<const std::unique_ptr<NodeKernel>> kernels;  // per plan node; null without passes
 };
 
 class FramePassContext final : public PassContext {
@@ -40,6 +44,7 @@ class FramePassContext final : public PassContext {
   bool has(std::string_view slot, int component) const override;
   Image& image(std::string_view slot, int component) override;
   Buffer& buffer(std::string_view slot) override;
+  NodeKernel* producer(std::string_view slot) override;
   VkSampler linear_sampler() override;
   VkSampler nearest_sampler() override;
 

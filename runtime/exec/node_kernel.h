@@ -22,6 +22,7 @@ class Buffer;
 class Context;
 class GpuScene;
 class Image;
+class NodeKernel;
 class PipelineCache;
 struct SceneView;
 
@@ -50,6 +51,11 @@ class PassContext {
   // pass has no such access.
   virtual Image& image(std::string_view slot, int component = 0) = 0;
   virtual Buffer& buffer(std::string_view slot) = 0;
+  // The kernel of the node whose output the pass's input `slot` reads, or null (no such input,
+  // or a producer without passes): for a port whose producer keeps more on the device than the
+  // plan's resource carries (gi.irradiance_volume's probe atlas behind its `probes` output). The
+  // link orders the passes, so the producer recorded its passes of this frame already.
+  virtual NodeKernel* producer(std::string_view slot) = 0;
   // Samplers kept by the executor: bilinear with clamped edges, and nearest.
   virtual VkSampler linear_sampler() = 0;
   virtual VkSampler nearest_sampler() = 0;

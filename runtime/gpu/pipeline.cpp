@@ -130,6 +130,18 @@ Pipeline finish(const Context& context, Pipeline p, const std::string& name, Cre
   return p;
 }
 
+// Specialization constants of 32 bits each: constant_id i at offset 4 i.
+std::vector<VkSpecializationMapEntry> constant_entries(std::span<const uint32_t> constants) {
+  std::vector<VkSpecializationMapEntry> entries;
+  for (uint32_t i = 0; i < constants.size(); ++i) entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
+  return entries;
+}
+
+VkSpecializationInfo specialization_info(std::span<const VkSpecializationMapEntry> entries,
+                                         std::span<const uint32_t> constants) {
+  return {uint32_t(entries.size()), entries.data(), constants.size_bytes(), constants.data()};
+}
+
 }  // namespace
 
 void set_viewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
@@ -238,11 +250,8 @@ const Pipeline& PipelineCache::compute(const ComputePipelineDesc& desc) {
       info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
       info.stage.module = module.handle();
       info.stage.pName = "main";
-      std::vector<VkSpecializationMapEntry> entries;
-      for (uint32_t i = 0; i < desc.constants.size(); ++i)
-        entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
-      const VkSpecializationInfo constants{uint32_t(entries.size()), entries.data(),
-                                           desc.constants.size() * sizeof(uint32_t), desc.constants.data()};
+      const std::vector<VkSpecializationMapEntry> entries = constant_entries(desc.constants);
+      const VkSpecializationInfo constants = specialization_info(entries, desc.constants);
       if (!entries.empty()) info.stage.pSpecializationInfo = &constants;
       info.layout = out.layout;
       vk_check(vkCreateComputePipelines(context_.device(), cache_, 1, &info, nullptr, &out.handle),
@@ -260,6 +269,7 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
   key.add_all(std::span(desc.vertex_bindings)).add_all(std::span(desc.vertex_attributes));
   key.add(desc.topology).add(desc.cull).add(desc.front_face).add_all(std::span(desc.color_formats)).add(desc.blend);
   key.add(desc.depth_format).add(desc.depth_test).add(desc.depth_write).add(desc.depth_compare);
+  key.add_all(std::span(desc.fragment_constants));
   return find_or_make(key.take(), [&](CreationFeedback& feedback) {
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     Pipeline p =
@@ -275,6 +285,9 @@ const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
       shader_stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
       shader_stages[1].module = fragment.handle();
       shader_stages[1].pName = "main";
+      const std::vector<VkSpecializationMapEntry> entries = constant_entries(desc.fragment_constants);
+      const VkSpecializationInfo constants = specialization_info(entries, desc.fragment_constants);
+      if (!entries.empty()) shader_stages[1].pSpecializationInfo = &constants;
 
       auto vertex_input =
           vk_struct<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);

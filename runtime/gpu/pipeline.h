@@ -57,6 +57,8 @@ struct GraphicsPipelineDesc {
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   bool depth_test = false, depth_write = false;
   VkCompareOp depth_compare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reversed Z
+  // The fragment stage's specialization constants, as ComputePipelineDesc::constants.
+  std::vector<uint32_t> fragment_constants{};
 };
 
 struct Pipeline {

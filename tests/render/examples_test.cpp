@@ -54,6 +54,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"examples/ssr.json", "examples/worlds/ssr-floor.json"},
                       Case{"examples/reflection-probes.json", "examples/worlds/reflection-room.json"},
                       Case{"examples/reflections.json", "examples/worlds/gallery.json"},
+                      Case{"examples/planar-reflections.json", "examples/worlds/gallery.json"},
                       Case{"examples/auto-exposure.json", "examples/worlds/gallery.json"},
                       Case{"examples/taa.json", ""}),
     [](const auto& info) {

@@ -7,8 +7,10 @@
 // of updates that has finished on the worker thread (probe_updater.h) and start the next one,
 // never waiting for it. Then one dispatch looks them up per pixel, at full resolution into the
 // output, or at resolution_scale into a smaller image that the "upsample" pass brings back to
-// full resolution (nodes/common/shaders/joint_upsample.glsl). Between frames it hands a copy of
-// the probes it uploaded last to whoever asks (probe_snapshot.h).
+// full resolution (nodes/common/shaders/joint_upsample.glsl); the lookup pass also copies the
+// volumes' block into the `probes` output, and lends the atlas to the nodes reading it
+// (probe_volume_source.h). Between frames it hands a copy of the probes it uploaded last to
+// whoever asks (probe_snapshot.h).
 #include "nodes/gi/irradiance_volume/irradiance_volume_kernel.h"
 
 #include <array>
@@ -30,9 +32,11 @@
 #include "nodes/gi/irradiance_volume/probe_bake_key.h"
 #include "nodes/gi/irradiance_volume/probe_snapshot.h"
 #include "nodes/gi/irradiance_volume/probe_updater.h"
+#include "nodes/gi/irradiance_volume/probe_volume_source.h"
 #include "nodes/gi/path_tracer/plan_environment.h"
 #include "nodes/gi/probes/probe_bake.h"
 #include "nodes/gi/probes/probe_lookup.h"
+#include "runtime/gpu/buffer.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/host_buffer.h"
@@ -51,7 +55,7 @@ struct Push {  // shaders/irradiance_volume.comp
 // Counts uploads across every kernel, so a snapshot's version never repeats (probe_snapshot.h).
 std::atomic<uint64_t> uploads{0};
 
-class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSource {
+class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSource, public ProbeVolumeSource {
  public:
   explicit IrradianceVolumeKernel(const PlanNode& node) {
     settings_.rays = uint32_t(param_number(node, "rays"));
@@ -86,6 +90,11 @@ class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSour
 
   uint64_t probe_version() const override { return version_; }
 
+  ProbeVolumeBinding probe_volume() override {
+    return {probes_ ? &*probes_ : nullptr, push_.volume_count, constants_[0], constants_[1] != 0, push_.normal_bias,
+            push_.view_bias, version_};
+  }
+
   ProbeSnapshot probe_snapshot() const override {
     const std::vector<ProbeGrid>& grids = updater_ ? updater_->probes() : grids_;
     return {version_, updater_.has_value(), updater_ ? updater_->landed() : 0, whole_probe_file(grids, settings_)};
@@ -96,6 +105,7 @@ class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSour
 
   void lookup(PassContext& ctx) {
     prepare_probes(ctx);
+    if (ctx.has("out.probes")) probes_->copy_volumes(ctx.cmd(), ctx.buffer("out.probes").handle());
     const Image& depth = ctx.image("in.gbuffer", 0);
     Image& target = ctx.image(full_resolution() ? "out.irradiance" : "tmp.lowres");
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));

@@ -26,9 +26,9 @@ ProbeAtlasImages::ProbeAtlasImages(Context& gpu, std::string name)
 
 void ProbeAtlasImages::upload(VkCommandBuffer cmd, const ProbeAtlas& atlas) {
   // The shader declares kMaxProbeVolumes of them: the buffer holds that many.
-  std::vector<GpuProbeVolume> volumes = atlas.volumes;
-  volumes.resize(kMaxProbeVolumes);
-  volumes_.write(volumes);
+  block_ = atlas.volumes;
+  block_.resize(kMaxProbeVolumes);
+  volumes_.write(block_);
   const Target targets[] = {{&records_, &atlas.records, VK_FORMAT_R32G32B32A32_SFLOAT, "records"},
                             {&irradiance_, &atlas.irradiance, VK_FORMAT_R16G16B16A16_SFLOAT, "irradiance"},
                             {&distance_, &atlas.distance, VK_FORMAT_R32G32_SFLOAT, "distance"}};
@@ -67,6 +67,16 @@ void ProbeAtlasImages::upload(VkCommandBuffer cmd, const ProbeAtlas& atlas) {
                   {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                   {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
   }
+}
+
+void ProbeAtlasImages::copy_volumes(VkCommandBuffer cmd, VkBuffer target) const {
+  // After the plan's barrier into compute shaders (a chained dependency), and back to them.
+  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE},
+                 {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+  vkCmdUpdateBuffer(cmd, target, 0, block_.size() * sizeof(GpuProbeVolume), block_.data());
+  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_UNIFORM_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 
 }  // namespace lg

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "nodes/gi/irradiance_volume/probe_atlas.h"
 #include "runtime/gpu/host_buffer.h"
@@ -24,6 +25,11 @@ class ProbeAtlasImages {
   // upload, so the frame that records it may still be running.
   void upload(VkCommandBuffer cmd, const ProbeAtlas& atlas);
 
+  // Records a copy of the volumes' block (what volumes() holds, kMaxProbeVolumes of them) into
+  // `target` (gi.irradiance_volume's `probes` output, which compute passes write and read), with
+  // the barriers from and to compute shaders around it.
+  void copy_volumes(VkCommandBuffer cmd, VkBuffer target) const;
+
   VkBuffer volumes() const { return volumes_.handle(); }
   Image& records() { return *records_; }
   Image& irradiance() { return *irradiance_; }
@@ -33,6 +39,7 @@ class ProbeAtlasImages {
   Context& gpu_;
   std::string name_;
   HostBuffer volumes_, staging_;
+  std::vector<GpuProbeVolume> block_ = std::vector<GpuProbeVolume>(kMaxProbeVolumes);  // as volumes_ holds it
   std::optional<Image> records_, irradiance_, distance_;
 };
 

@@ -98,7 +98,7 @@ class PlanarReflectionKernel final : public NodeKernel {
     image_barrier(ctx.cmd(), *views_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL,
                   {kComputeAccess.stages, VK_ACCESS_2_NONE}, kAttachmentWrite);
     ForwardSettings settings{};
-    const ForwardResources resources = inputs_.bind(ctx, intensity_, settings);
+    const CaptureResources resources = inputs_.bind(ctx, intensity_, settings);
     settings.flags |= 4u;  // the distance to the mirrored camera in alpha
     std::vector<CaptureView> views;
     for (uint32_t i = 0; i < planes.size(); ++i)

@@ -6,10 +6,13 @@
 #include <vector>
 
 #include "nodes/common/node_shaders.h"
+#include "nodes/gi/irradiance_volume/probe_atlas.h"
+#include "nodes/gi/irradiance_volume/probe_volume_source.h"
 #include "nodes/gi/reflection_capture/cube_face_camera.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "nodes/scene/gbuffer/material_textures.h"
 #include "runtime/exec/gpu_scene.h"
+#include "runtime/gpu/buffer.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/direct_barriers.h"
 
@@ -31,6 +34,34 @@ constexpr SyncScope kDepthAccess{
 constexpr SyncScope kCubeReaders{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT};
 
+// capture_surface.glsl's probe volume: its volumes' block and three atlas images.
+constexpr uint32_t kVolumeBinding = 23, kRecordBinding = 24, kIrradianceBinding = 25, kDistanceBinding = 26;
+
+void add_volume_bindings(GraphicsPipelineDesc& desc) {
+  desc.bindings.push_back({kVolumeBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
+  for (uint32_t b : {kRecordBinding, kIrradianceBinding, kDistanceBinding})
+    desc.bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+}
+
+void add_volume_writes(std::vector<DescriptorWrite>& writes, const CaptureResources& r) {
+  // The atlas maps are filtered; the placeholders (a depth image) cannot be, and are not read.
+  const VkSampler maps = r.volume.linked ? r.forward.linear : r.forward.nearest;
+  writes.push_back(uniform_buffer(kVolumeBinding, r.volume.volumes));
+  writes.push_back(sampled_image(kRecordBinding, r.volume.records, r.forward.nearest));
+  writes.push_back(sampled_image(kIrradianceBinding, r.volume.irradiance, maps));
+  writes.push_back(sampled_image(kDistanceBinding, r.volume.distance, maps));
+}
+
+// The gi.irradiance_volume kernel behind the linked `probe_volume`, or null where it is unlinked.
+ProbeVolumeSource* linked_volume(PassContext& ctx) {
+  if (!ctx.has("in.probe_volume")) return nullptr;
+  auto* source = dynamic_cast<ProbeVolumeSource*>(ctx.producer("in.probe_volume"));
+  if (!source)
+    throw std::runtime_error(ctx.node().type + " '" + ctx.node().id +
+                             "': the input 'probe_volume' must come from a gi.irradiance_volume's 'probes'");
+  return source;
+}
+
 }  // namespace
 
 RasterCapture::RasterCapture(Context& gpu, const std::string& name)
@@ -40,7 +71,12 @@ RasterCapture::RasterCapture(Context& gpu, const std::string& name)
       settings_(gpu, name_ + " settings", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       cameras_(gpu, name_ + " face constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT) {}
 
-ForwardResources CaptureInputs::bind(PassContext& ctx, float intensity, ForwardSettings& settings) {
+uint64_t CaptureInputs::volume_version(PassContext& ctx) {
+  ProbeVolumeSource* source = linked_volume(ctx);
+  return source ? source->probe_volume().version : 0;
+}
+
+CaptureResources CaptureInputs::bind(PassContext& ctx, float intensity, ForwardSettings& settings) {
   const bool environment = ctx.scene().has_environment;
   const bool sh = ctx.has("in.sh");
   if (environment && (!ctx.has("in.specular") || !ctx.has("in.brdf_lut") || (!sh && !ctx.has("in.irradiance"))))
@@ -61,17 +97,48 @@ ForwardResources CaptureInputs::bind(PassContext& ctx, float intensity, ForwardS
                   {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE}, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE});
   }
   const VkImageView no_cube = cube_placeholder_->view();
-  return {.sh = sh ? ctx.buffer("in.sh").handle() : sh_placeholder_->handle(),
-          .irradiance = ctx.has("in.irradiance") ? ctx.image("in.irradiance").view() : no_cube,
-          .specular = environment ? ctx.image("in.specular").view() : no_cube,
-          .brdf_lut = environment ? ctx.image("in.brdf_lut").view() : ctx.image("in.gbuffer", 1).view(),
-          .placeholder_2d = ctx.image("in.gbuffer", 0).view(),
-          .linear = ctx.linear_sampler(),
-          .nearest = ctx.nearest_sampler()};
+  const VkImageView placeholder_2d = ctx.image("in.gbuffer", 0).view();
+  CaptureResources out{
+      .forward = {.sh = sh ? ctx.buffer("in.sh").handle() : sh_placeholder_->handle(),
+                  .irradiance = ctx.has("in.irradiance") ? ctx.image("in.irradiance").view() : no_cube,
+                  .specular = environment ? ctx.image("in.specular").view() : no_cube,
+                  .brdf_lut = ctx.has("in.brdf_lut") ? ctx.image("in.brdf_lut").view() : ctx.image("in.gbuffer", 1).view(),
+                  .placeholder_2d = placeholder_2d,
+                  .linear = ctx.linear_sampler(),
+                  .nearest = ctx.nearest_sampler()},
+      .volume = {}};
+  if (!volumes_placeholder_) {
+    volumes_placeholder_.emplace(ctx.gpu(), ctx.node().id + " no probe volumes", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    volumes_placeholder_->write(std::vector<GpuProbeVolume>(kMaxProbeVolumes));
+  }
+  out.volume = {.volumes = volumes_placeholder_->handle(),
+                .records = placeholder_2d,
+                .irradiance = placeholder_2d,
+                .distance = placeholder_2d};
+  if (ProbeVolumeSource* source = linked_volume(ctx)) {
+    // The volume's diffuse light takes what the specular leaves, by the DFG table, as in the frame.
+    if (!ctx.has("in.brdf_lut"))
+      throw std::runtime_error(ctx.node().type + " '" + ctx.node().id +
+                               "': with 'probe_volume' linked the input 'brdf_lut' must be linked too");
+    const ProbeVolumeBinding b = source->probe_volume();
+    if (!b.atlas)
+      throw std::logic_error(ctx.node().type + " '" + ctx.node().id + "': the linked volume has no probes yet");
+    out.volume = {.linked = true,
+                  .representation = b.representation,
+                  .visibility = b.visibility,
+                  .volumes = ctx.buffer("in.probe_volume").handle(),
+                  .records = b.atlas->records().view(),
+                  .irradiance = b.atlas->irradiance().view(),
+                  .distance = b.atlas->distance().view()};
+    settings.volume_count = b.volume_count;
+    settings.volume_normal_bias = b.normal_bias;
+    settings.volume_view_bias = b.view_bias;
+  }
+  return out;
 }
 
 void RasterCapture::record(PassContext& ctx, std::span<const CubeFace> faces, std::span<Image> cubes,
-                           const ForwardResources& resources, const ForwardSettings& settings,
+                           const CaptureResources& resources, const ForwardSettings& settings,
                            std::span<const VkImageView> specular) {
   if (faces.empty()) return;
   const SceneView& scene = ctx.scene();
@@ -101,7 +168,7 @@ void RasterCapture::record(PassContext& ctx, std::span<const CubeFace> faces, st
 }
 
 void RasterCapture::record_views(PassContext& ctx, std::span<const CaptureView> views, VkFormat format,
-                                 const ForwardResources& resources, const ForwardSettings& settings,
+                                 const CaptureResources& resources, const ForwardSettings& settings,
                                  bool probes_only) {
   if (views.empty()) return;
   const SceneView& scene = ctx.scene();
@@ -136,12 +203,13 @@ void RasterCapture::record_views(PassContext& ctx, std::span<const CaptureView> 
   for (size_t k = 0; k < views.size(); ++k) {
     const CaptureView& view = views[k];
     memory_barrier(cmd, kDepthAccess, kDepthAccess);  // the depth target is reused, view after view
-    ForwardResources view_resources = resources;
+    ForwardResources view_resources = resources.forward;
     if (view.specular != VK_NULL_HANDLE) view_resources.specular = view.specular;
     std::vector<DescriptorWrite> writes = forward_writes(lights_, draws_.handle(), settings_.handle(), view_resources);
     writes[0] = uniform_buffer(0, cameras_.handle(), k * kConstantsStride, sizeof(LightConstants));
     *std::find_if(writes.begin(), writes.end(), [](const DescriptorWrite& w) { return w.binding == 20; }) =
         uniform_buffer(20, settings_.handle(), k * kSettingsStride, sizeof(ForwardSettings));
+    add_volume_writes(writes, resources);
     const size_t shared = writes.size();
 
     // The sky covers every texel first, so the colour's old contents are not loaded.
@@ -159,7 +227,8 @@ void RasterCapture::record_views(PassContext& ctx, std::span<const CaptureView> 
       if (m.alpha_mode == AlphaMode::blend || (probes_only && !d.captured_by_probes)) continue;
       writes.resize(shared);
       add_material_textures(gpu_scene, m, writes);
-      const Pipeline& pipeline = mesh_pipeline(ctx, format, m.alpha_mode == AlphaMode::mask, m.double_sided);
+      const Pipeline& pipeline =
+          mesh_pipeline(ctx, format, m.alpha_mode == AlphaMode::mask, m.double_sided, resources.volume);
       bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       push_constants(cmd, pipeline, i);
       draw_mesh(cmd, gpu_scene.mesh(d.mesh));
@@ -186,12 +255,14 @@ const Pipeline& RasterCapture::sky_pipeline(PassContext& ctx, VkFormat color) {
   desc.vertex_bindings.clear();
   desc.vertex_attributes.clear();
   desc.depth_format = kDepthFormat;
+  add_volume_bindings(desc);
   return ctx.pipelines().graphics(desc);
 }
 
 // The views are mirror images of a right-handed view (cube faces, mirrored cameras): front faces
 // wind clockwise. Depth tested and written, reversed Z.
-const Pipeline& RasterCapture::mesh_pipeline(PassContext& ctx, VkFormat color, bool masked, bool double_sided) {
+const Pipeline& RasterCapture::mesh_pipeline(PassContext& ctx, VkFormat color, bool masked, bool double_sided,
+                                             const CaptureVolume& volume) {
   GraphicsPipelineDesc desc =
       forward_pipeline_desc(ctx.pass().name + " capture",
                             node_shader(masked ? "nodes/gi/reflection_capture/shaders/capture_masked.frag"
@@ -200,6 +271,10 @@ const Pipeline& RasterCapture::mesh_pipeline(PassContext& ctx, VkFormat color, b
   desc.front_face = VK_FRONT_FACE_CLOCKWISE;
   desc.depth_format = kDepthFormat;
   desc.depth_test = desc.depth_write = true;
+  add_volume_bindings(desc);
+  // capture_surface.glsl: the lights' two constants at their defaults (true), then whether the
+  // volume is read, its representation and its visibility test.
+  desc.fragment_constants = {1u, 1u, volume.linked ? 1u : 0u, volume.representation, volume.visibility ? 1u : 0u};
   return ctx.pipelines().graphics(desc);
 }
 

@@ -2,7 +2,8 @@
 // one dispatch looks them up per pixel (shaders/reflection_lookup.comp).
 //
 // capture "raster" (raster_capture.h): with faces_per_frame 0, when
-// reflection_capture_key() of the frame's scene differs from the last capture's, every face of
+// reflection_capture_key() of the frame's scene or the linked irradiance volume's probes
+// (probe_volume: their upload version) differ from the last capture's, every face of
 // every probe is drawn on the GPU and every probe prefiltered; with faces_per_frame N, the whole
 // capture is drawn on the first frame (and when the number of probes changes), then N faces a
 // frame, round robin over the probes and their faces, whatever changed, and a probe is
@@ -86,19 +87,24 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
     }
     const SceneView& scene = ctx.scene();
     const uint64_t key = reflection_capture_key(scene);
+    // The raster capture reads the linked volume's probes: new probes (a bake, a dynamic update
+    // landing) make the cubes stale too.
+    const uint64_t volume = raster_ ? CaptureInputs::volume_version(ctx) : 0;
     const bool fresh = cubes_.prepare(ctx, scene.reflection_probes.size(), settings_.face_size, mips_);
-    if (fresh || key != captured_key_) {
+    const bool changed = fresh || key != captured_key_ || volume != captured_volume_;
+    if (changed) {
       probe_buffer_->write(pack_reflection_probes(scene, "gi.reflection_capture '" + ctx.node().id + "'"));
       push_.probe_count = uint32_t(scene.reflection_probes.size());
     }
     if (!raster_) {
-      if (fresh || key != captured_key_) capture_traced(ctx);
+      if (changed) capture_traced(ctx);
     } else if (faces_per_frame_ == 0 || fresh) {
-      if (fresh || key != captured_key_) capture_raster_all(ctx);
+      if (changed) capture_raster_all(ctx);
     } else {
       capture_raster_slice(ctx);
     }
     captured_key_ = key;
+    captured_volume_ = volume;
     lookup(ctx);
   }
 
@@ -130,7 +136,7 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
   void draw_faces(PassContext& ctx, std::span<const CubeFace> faces, bool probe_specular) {
     if (!raster_capture_) raster_capture_.emplace(ctx.gpu(), ctx.node().id);
     ForwardSettings settings{};
-    const ForwardResources resources = inputs_.bind(ctx, intensity_, settings);
+    const CaptureResources resources = inputs_.bind(ctx, intensity_, settings);
     std::vector<VkImageView> specular;
     if (probe_specular)
       for (uint32_t p = 0; p < cubes_.captured().size(); ++p) specular.push_back(cubes_.cube_view(p));
@@ -237,7 +243,7 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
   uint32_t mips_ = 1;
   std::array<uint32_t, 1> constants_{};  // shaders/reflection_lookup.comp: parallax
   Push push_{};
-  uint64_t captured_key_ = 0;
+  uint64_t captured_key_ = 0, captured_volume_ = 0;  // the volume's upload version (CaptureInputs)
   uint32_t next_face_ = 0;  // the time-sliced capture's next slot (6 probe + face)
   std::optional<HostBuffer> camera_, probe_buffer_, staging_;
   CaptureInputs inputs_;

@@ -117,7 +117,7 @@ void main() {
   }
   // The diffuse gets what the specular lobe leaves at this view (brdf_energy.glsl).
   vec2 scale_bias = dfg_scale_bias(n_dot_v, roughness);
-  vec3 diffuse = diffuse_color * (1.0 - specular_albedo(f0, scale_bias)) * irradiance_over_pi * occlusion;
+  vec3 diffuse = image_based_diffuse(diffuse_color, f0, scale_bias, irradiance_over_pi, occlusion);
 
   vec3 r = reflect(-v, n);
   vec3 reflected = intensity * prefiltered_radiance(r, roughness);

@@ -34,17 +34,25 @@ vec2 dfg_scale_bias(float n_dot_v, float roughness) {
   return textureLod(dfg_lut, dfg_uv(n_dot_v, roughness, vec2(textureSize(dfg_lut, 0))), 0.0).rg;
 }
 
-// Image-based light leaving a surface toward v with no occlusion but its material's own
-// (`occlusion`, 1: none), which darkens the diffuse part and, by Lagarde's form, the specular
-// as lighting.ibl does. Diffuse from SH when `from_sh`, else from the irradiance map, weighted
-// by what the specular leaves.
-vec3 environment_light(vec3 n, vec3 v, vec3 diffuse_color, vec3 f0, float roughness, float occlusion, bool from_sh) {
+// E / pi at unit normal n from the environment: its SH when `from_sh`, else its irradiance map.
+vec3 environment_irradiance_over_pi(vec3 n, bool from_sh) {
+  return from_sh ? sh_irradiance(n) / LG_SH_PI : textureLod(irradiance_map, n, 0.0).rgb;
+}
+
+// The diffuse image-based light leaving a surface: `irradiance_over_pi` (E / pi) reflected by
+// what the specular lobe leaves at this view (`scale_bias`: the DFG table's), times `occlusion`
+// (per channel: lighting.ibl's multi-bounce occlusion is coloured).
+vec3 image_based_diffuse(vec3 diffuse_color, vec3 f0, vec2 scale_bias, vec3 irradiance_over_pi, vec3 occlusion) {
+  return diffuse_color * (1.0 - specular_albedo(f0, scale_bias)) * irradiance_over_pi * occlusion;
+}
+
+// The environment's specular light leaving a surface toward v through the split sum, darkened by
+// the material's own occlusion (1: none) by Lagarde's form, as lighting.ibl does.
+vec3 environment_specular(vec3 n, vec3 v, vec3 f0, float roughness, float occlusion, vec2 scale_bias) {
   float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
-  vec3 irradiance_over_pi = from_sh ? sh_irradiance(n) / LG_SH_PI : textureLod(irradiance_map, n, 0.0).rgb;
-  vec2 scale_bias = dfg_scale_bias(n_dot_v, roughness);
   vec3 specular = split_sum_specular(prefiltered_radiance(reflect(-v, n), roughness), f0, scale_bias);
   if (occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, occlusion, roughness);
-  return diffuse_color * (1.0 - specular_albedo(f0, scale_bias)) * irradiance_over_pi * occlusion + specular;
+  return specular;
 }
 
 #endif
