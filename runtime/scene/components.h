@@ -24,7 +24,7 @@ struct Transform {
   glm::vec3 position{0.0f};
   glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z: identity
   glm::vec3 scale{1.0f};
-  Entity parent;  // null: the world's frame; else relative to the parent's Transform
+  Entity parent{};  // null: the world's frame; else relative to the parent's Transform
 
   glm::mat4 local_matrix() const;
 };
