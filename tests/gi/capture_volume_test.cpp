@@ -21,6 +21,7 @@
 #include "nodes/gi/probes/probe_lookup.h"
 #include "nodes/gi/reflection_capture/captured_cube_source.h"
 #include "runtime/scene/scene_file.h"
+#include "tests/gi/plan_kernel.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -77,15 +78,6 @@ Graph parse(bool linked) {
   std::optional<Graph> g = parse_graph_text(graph(linked), d);
   if (!g) throw std::runtime_error(d.to_string());
   return std::move(*g);
-}
-
-template <typename Interface>
-Interface& kernel_of(Renderer& renderer, const std::string& id) {
-  const auto& nodes = renderer.plan().nodes;
-  for (size_t i = 0; i < nodes.size(); ++i)
-    if (nodes[i].id == id)
-      if (auto* k = dynamic_cast<Interface*>(renderer.executor().kernel(i))) return *k;
-  throw std::runtime_error("no node '" + id + "' with that kernel in the plan");
 }
 
 std::vector<float> minus_z_face(Renderer& renderer) {
