@@ -133,7 +133,8 @@ Pipeline finish(const Context& context, Pipeline p, const std::string& name, Cre
 // Specialization constants of 32 bits each: constant_id i at offset 4 i.
 std::vector<VkSpecializationMapEntry> constant_entries(std::span<const uint32_t> constants) {
   std::vector<VkSpecializationMapEntry> entries;
-  for (uint32_t i = 0; i < constants.size(); ++i) entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
+  for (uint32_t i = 0; i < constants.size(); ++i)
+    entries.push_back({i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)});
   return entries;
 }
 

@@ -210,5 +210,15 @@ int main(int argc, char** argv) {
   flags.count("--frames", o.frames);
   flags.text("--methods", o.methods);
   if (const auto status = flags.parse(argc, argv)) return *status;
+  // run() picks the nodes by name: a misspelt one would silently measure nothing.
+  for (size_t start = 0; start <= o.methods.size();) {
+    const size_t end = std::min(o.methods.find(',', start), o.methods.size());
+    const std::string name = o.methods.substr(start, end - start);
+    if (name != "lpv" && name != "voxel") {
+      std::fprintf(stderr, "lumagraph-bench-lpv: --methods: '%s' is neither lpv nor voxel\n", name.c_str());
+      return 2;
+    }
+    start = end + 1;
+  }
   return lg::bench::run(o);
 }

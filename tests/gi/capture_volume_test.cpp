@@ -21,6 +21,7 @@
 #include "nodes/gi/probes/probe_lookup.h"
 #include "nodes/gi/reflection_capture/captured_cube_source.h"
 #include "runtime/scene/scene_file.h"
+#include "tests/gi/plan_kernel.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -79,20 +80,6 @@ Graph parse(bool linked) {
   return std::move(*g);
 }
 
-void expect_clean(Renderer& renderer) {
-  auto messages = renderer.context().take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
-}
-
-template <typename Interface>
-Interface& kernel_of(Renderer& renderer, const std::string& id) {
-  const auto& nodes = renderer.plan().nodes;
-  for (size_t i = 0; i < nodes.size(); ++i)
-    if (nodes[i].id == id)
-      if (auto* k = dynamic_cast<Interface*>(renderer.executor().kernel(i))) return *k;
-  throw std::runtime_error("no node '" + id + "' with that kernel in the plan");
-}
-
 std::vector<float> minus_z_face(Renderer& renderer) {
   return kernel_of<CapturedCubeSource>(renderer, "probes")
       .read_captured_face(renderer.executor().submitter(), 0, kMinusZ);
@@ -119,11 +106,11 @@ TEST(CaptureVolume, TheVolumesLightReachesTheCapturedWall) {
   Renderer renderer(options);  // one device for both graphs
   renderer.set_graph(parse(false));
   renderer.render(world, kFrame);
-  expect_clean(renderer);
+  expect_no_validation_messages(renderer.context());
   const std::vector<float> dark = minus_z_face(renderer);
   renderer.set_graph(parse(true));
   renderer.render(world, kFrame);
-  expect_clean(renderer);
+  expect_no_validation_messages(renderer.context());
   const std::vector<float> lit = minus_z_face(renderer);
   const std::vector<ProbeGrid> grids =
       probe_grids(kernel_of<ProbeSnapshotSource>(renderer, "volume").probe_snapshot().file);

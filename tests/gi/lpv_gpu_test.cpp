@@ -16,13 +16,12 @@
 #include <limits>
 
 #include "api/renderer.h"
-#include "graph/compiler.h"
 #include "graph/graph_io.h"
-#include "nodes/builtin_schemas.h"
 #include "nodes/gi/path_tracer/path_tracer.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/gi/main_light_bypass.h"
 #include "tests/gi/prt_comparison.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -196,30 +195,7 @@ TEST(Lpv, FollowsTheGridsShapeWhenItsCellCountStaysTheSame) {
 // gi.lpv is bypassed, the plan says why, none of its passes run, and lighting.ibl stays (its
 // irradiance_volume input unlinked).
 TEST(Lpv, DroppedWithoutADirectionalLight) {
-  Diagnostics d;
-  std::optional<Graph> graph = load_graph_file(LUMAGRAPH_SOURCE_DIR "/examples/gi-lpv.json", d);
-  ASSERT_TRUE(graph) << d.to_string();
-  CompileOptions options;
-  options.scene = default_scene_summary();
-  options.scene.directional_lights = 0;
-  const CompileResult result = compile(*graph, builtin_registry(), options, d);
-  ASSERT_TRUE(result.plan) << d.to_string();
-  auto state_of = [&](const std::string& id) {
-    for (const PlanNode& n : result.plan->nodes)
-      if (n.id == id) return std::pair{n.state, n.reason};
-    return std::pair{NodeState::Kind::culled, std::string("missing")};
-  };
-  EXPECT_EQ(state_of("lpv").first, NodeState::Kind::bypassed);
-  EXPECT_EQ(state_of("lpv").second, "the scene has no directional lights");
-  EXPECT_EQ(state_of("ibl").first, NodeState::Kind::active);
-  for (const PlanPass& p : result.plan->passes) EXPECT_NE(p.name.rfind("lpv/", 0), 0u) << p.name;
-
-  options.scene.directional_lights = 1;  // and with one, its three passes
-  const CompileResult lit = compile(*graph, builtin_registry(), options, d);
-  ASSERT_TRUE(lit.plan) << d.to_string();
-  EXPECT_EQ(std::count_if(lit.plan->passes.begin(), lit.plan->passes.end(),
-                          [](const PlanPass& p) { return p.name.rfind("lpv/", 0) == 0; }),
-            3);
+  expect_dropped_without_a_directional_light(LUMAGRAPH_SOURCE_DIR "/examples/gi-lpv.json", "lpv");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "graph/graph_io.h"
 #include "nodes/gi/reflection_capture/captured_cube_source.h"
 #include "runtime/scene/load_world.h"
+#include "tests/gi/plan_kernel.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -45,17 +46,8 @@ std::unique_ptr<Renderer> make_renderer(const std::string& graph) {
   return renderer;
 }
 
-void expect_clean(Renderer& renderer) {
-  auto messages = renderer.context().take_validation_messages();
-  EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s):" << describe(messages);
-}
-
 CapturedCubeSource& capture_of(Renderer& renderer) {
-  const auto& nodes = renderer.plan().nodes;
-  for (size_t i = 0; i < nodes.size(); ++i)
-    if (nodes[i].id == "probes")
-      if (auto* source = dynamic_cast<CapturedCubeSource*>(renderer.executor().kernel(i))) return *source;
-  throw std::runtime_error("no capture node 'probes' in the plan");
+  return kernel_of<CapturedCubeSource>(renderer, "probes");
 }
 
 // The mean RGB of each face of probe 0's captured cube.
@@ -92,10 +84,10 @@ TEST(RasterCapture, FacesMatchThePathTracedCaptureUnderDirectLight) {
   };
   auto raster = make_renderer(graph(R"({ "capture": "raster", "face_size": 32 })"));
   raster->render(world, kFrame);
-  expect_clean(*raster);
+  expect_no_validation_messages(raster->context());
   auto traced = make_renderer(graph(R"({ "capture": "path_traced", "face_size": 32, "samples": 16, "bounces": 1 })"));
   traced->render(world, kFrame);
-  expect_clean(*traced);
+  expect_no_validation_messages(traced->context());
   const auto a = face_means(*raster), b = face_means(*traced);
   double largest = 0.0;
   for (int f = 0; f < 6; ++f) largest = std::max({largest, b[f].x, b[f].y, b[f].z});
@@ -140,8 +132,8 @@ TEST(RasterCapture, TimeSlicedCaptureEqualsTheWholeCaptureAfterOneRound) {
   const std::vector<float> round = reflections(*sliced);
   whole->render(world, kFrame);
   const std::vector<float> expected = reflections(*whole);
-  expect_clean(*sliced);
-  expect_clean(*whole);
+  expect_no_validation_messages(sliced->context());
+  expect_no_validation_messages(whole->context());
   ASSERT_EQ(round.size(), expected.size());
   double moved = 0.0, partial_off = 0.0, round_off = 0.0;
   for (size_t i = 0; i < expected.size(); ++i) {
@@ -183,7 +175,7 @@ TEST(RasterCapture, TimeSlicedSecondBounceStaysCleanAndFollowsTheLight) {
     (frame == 0 ? first : last) = sum;
     world.each<RectLight>([](Entity, RectLight& l) { l.intensity *= 1.2f; });
   }
-  expect_clean(*renderer);
+  expect_no_validation_messages(renderer->context());
   // The lamp is 1.2^6 = 3 times brighter when the round's last face is drawn; the walls' light from
   // the sky's SH does not change, so the sum rises less (measured: 1.19 times). Without the sliced
   // faces reaching the lookup it would not change at all.
@@ -206,7 +198,7 @@ TEST(RasterCapture, EntitiesNotCapturedByProbesAreLeftOut) {
     for (Entity e : environments) world.remove<EnvironmentLight>(e);
     auto renderer = make_renderer(graph);
     renderer->render(world, kFrame);
-    expect_clean(*renderer);
+    expect_no_validation_messages(renderer->context());
     std::vector<std::vector<float>> out;
     for (int f = 0; f < 6; ++f)
       out.push_back(capture_of(*renderer).read_captured_face(renderer->executor().submitter(), 0, f));

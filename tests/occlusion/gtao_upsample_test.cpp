@@ -65,7 +65,7 @@ std::string gtao(double scale) {
 // Measured on lavapipe: beside such edges (397 pixels) the half-resolution occlusion is 0.035
 // from the full-resolution one (0.0065 elsewhere; 0.037 and 0.0055 before the depth mips started
 // on the grid); a plain bilinear upsample (the same taps without the depth and normal terms, sky
-// still left out) gives 0.060 there. The bound, 0.048, sits between: 30% above the guided
+// still left out) gives 0.060 there. The bound, 0.048, sits between: 37% above the guided
 // upsample for drivers and noise, 20% below bilinear.
 // (Measured the same way: the Cornell box 0.027 guided, 0.038 bilinear; but two-rooms 0.058
 // guided, 0.054 bilinear: there the guide does not help yet, not understood.)

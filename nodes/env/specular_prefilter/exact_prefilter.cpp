@@ -93,8 +93,8 @@ void record_specular_prefilter_exact(Context& gpu, PipelineCache& pipelines, VkC
   vkCmdFillBuffer(cmd, peaks.handle(), 0, 4, 0);
   vkCmdFillBuffer(cmd, peaks.handle(), 4, 4, kPrefilterPeakCapacity);
   memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                                                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 
   const Pipeline& chain_pipeline =
       pipelines.compute({name,
@@ -108,10 +108,10 @@ void record_specular_prefilter_exact(Context& gpu, PipelineCache& pipelines, VkC
     if (mip > 0) compute_to_compute_barrier(cmd);
     const uint32_t size = std::max(1u, env_size >> mip);
     const DescriptorWrite writes[] = {
-        mip == 0 ? sampled_image(0, env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = 0, .mip_count = 1}),
-                                 sampler)
-                 : sampled_image(0, chain.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip - 1, .mip_count = 1}),
-                                 sampler, VK_IMAGE_LAYOUT_GENERAL),
+        mip == 0
+            ? sampled_image(0, env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = 0, .mip_count = 1}), sampler)
+            : sampled_image(0, chain.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip - 1, .mip_count = 1}),
+                            sampler, VK_IMAGE_LAYOUT_GENERAL),
         storage_image(1, chain.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1})),
         sampled_image(2, env.view(), sampler), storage_buffer(3, peaks.handle())};
     bind_pipeline(gpu, cmd, chain_pipeline, writes);
@@ -119,17 +119,18 @@ void record_specular_prefilter_exact(Context& gpu, PipelineCache& pipelines, VkC
     vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
   }
   // The sums read the chain sampled and the peak list as a uniform buffer.
-  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
-                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
-                                                              VK_ACCESS_2_UNIFORM_READ_BIT});
+  memory_barrier(
+      cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+      {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
 
-  const Pipeline& sum_pipeline = pipelines.compute({name,
-                                                    node_shader("nodes/env/specular_prefilter/shaders/prefilter_exact.comp"),
-                                                    {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                                                     {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                                     {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                                                     {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
-                                                    sizeof(SumPush)});
+  const Pipeline& sum_pipeline =
+      pipelines.compute({name,
+                         node_shader("nodes/env/specular_prefilter/shaders/prefilter_exact.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                          {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                          {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                          {3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}},
+                         sizeof(SumPush)});
   const uint32_t mips = prefiltered.desc().mips;
   for (uint32_t mip = 0; mip < mips; ++mip) {
     const uint32_t size = std::max(1u, prefiltered.desc().width >> mip);

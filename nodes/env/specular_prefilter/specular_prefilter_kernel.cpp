@@ -44,7 +44,8 @@ class SpecularPrefilterKernel final : public NodeKernel {
       return;
     }
     if (peaks_.size() < prefilter_peaks_bytes())
-      peaks_ = Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " prefilter peaks", .size = prefilter_peaks_bytes()});
+      peaks_ =
+          Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " prefilter peaks", .size = prefilter_peaks_bytes()});
     record_specular_prefilter_exact(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, ctx.image("in.env"),
                                     ctx.image("tmp.chain"), ctx.nearest_sampler(), peaks_, ctx.image("out.specular"));
   }

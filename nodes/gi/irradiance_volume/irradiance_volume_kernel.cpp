@@ -91,8 +91,13 @@ class IrradianceVolumeKernel final : public NodeKernel, public ProbeSnapshotSour
   uint64_t probe_version() const override { return version_; }
 
   ProbeVolumeBinding probe_volume() override {
-    return {probes_ ? &*probes_ : nullptr, push_.volume_count, constants_[0], constants_[1] != 0, push_.normal_bias,
-            push_.view_bias, version_};
+    return {probes_ ? &*probes_ : nullptr,
+            push_.volume_count,
+            constants_[0],
+            constants_[1] != 0,
+            push_.normal_bias,
+            push_.view_bias,
+            version_};
   }
 
   ProbeSnapshot probe_snapshot() const override {

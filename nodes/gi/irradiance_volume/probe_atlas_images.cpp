@@ -9,6 +9,11 @@
 namespace lg {
 namespace {
 
+// graph/port_type.cpp sizes the plan's probe_volume buffer (the `probes` output) as 64 x 160
+// bytes, without this header; copy_volumes() writes the whole block into it.
+static_assert(kMaxProbeVolumes * sizeof(GpuProbeVolume) == 64 * 160,
+              "graph/port_type.cpp's probe_volume size must hold the volumes' block");
+
 struct Target {
   std::optional<Image>* image;
   const AtlasImage* source;
@@ -74,9 +79,10 @@ void ProbeAtlasImages::copy_volumes(VkCommandBuffer cmd, VkBuffer target) const 
   memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE},
                  {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
   vkCmdUpdateBuffer(cmd, target, 0, block_.size() * sizeof(GpuProbeVolume), block_.data());
-  memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                 {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_UNIFORM_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+  memory_barrier(
+      cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+      {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+       VK_ACCESS_2_UNIFORM_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 
 }  // namespace lg

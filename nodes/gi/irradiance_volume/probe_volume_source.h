@@ -16,8 +16,8 @@ namespace lg {
 struct ProbeVolumeBinding {
   ProbeAtlasImages* atlas = nullptr;  // null before the first bake
   uint32_t volume_count = 0;
-  uint32_t representation = 3;        // ProbeRepresentation, probe_volume.glsl's LG_PROBE_*
-  bool visibility = true;             // the Chebyshev test on the distance moments
+  uint32_t representation = 3;                 // ProbeRepresentation, probe_volume.glsl's LG_PROBE_*
+  bool visibility = true;                      // the Chebyshev test on the distance moments
   float normal_bias = 0.0f, view_bias = 0.0f;  // in cells
   uint64_t version = 0;  // of the last upload (probe_snapshot.h's): changes whenever the probes do
 };

@@ -94,19 +94,20 @@ CaptureResources CaptureInputs::bind(PassContext& ctx, float intensity, ForwardS
                                                            .layers = 6,
                                                            .usage = VK_IMAGE_USAGE_SAMPLED_BIT}));
     image_barrier(ctx.cmd(), *cube_placeholder_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                  {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE}, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE});
+                  {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE},
+                  {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE});
   }
   const VkImageView no_cube = cube_placeholder_->view();
   const VkImageView placeholder_2d = ctx.image("in.gbuffer", 0).view();
-  CaptureResources out{
-      .forward = {.sh = sh ? ctx.buffer("in.sh").handle() : sh_placeholder_->handle(),
-                  .irradiance = ctx.has("in.irradiance") ? ctx.image("in.irradiance").view() : no_cube,
-                  .specular = environment ? ctx.image("in.specular").view() : no_cube,
-                  .brdf_lut = ctx.has("in.brdf_lut") ? ctx.image("in.brdf_lut").view() : ctx.image("in.gbuffer", 1).view(),
-                  .placeholder_2d = placeholder_2d,
-                  .linear = ctx.linear_sampler(),
-                  .nearest = ctx.nearest_sampler()},
-      .volume = {}};
+  CaptureResources out{.forward = {.sh = sh ? ctx.buffer("in.sh").handle() : sh_placeholder_->handle(),
+                                   .irradiance = ctx.has("in.irradiance") ? ctx.image("in.irradiance").view() : no_cube,
+                                   .specular = environment ? ctx.image("in.specular").view() : no_cube,
+                                   .brdf_lut = ctx.has("in.brdf_lut") ? ctx.image("in.brdf_lut").view()
+                                                                      : ctx.image("in.gbuffer", 1).view(),
+                                   .placeholder_2d = placeholder_2d,
+                                   .linear = ctx.linear_sampler(),
+                                   .nearest = ctx.nearest_sampler()},
+                       .volume = {}};
   if (!volumes_placeholder_) {
     volumes_placeholder_.emplace(ctx.gpu(), ctx.node().id + " no probe volumes", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     volumes_placeholder_->write(std::vector<GpuProbeVolume>(kMaxProbeVolumes));
@@ -146,12 +147,11 @@ void RasterCapture::record(PassContext& ctx, std::span<const CubeFace> faces, st
   std::vector<CaptureView> views;
   for (const CubeFace& f : faces) {
     const glm::vec3 position(scene.reflection_probes.at(f.probe).world[3]);
-    views.push_back({cube_face_camera(position, f.face, size, scene.camera.near_plane),
-                     cubes[f.probe].view({.type = VK_IMAGE_VIEW_TYPE_2D,
-                                          .mip_count = 1,
-                                          .base_layer = uint32_t(f.face),
-                                          .layer_count = 1}),
-                     size, size, specular.empty() ? VK_NULL_HANDLE : specular[f.probe]});
+    views.push_back(
+        {cube_face_camera(position, f.face, size, scene.camera.near_plane),
+         cubes[f.probe].view(
+             {.type = VK_IMAGE_VIEW_TYPE_2D, .mip_count = 1, .base_layer = uint32_t(f.face), .layer_count = 1}),
+         size, size, specular.empty() ? VK_NULL_HANDLE : specular[f.probe]});
   }
   VkCommandBuffer cmd = ctx.cmd();
   std::vector<bool> touched(cubes.size(), false);
@@ -168,8 +168,7 @@ void RasterCapture::record(PassContext& ctx, std::span<const CubeFace> faces, st
 }
 
 void RasterCapture::record_views(PassContext& ctx, std::span<const CaptureView> views, VkFormat format,
-                                 const CaptureResources& resources, const ForwardSettings& settings,
-                                 bool probes_only) {
+                                 const CaptureResources& resources, const ForwardSettings& settings, bool probes_only) {
   if (views.empty()) return;
   const SceneView& scene = ctx.scene();
   uint32_t width = 0, height = 0;

@@ -38,7 +38,7 @@ struct CaptureView {
   CameraConstants camera;
   VkImageView target;
   uint32_t width, height;
-  VkImageView specular = VK_NULL_HANDLE;  // the surfaces' specular map; null: the resources'
+  VkImageView specular = VK_NULL_HANDLE;         // the surfaces' specular map; null: the resources'
   glm::vec4 clip_plane{0.0f, 0.0f, 0.0f, 1.0f};  // ForwardSettings::clip_plane of this view
 };
 

@@ -244,7 +244,7 @@ class ReflectionCaptureKernel final : public NodeKernel, public CapturedCubeSour
   std::array<uint32_t, 1> constants_{};  // shaders/reflection_lookup.comp: parallax
   Push push_{};
   uint64_t captured_key_ = 0, captured_volume_ = 0;  // the volume's upload version (CaptureInputs)
-  uint32_t next_face_ = 0;  // the time-sliced capture's next slot (6 probe + face)
+  uint32_t next_face_ = 0;                           // the time-sliced capture's next slot (6 probe + face)
   std::optional<HostBuffer> camera_, probe_buffer_, staging_;
   CaptureInputs inputs_;
   std::optional<PathEnvironment> environment_;

@@ -14,9 +14,9 @@
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
-#include "nodes/common/node_shaders.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
+#include "nodes/lighting/deferred/shadow_depth_pipeline.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
@@ -41,12 +41,6 @@ struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 irradiance;
   glm::mat4 shadow_from_world;
   glm::ivec4 chain;
-};
-
-struct ShadowPush {  // lighting.deferred's shadow_draw.glsl
-  glm::mat4 shadow_from_world;
-  uint32_t draw_index;
-  uint32_t pad[3];
 };
 
 struct VoxelizePush {  // shaders/voxelize.comp
@@ -149,23 +143,13 @@ class VoxelKernel final : public NodeKernel {
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
     if (light_present_) {
-      GraphicsPipelineDesc desc;
-      desc.name = ctx.pass().name;
-      desc.vertex_shader = node_shader("nodes/lighting/deferred/shaders/shadow.vert");
-      desc.fragment_shader = node_shader("nodes/lighting/deferred/shaders/shadow.frag");
-      desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-      desc.push_constant_bytes = sizeof(ShadowPush);
-      desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};  // positions only
-      desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)}};
-      desc.depth_format = map.desc().format;
-      desc.depth_test = desc.depth_write = true;
-      const Pipeline& pipeline = ctx.pipelines().graphics(desc);
+      const Pipeline& pipeline = shadow_depth_pipeline(ctx, map.desc().format, false);
       set_viewport(cmd, size, size);
       const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle())};
       bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       const SceneView& scene = ctx.scene();
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-        push_constants(cmd, pipeline, ShadowPush{shadow_from_world_, i, {}});
+        push_constants(cmd, pipeline, ShadowDrawPush{shadow_from_world_, i, {}});
         draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
       }
     }

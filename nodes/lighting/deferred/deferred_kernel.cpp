@@ -9,10 +9,10 @@
 #include "nodes/common/camera_constants.h"
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
-#include "nodes/common/node_shaders.h"
 #include "nodes/lighting/deferred/light_buffers.h"
 #include "nodes/lighting/deferred/light_culling.h"
 #include "nodes/lighting/deferred/local_shadows.h"
+#include "nodes/lighting/deferred/shadow_depth_pipeline.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
@@ -116,8 +116,8 @@ class DeferredKernel final : public NodeKernel {
     GpuScene& gpu_scene = ctx.gpu_scene();
     VkRenderingAttachmentInfo depth = cleared_attachment(map.view(), {.depthStencil = {0.0f, 0}});
     const VkRenderingInfo rendering = rendering_info(map.desc().width, map.desc().height, {}, &depth);
-    const Pipeline& opaque = depth_pipeline(ctx, map, false);
-    const Pipeline& alpha_tested = depth_pipeline(ctx, map, true);
+    const Pipeline& opaque = shadow_depth_pipeline(ctx, map.desc().format, false);
+    const Pipeline& alpha_tested = shadow_depth_pipeline(ctx, map.desc().format, true);
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
@@ -142,37 +142,11 @@ class DeferredKernel final : public NodeKernel {
           bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
         }
         bound = &pipeline;
-        push_constants(cmd, pipeline, ShadowPush{view.clip_from_world, i, {}});
+        push_constants(cmd, pipeline, ShadowDrawPush{view.clip_from_world, i, {}});
         draw_mesh(cmd, gpu_scene.mesh(scene.draws[i].mesh));
       }
     }
     vkCmdEndRendering(cmd);
-  }
-
-  // Depth into `map` from positions (shaders/shadow.vert), or alpha-tested against the draw's
-  // base colour (shaders/shadow_masked.*). Both sides of every face: a wall modelled as one
-  // single-sided plane must not let light through from behind.
-  static const Pipeline& depth_pipeline(PassContext& ctx, const Image& map, bool alpha_tested) {
-    GraphicsPipelineDesc desc;
-    desc.name = ctx.pass().name;
-    desc.vertex_shader = node_shader(alpha_tested ? "nodes/lighting/deferred/shaders/shadow_masked.vert"
-                                                  : "nodes/lighting/deferred/shaders/shadow.vert");
-    desc.fragment_shader = node_shader(alpha_tested ? "nodes/lighting/deferred/shaders/shadow_masked.frag"
-                                                    : "nodes/lighting/deferred/shaders/shadow.frag");
-    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-    if (alpha_tested) desc.bindings.push_back({1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    desc.push_constant_bytes = sizeof(ShadowPush);
-    // Exactly the attributes shadow_vertex.glsl reads: validation flags any other.
-    desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)}};
-    if (alpha_tested)
-      desc.vertex_attributes.insert(desc.vertex_attributes.end(),
-                                    {{2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv)},
-                                     {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(GpuVertex, uv1)},
-                                     {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(GpuVertex, color)}});
-    desc.depth_format = map.desc().format;
-    desc.depth_test = desc.depth_write = true;
-    return ctx.pipelines().graphics(desc);
   }
 
   // The G-buffer's four surface images at bindings 1 to 4, as surface.glsl declares them.
@@ -240,12 +214,6 @@ class DeferredKernel final : public NodeKernel {
   }
 
   static constexpr int gbuffer_emissive = 5;  // the bundle's component (graph/port_type.cpp)
-
-  struct ShadowPush {
-    glm::mat4 shadow_from_world;
-    uint32_t draw_index;
-    uint32_t pad[3];
-  };
 
   const uint32_t shadow_budget_, atlas_size_, area_shadow_samples_;
   const bool cull_lights_, area_specular_ltc_;

@@ -22,7 +22,7 @@ struct ForwardSettings {
   uint32_t flags;  // 1: image-based light, 2: its diffuse from SH, 4: distance to the camera in alpha
   float intensity;
   float volume_normal_bias = 0.0f, volume_view_bias = 0.0f;  // the captures' probe volume (raster_capture.h)
-  glm::vec4 clip_plane{0.0f, 0.0f, 0.0f, 1.0f};  // (0, 0, 0, 1): nothing clipped
+  glm::vec4 clip_plane{0.0f, 0.0f, 0.0f, 1.0f};              // (0, 0, 0, 1): nothing clipped
   uint32_t volume_count = 0;
   uint32_t unused[3] = {};
 };
