@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
@@ -21,6 +20,7 @@
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
 #include "tests/gi/prt_comparison.h"
 #include "tests/runtime/gpu_test.h"
@@ -102,35 +102,9 @@ TEST(Lpv, BeatsNoIndirectLightOnTheCornellBoxAndFollowsTheSun) {
   expect_no_validation_messages(renderer->context());
 }
 
-// Zero-area triangles (all three corners on one point, and on one line), zero normals, a NaN
-// base colour on one mesh and a sun 1e30 W/m^2 bright: the frame is finite and validation clean.
+// degenerate_world(): the frame is finite and validation clean.
 TEST(Lpv, StaysFiniteOnDegenerateInput) {
-  World world;
-  PbrMaterial plain;
-  PbrMaterial broken;
-  broken.base_color = glm::vec4(std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f, 1.0f);
-  Entity floor = world.create("floor");
-  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(plain)});
-  world.add(floor, Transform{});
-  Entity box = world.create("box");
-  world.add(box, MeshRenderer{world.add_mesh(make_box({1.0f, 1.0f, 1.0f})), world.add_material(broken)});
-  world.add(box, Transform{}).position = {0.5f, 0.5f, 0.0f};
-  MeshData flat;  // a point and a line as triangles, normals of zero length
-  flat.positions = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {-1, 0.5f, 0}, {0, 0.5f, 0}, {1, 0.5f, 0}};
-  flat.normals.assign(6, glm::vec3(0.0f));
-  flat.indices = {0, 1, 2, 3, 4, 5};
-  Entity degenerate = world.create("degenerate");
-  world.add(degenerate, MeshRenderer{world.add_mesh(std::move(flat)), world.add_material(plain)});
-  world.add(degenerate, Transform{});
-  Entity camera = world.create("camera");
-  world.add(camera, Camera{});
-  Transform& eye = world.add(camera, Transform{});
-  eye.position = {0.0f, 2.0f, 4.0f};
-  eye.rotation = look_rotation({0.0f, -0.4f, -1.0f});
-  Entity sun = world.create("sun");
-  world.add(sun, DirectionalLight{.intensity = 1e30f});
-  world.add(sun, Transform{}).rotation = look_rotation({0.3f, -1.0f, -0.4f});
-
+  World world = degenerate_world();
   auto renderer = make_renderer(lpv_graph(8, 4));
   renderer->render(world, kFrame);
   const std::vector<float> out = renderer->executor().read_image("lpv.irradiance");

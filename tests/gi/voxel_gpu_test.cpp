@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
-#include <limits>
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
@@ -22,6 +21,7 @@
 #include "nodes/raytrace/camera_pixels.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -265,29 +265,10 @@ TEST(Voxel, NextFrameFollowsAMovedWallAndATurnedSun) {
   expect_no_validation_messages(fresh->context());
 }
 
-// Zero-area triangles (all three corners on one point, and on one line), zero normals, a NaN
-// base colour on one mesh and a sun 1e30 W/m^2 bright, at resolution_scale 0.5 (the upsample
-// too): both outputs finite, validation clean.
+// degenerate_world() at resolution_scale 0.5 (the upsample too): both outputs finite, validation
+// clean.
 TEST(Voxel, StaysFiniteOnDegenerateInput) {
-  World world;
-  PbrMaterial plain;
-  PbrMaterial broken;
-  broken.base_color = glm::vec4(std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f, 1.0f);
-  Entity floor = world.create("floor");
-  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(plain)});
-  world.add(floor, Transform{});
-  Entity box = world.create("box");
-  world.add(box, MeshRenderer{world.add_mesh(make_box({1.0f, 1.0f, 1.0f})), world.add_material(broken)});
-  world.add(box, Transform{}).position = {0.5f, 0.5f, 0.0f};
-  MeshData flat;  // a point and a line as triangles, normals of zero length
-  flat.positions = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {-1, 0.5f, 0}, {0, 0.5f, 0}, {1, 0.5f, 0}};
-  flat.normals.assign(6, glm::vec3(0.0f));
-  flat.indices = {0, 1, 2, 3, 4, 5};
-  Entity degenerate = world.create("degenerate");
-  world.add(degenerate, MeshRenderer{world.add_mesh(std::move(flat)), world.add_material(plain)});
-  world.add(degenerate, Transform{});
-  add_camera_and_sun(world, {0.0f, 2.0f, 4.0f}, {0.0f, -0.4f, -1.0f}, {0.3f, -1.0f, -0.4f}, 1e30f);
-
+  World world = degenerate_world();
   auto renderer = make_renderer(voxel_graph(16, 0.5));
   renderer->render(world, kFrame);
   const std::vector<float> e = renderer->executor().read_image("voxel.irradiance");
