@@ -1,7 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// gi.voxel's voxelization, one invocation per triangle of one draw: the triangle, in world space,
-// marks every voxel it overlaps (conservative: touching counts), by the separating-axis test of
+// gi.voxel's voxelization, one invocation per triangle of one draw and slab of voxel layers (z,
+// the dispatch's y; slab_layers layers keep the loop under lavapipe's 65,535 iterations an
+// invocation, which a large slanted triangle's whole bounding box passed): the triangle, in world
+// space, marks every voxel of the slab it overlaps (conservative: touching counts), by the separating-axis test of
 // Akenine-Moller (2001) against each voxel of its bounding box: the box's three axes (the loop's
 // bounds), the triangle's normal and the nine cross products of its edges with the axes. Each
 // marked voxel adds the triangle's diffuse colour (base colour x the mean vertex colour x
@@ -12,7 +14,7 @@
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/scene/gbuffer/shaders/draw_data.glsl"
 
-layout(local_size_x = 64, local_size_y = 1) in;
+layout(local_size_x = 8, local_size_y = 8) in;  // triangles x slabs (voxel_kernel.cpp)
 
 layout(std430, binding = 1) readonly buffer Draws { Draw draws[]; };
 layout(std430, binding = 2) readonly buffer Vertices { float vertices[]; };  // GpuVertex: 18 floats
@@ -20,7 +22,9 @@ layout(std430, binding = 3) readonly buffer Indices { uint indices[]; };
 layout(std430, binding = 4) buffer Grid { int grid[]; };
 layout(push_constant) uniform Push {
   uint draw_index;
+  uint first_triangle;
   uint triangle_count;
+  uint slab_layers;
 };
 
 const uint kVertexFloats = 18u, kColorOffset = 14u;
@@ -56,8 +60,9 @@ bool overlaps_voxel(vec3 a, vec3 b, vec3 c, vec3 n) {
 }
 
 void main() {
-  uint t = gl_GlobalInvocationID.x;
-  if (t >= triangle_count) return;
+  if (gl_GlobalInvocationID.x >= triangle_count) return;
+  uint t = first_triangle + gl_GlobalInvocationID.x;
+  int first_layer = int(gl_GlobalInvocationID.y * slab_layers);
   Draw d = draws[draw_index];
   uint i0 = indices[3u * t], i1 = indices[3u * t + 1u], i2 = indices[3u * t + 2u];
   vec3 origin = voxel.origin_cell.xyz;
@@ -80,7 +85,7 @@ void main() {
   ivec3 lo = clamp(ivec3(floor(min(a, min(b, c)))), ivec3(0), counts - 1);
   ivec3 hi = clamp(ivec3(floor(max(a, max(b, c)))), ivec3(0), counts - 1);
   if (any(greaterThan(min(a, min(b, c)), vec3(counts))) || any(lessThan(max(a, max(b, c)), vec3(0.0)))) return;
-  for (int z = lo.z; z <= hi.z; ++z)
+  for (int z = max(lo.z, first_layer); z <= min(hi.z, first_layer + int(slab_layers) - 1); ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
         vec3 centre = vec3(x, y, z) + 0.5;
