@@ -22,6 +22,7 @@
 #include "runtime/scene/mesh_generators.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
+#include "tests/gi/validating_renderer.h"
 #include "tests/gi/prt_comparison.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -42,15 +43,6 @@ Graph lpv_graph(int grid, int iterations) {
                                                 d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
-}
-
-std::unique_ptr<Renderer> make_renderer(const Graph& graph) {
-  RendererOptions options;
-  options.device.validation = true;
-  options.alias = false;
-  auto renderer = std::make_unique<Renderer>(options);
-  renderer->set_graph(graph);
-  return renderer;
 }
 
 // The Cornell box lit by its sun alone (the light gi.lpv carries), traced with two bounces: the

@@ -25,6 +25,7 @@
 #include "runtime/scene/mesh_generators.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
+#include "tests/gi/validating_renderer.h"
 #include "tests/runtime/gpu_test.h"
 
 namespace lg::test {
@@ -46,15 +47,6 @@ Graph voxel_graph(int resolution, double resolution_scale, bool facing_colour = 
       d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
-}
-
-std::unique_ptr<Renderer> make_renderer(const Graph& graph) {
-  RendererOptions options;
-  options.device.validation = true;
-  options.alias = false;
-  auto renderer = std::make_unique<Renderer>(options);
-  renderer->set_graph(graph);
-  return renderer;
 }
 
 void add_camera_and_sun(World& world, glm::vec3 eye, glm::vec3 look, glm::vec3 sun_direction, float intensity) {
