@@ -41,9 +41,14 @@ std::optional<Args> parse_args(const std::vector<std::string>& argv, const ArgSp
       std::string value;
       if (eq != std::string::npos)
         value = arg.substr(eq + 1);
-      else if (k + 1 < argv.size())
+      else if (k + 1 < argv.size() && argv[k + 1].rfind("--", 0) != 0)
         value = argv[++k];
-      else {
+      else if (k + 1 < argv.size()) {
+        // `--stats --output x.png` would take `--output` as the file and `x.png` as the graph.
+        *error = "'" + name + "' needs a value, not the option '" + argv[k + 1] + "' (write " + name + "=" +
+                 argv[k + 1] + " if that is the value)";
+        return std::nullopt;
+      } else {
         *error = "'" + name + "' needs a value";
         return std::nullopt;
       }

@@ -168,6 +168,17 @@ TEST(ParseCli, UnknownOptionsAreUsageErrors) {
   EXPECT_TRUE(starts_with(single_dash.err, "lumagraph compile: unknown option '-x'\n")) << single_dash.err;
 }
 
+TEST(ParseCli, AnOptionIsNotTakenAsTheValueOfTheOptionBeforeIt) {
+  Outcome r = lumagraph({"render", "--stats", "--output", "x.png"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(starts_with(r.err, "lumagraph render: '--stats' needs a value, not the option '--output' (write "
+                                 "--stats=--output if that is the value)\n"))
+      << r.err;
+  // The control: the same words with `=` are a value (here an unknown graph, so the option parsed).
+  Outcome control = lumagraph({"compile", "--scene=--nothing"});
+  EXPECT_EQ(control.status, 2) << control.err;
+}
+
 TEST(ParseCli, BadFrameSizesAreUsageErrors) {
   for (const char* size : {"0x720", "1280", "1280x", "1280x720x2", "abc", "16385x16", "-5x10", "1280x720junk"}) {
     SCOPED_TRACE(size);
