@@ -2,12 +2,15 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
 #include <vtkMapper.h>
 #include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -20,6 +23,9 @@
 #include <limits>
 
 #include "nodes/occlusion/bake/bake_file.h"
+#include "nodes/raytrace/world_mesh.h"
+#include "runtime/scene/load_world.h"
+#include "runtime/scene/make_scene_view.h"
 
 namespace lg {
 
@@ -39,6 +45,38 @@ BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::stri
     throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
                         " of a bake; merge the chunks first (lumagraph bake merge)");
   return file;
+}
+
+WorldMesh load_baked_mesh(const std::string& mesh_path, const std::string& bake_path, uint64_t input_hash,
+                          uint64_t vertices) {
+  WorldMesh mesh;
+  try {
+    mesh = make_world_mesh(make_scene_view(load_world(mesh_path), 1.0f));
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    throw BakeFileError(what.find(mesh_path) == std::string::npos ? mesh_path + ": " + what : what);
+  }
+  if (world_mesh_hash(mesh) != input_hash || mesh.positions.size() != vertices)
+    throw BakeFileError(mesh_path + ": not the geometry " + bake_path + " was baked from (" +
+                        std::to_string(mesh.positions.size()) + " vertices, the bake has " + std::to_string(vertices) +
+                        "; or their positions, normals or indices differ)");
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> vtk_mesh(const WorldMesh& mesh) {
+  vtkNew<vtkPoints> points;
+  points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    points->SetPoint(vtkIdType(i), mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
+  vtkNew<vtkCellArray> triangles;
+  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+    const vtkIdType corners[3] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+    triangles->InsertNextCell(3, corners);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(triangles);
+  return poly;
 }
 
 vtkSmartPointer<vtkFloatArray> vtk_array(const char* name, int components, const std::vector<float>& values) {
@@ -94,10 +132,10 @@ vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range) 
   return lut;
 }
 
-void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* masked) {
+void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* title, const char* masked) {
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(lut);
-  bar->SetTitle("k_A");
+  bar->SetTitle(title);
   bar->SetNumberOfLabels(5);
   bar->SetLabelFormat("%.2f");
   // The grey swatch below the ramp is the legend of the masked points.
@@ -130,15 +168,16 @@ void add_title(vtkRenderer* renderer, const std::string& text) {
   renderer->AddActor2D(title);
 }
 
-void add_visibility_actor(vtkRenderer* renderer, vtkMapper* mapper, vtkLookupTable* lut) {
+vtkSmartPointer<vtkActor> add_visibility_actor(vtkRenderer* renderer, vtkMapper* mapper, vtkLookupTable* lut) {
   mapper->SetLookupTable(lut);
   mapper->UseLookupTableScalarRangeOn();
   mapper->SetColorModeToMapScalars();
   mapper->InterpolateScalarsBeforeMappingOn();
-  vtkNew<vtkActor> actor;
+  auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetLighting(false);
   renderer->AddActor(actor);
+  return actor;
 }
 
 void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset) {

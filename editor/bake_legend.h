@@ -1,29 +1,41 @@
-// What the inspector's views share: light shown as display bytes; reading a whole bake of one mode, its arrays as VTK
-// arrays, visibility with the invalid points masked (NaN, drawn grey), the colour map and its bar, the title in the
-// view's top-left corner, and the camera's framing.
+// What the inspector's views share: light shown as display bytes; reading a whole bake of one mode, the world mesh a
+// per-vertex bake was made from, arrays as VTK arrays, visibility with the invalid points masked (NaN, drawn grey), the
+// colour map and its bar, the title in the view's top-left corner, and the camera's framing.
 #pragma once
 
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 class vtkDataArray;
 class vtkFloatArray;
 class vtkLookupTable;
+class vtkActor;
 class vtkMapper;
+class vtkPolyData;
 class vtkRenderer;
 
 namespace lg {
 
 struct BakeFile;
+struct WorldMesh;
 enum class BakeMode;
 
 // The .lgbake at `path` through the bake library; throws BakeFileError naming it when it is
 // missing, damaged, a chunk of a bake, or a bake of another mode than `mode` (`hint` then says
 // how to open it).
 BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint);
+
+// The world mesh of the mesh or scene file `mesh_path` (loaded as `lumagraph bake` loads it), checked against the
+// geometry a per-vertex bake at `bake_path` was made from; throws BakeFileError naming the file that is missing,
+// unreadable, or not that geometry (another vertex count or hash).
+WorldMesh load_baked_mesh(const std::string& mesh_path, const std::string& bake_path, uint64_t input_hash,
+                          uint64_t vertices);
+// The mesh's triangles as VTK polygons, points in world space.
+vtkSmartPointer<vtkPolyData> vtk_mesh(const WorldMesh& mesh);
 
 // Radiance or irradiance to a display byte: scaled by `exposure`, Reinhard, then gamma 2.2.
 unsigned char display_byte(double v, double exposure);
@@ -45,10 +57,10 @@ vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range);
 // Adds an unlit actor for `mapper` coloured by `lut` over its range: unlit so that a colour on
 // screen reads on the bar; colours interpolate in the map's texture, so a masked point stays
 // grey, not blended.
-void add_visibility_actor(vtkRenderer* renderer, vtkMapper* mapper, vtkLookupTable* lut);
+vtkSmartPointer<vtkActor> add_visibility_actor(vtkRenderer* renderer, vtkMapper* mapper, vtkLookupTable* lut);
 
-// The colour bar of k_A at the right, with a grey "`masked`" swatch below it.
-void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* masked);
+// The colour bar of `title` (k_A for occlusion) at the right, with a grey "`masked`" swatch below it.
+void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* title, const char* masked);
 void add_title(vtkRenderer* renderer, const std::string& text);
 
 // Points the camera at the centre of `bounds` (xmin, xmax, ymin, ymax, zmin, zmax) from

@@ -221,7 +221,7 @@ VolumeSlices::VolumeSlices(vtkRenderer* renderer, const BakeVolume& volume) : pi
   axes->GetZAxesLinesProperty()->SetColor(0.5, 0.5, 0.5);
   renderer->AddActor(axes);
 
-  add_visibility_bar(renderer, p.lut, "inside");
+  add_visibility_bar(renderer, p.lut, "k_A", "inside");
 
   std::ostringstream title;
   title.precision(3);

@@ -6,6 +6,8 @@
 // the mesh (or scene) it was baked from, coloured by each vertex's visibility.
 // lumagraph-inspect --bake NAME.lgprobes [--volume N] [--probe I] [--screenshot PNG]: shows the
 // probes of volume N (from 1) of a probe bake (`lumagraph bake --mode probes`), probe I selected.
+// lumagraph-inspect --bake NAME.lgprt --mesh MESH [--vertex I] [--screenshot PNG]: shows a PRT bake
+// (`lumagraph bake --mode prt`) on its mesh, and vertex I's transfer function on a sphere.
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -32,21 +34,26 @@ int main(int argc, char** argv) {
                              QStringLiteral("[file]"));
   const QCommandLineOption bake(
       QStringLiteral("bake"),
-      QStringLiteral("A bake to show instead: a volume (.vti or .lgbake) or probes (.lgprobes)."),
+      QStringLiteral("A bake to show instead: a volume (.vti or .lgbake), probes (.lgprobes) or PRT (.lgprt)."),
       QStringLiteral("BAKE"));
   const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                       QStringLiteral("Write the window to a PNG and exit."), QStringLiteral("PNG"));
   const QCommandLineOption mesh(QStringLiteral("mesh"),
-                                QStringLiteral("The mesh or scene a vertex bake (--bake NAME.lgbake) was baked from."),
+                                QStringLiteral("The mesh or scene a vertex or PRT bake (--bake NAME.lgbake, NAME.lgprt) "
+                                               "was baked from."),
                                 QStringLiteral("MESH"));
   const QCommandLineOption volume(QStringLiteral("volume"), QStringLiteral("The probe bake's volume to show (from 1)."),
                                   QStringLiteral("N"), QStringLiteral("1"));
   const QCommandLineOption probe(QStringLiteral("probe"), QStringLiteral("The probe whose maps to show (from 0)."),
                                  QStringLiteral("I"));
+  const QCommandLineOption vertex(QStringLiteral("vertex"),
+                                 QStringLiteral("The PRT bake's vertex whose transfer to show (from 0)."),
+                                 QStringLiteral("I"));
   args.addOption(bake);
   args.addOption(mesh);
   args.addOption(volume);
   args.addOption(probe);
+  args.addOption(vertex);
   args.addOption(screenshot);
   args.process(app);
   if (args.positionalArguments().size() != (args.isSet(bake) ? 0 : 1)) args.showHelp(1);
@@ -57,11 +64,21 @@ int main(int argc, char** argv) {
   inspector.resize(args.isSet(bake) ? 1100 : 1400, args.isSet(bake) ? 820 : 620);
   inspector.show();
   const bool probes = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprobes"));
-  const bool opened = args.isSet(mesh)   ? inspector.open_vertex_bake(file, args.value(mesh))
-                      : probes           ? inspector.open_probes(file, args.value(volume).toInt() - 1)
-                      : args.isSet(bake) ? inspector.open_bake(file)
-                                         : inspector.open_environment(file);
+  const bool prt = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprt"));
+  bool opened = false;
+  if (prt && !args.isSet(mesh))
+    inspector.show_error(
+        QStringLiteral("%1: a PRT bake opens on the mesh or scene it was baked from: add --mesh MESH").arg(file));
+  else if (prt)
+    opened = inspector.open_prt_bake(file, args.value(mesh));
+  else if (args.isSet(mesh))
+    opened = inspector.open_vertex_bake(file, args.value(mesh));
+  else if (probes)
+    opened = inspector.open_probes(file, args.value(volume).toInt() - 1);
+  else
+    opened = args.isSet(bake) ? inspector.open_bake(file) : inspector.open_environment(file);
   if (opened && probes && args.isSet(probe)) inspector.select_probe(args.value(probe).toULongLong());
+  if (opened && prt && args.isSet(vertex)) inspector.select_prt_vertex(args.value(vertex).toULongLong());
   (opened ? std::cout : std::cerr) << inspector.summary().toStdString() << "\n";
   if (!args.isSet(screenshot)) return app.exec();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();

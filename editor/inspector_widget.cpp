@@ -37,6 +37,7 @@
 #include "editor/bake_view.h"
 #include "editor/env_probe.h"
 #include "editor/probe_view.h"
+#include "editor/prt_view.h"
 #include "editor/vertex_bake_view.h"
 #include "nodes/occlusion/bake/bake_file.h"
 
@@ -171,8 +172,9 @@ InspectorWidget::InspectorWidget(QWidget* parent)
     auto* self = static_cast<InspectorWidget*>(client);
     int at[2];
     static_cast<vtkRenderWindowInteractor*>(caller)->GetEventPosition(at);
-    if (self->probes_ && std::abs(at[0] - self->vtk_->press[0]) + std::abs(at[1] - self->vtk_->press[1]) <= 3)
-      self->select_probe_at(at[0], at[1]);
+    if (std::abs(at[0] - self->vtk_->press[0]) + std::abs(at[1] - self->vtk_->press[1]) > 3) return;
+    if (self->probes_) self->select_probe_at(at[0], at[1]);
+    if (self->prt_) self->select_prt_vertex_at(at[0], at[1]);
   });
   interactor->AddObserver(vtkCommand::LeftButtonPressEvent, vtk_->on_press);
   interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, vtk_->on_release);
@@ -196,6 +198,8 @@ void InspectorWidget::clear_view() {
   volume_.reset();
   probes_.reset();
   probe_bake_.reset();
+  prt_.reset();
+  prt_bake_.reset();
   probe_panel_->hide();
   vertex_bake_range_.reset();
   slice_bar_->hide();
@@ -375,6 +379,58 @@ void InspectorWidget::show_vertex_bake(const VertexBake& bake) {
 
 std::optional<std::array<double, 2>> InspectorWidget::vertex_bake_range() const {
   return vertex_bake_range_;
+}
+
+bool InspectorWidget::open_prt_bake(const QString& path, const QString& mesh_path) {
+  std::unique_ptr<PrtBake> bake;
+  try {
+    bake = std::make_unique<PrtBake>(load_prt_bake(path.toStdString(), mesh_path.toStdString()));
+  } catch (const BakeFileError& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  clear_view();
+  prt_bake_ = std::move(bake);
+  prt_ = std::make_unique<PrtView>(vtk_->renderer, *prt_bake_);
+  const PrtViewState state = prt_->state();
+  const PrtSettings& s = prt_bake_->file.header.settings;
+  summary_->setText(tr("%1 on %2 — PRT bake, %3 transfer of order %4, %5 vertices · sky visibility %6 to %7 · %8 "
+                       "vertices with nothing baked (grey) · click a vertex for its transfer")
+                        .arg(path)
+                        .arg(mesh_path)
+                        .arg(QString::fromUtf8(transfer_kind_name(s.kind)))
+                        .arg(s.order)
+                        .arg(state.vertices)
+                        .arg(state.sky_visibility[0], 0, 'g', 4)
+                        .arg(state.sky_visibility[1], 0, 'g', 4)
+                        .arg(state.invalid));
+  vtk_->window->Render();
+  vtk_->widget->update();
+  return true;
+}
+
+void InspectorWidget::select_prt_vertex(size_t vertex) {
+  if (!prt_) return;
+  prt_->select(vertex);
+  vtk_->window->Render();
+  vtk_->widget->update();
+}
+
+bool InspectorWidget::select_prt_vertex_at(int x, int y) {
+  if (!prt_) return false;
+  const std::optional<size_t> vertex = prt_->pick(x, y);
+  if (vertex) select_prt_vertex(*vertex);
+  return vertex.has_value();
+}
+
+std::optional<PrtViewState> InspectorWidget::prt_state() const {
+  if (!prt_) return std::nullopt;
+  return prt_->state();
+}
+
+std::optional<std::array<double, 2>> InspectorWidget::prt_vertex_display_point(size_t vertex) const {
+  if (!prt_ || vertex >= prt_->state().vertices) return std::nullopt;
+  return prt_->display_point(vertex);
 }
 
 void InspectorWidget::build_probe_panel(QVBoxLayout* panel) {

@@ -2,7 +2,7 @@
 // the error between them, with the numbers; a baked occlusion volume as three slices with
 // sliders that move them; or a probe bake's volume (probe_view.h), read from a file or live from
 // the editor's preview, with a chooser of the bake's volumes, a slider for its slice and, beside
-// the view, the octahedral maps of the probe last clicked. VTK stays behind this header, out of
+// the view, the octahedral maps of the probe last clicked; or a PRT bake on its mesh (prt_view.h). VTK stays behind this header, out of
 // the editor's files.
 #pragma once
 
@@ -26,8 +26,11 @@ struct VolumeSliceState;
 struct VertexBake;
 struct ProbeBake;
 struct ProbeViewState;
+struct PrtBake;
+struct PrtViewState;
 class VolumeSlices;
 class ProbeView;
+class PrtView;
 
 // Where shown probes come from: a bake file, or the editor's preview (live: the view offers to
 // save them, save_probes_requested()).
@@ -58,6 +61,17 @@ class InspectorWidget : public QWidget {
   bool open_vertex_bake(const QString& path, const QString& mesh_path);
   // The shown vertex bake's colour range; nullopt when none is shown.
   std::optional<std::array<double, 2>> vertex_bake_range() const;
+  // A PRT bake (NAME.lgprt) on the mesh or scene it was baked from; on failure the view says why
+  // and returns false.
+  bool open_prt_bake(const QString& path, const QString& mesh_path);
+  // Shows the vertex's transfer function on a sphere beside it (a click on the mesh does it).
+  void select_prt_vertex(size_t vertex);
+  // Selects the vertex nearest the mesh point under display point (x, y); false when the mesh is not there.
+  bool select_prt_vertex_at(int x, int y);
+  // The shown PRT bake; nullopt when none is shown.
+  std::optional<PrtViewState> prt_state() const;
+  // Where a vertex of the shown PRT bake is on the 3D view (VTK's display coordinates).
+  std::optional<std::array<double, 2>> prt_vertex_display_point(size_t vertex) const;
   // Volume `volume` (from 0) of a probe bake (NAME.lgprobes); on failure the view says why and
   // returns false.
   bool open_probes(const QString& path, int volume = 0);
@@ -103,6 +117,8 @@ class InspectorWidget : public QWidget {
   std::unique_ptr<VolumeSlices> volume_;
   std::unique_ptr<ProbeBake> probe_bake_;
   std::unique_ptr<ProbeView> probes_;
+  std::unique_ptr<PrtBake> prt_bake_;
+  std::unique_ptr<PrtView> prt_;
   ProbeSource probe_source_;
   std::optional<std::array<double, 2>> vertex_bake_range_;
   QWidget* slice_bar_;

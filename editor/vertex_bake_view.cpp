@@ -1,11 +1,9 @@
 #include "editor/vertex_bake_view.h"
 
-#include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -15,42 +13,20 @@
 
 #include "editor/bake_legend.h"
 #include "nodes/occlusion/bake/bake_file.h"
-#include "runtime/scene/load_world.h"
-#include "runtime/scene/make_scene_view.h"
+#include "nodes/raytrace/world_mesh.h"
 
 namespace lg {
 
 VertexBake load_vertex_bake(const std::string& path, const std::string& mesh_path) {
   const BakeFile file = read_whole_bake(path, BakeMode::vertex, "a volume bake opens without --mesh");
   const BakeHeader& h = file.header;
-  WorldMesh mesh;
-  try {
-    mesh = make_world_mesh(make_scene_view(load_world(mesh_path), 1.0f));
-  } catch (const std::exception& e) {
-    const std::string what = e.what();
-    throw BakeFileError(what.find(mesh_path) == std::string::npos ? mesh_path + ": " + what : what);
-  }
-  if (world_mesh_hash(mesh) != h.input_hash || mesh.positions.size() != h.points)
-    throw BakeFileError(mesh_path + ": not the geometry " + path + " was baked from (" +
-                        std::to_string(mesh.positions.size()) + " vertices, the bake has " + std::to_string(h.points) +
-                        "; or their positions, normals or indices differ)");
+  const WorldMesh mesh = load_baked_mesh(mesh_path, path, h.input_hash, h.points);
 
   VertexBake bake;
   bake.path = path;
   bake.mesh_path = mesh_path;
   bake.rays = unsigned(h.occlusion.rays);
-  bake.mesh = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
-  for (size_t i = 0; i < mesh.positions.size(); ++i)
-    points->SetPoint(vtkIdType(i), mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
-  vtkNew<vtkCellArray> triangles;
-  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
-    const vtkIdType corners[3] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-    triangles->InsertNextCell(3, corners);
-  }
-  bake.mesh->SetPoints(points);
-  bake.mesh->SetPolys(triangles);
+  bake.mesh = vtk_mesh(mesh);
   const auto visibility = vtk_array("visibility", 1, file.data.visibility);
   const auto valid = vtk_array("valid", 1, file.data.valid);
   const MaskedVisibility masked = mask_visibility(visibility, valid);
@@ -67,7 +43,7 @@ void add_vertex_bake(vtkRenderer* renderer, const VertexBake& bake) {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(bake.mesh);
   add_visibility_actor(renderer, mapper, lut);
-  add_visibility_bar(renderer, lut, "no normal");
+  add_visibility_bar(renderer, lut, "k_A", "no normal");
 
   double bounds[6];
   bake.mesh->GetBounds(bounds);
