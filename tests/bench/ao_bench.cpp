@@ -186,6 +186,36 @@ void print_dominance(const std::vector<Point>& points, bool accumulated) {
       accumulated ? "after accumulation" : "first frame", verdict, won, compared, faster);
 }
 
+// Issue 21: no quality preset may be dominated by another GTAO configuration at its resolution
+// scale, one with a lower error (after accumulation; errors are deterministic) and a fastest
+// frame more than 10% faster. The 10% is the timing noise: the sweep measures each preset's
+// slices x steps again minutes later, and on a quiet machine the twins' fastest frames differ by
+// a few percent (docs/bench/ao); on a busy one by far more, and the verdict means little.
+void print_preset_target(const std::vector<Point>& points) {
+  constexpr double kFaster = 0.9;
+  int presets = 0, dominated = 0;
+  std::printf("\nGTAO quality presets against the other GTAO points at their resolution scale (dominated: lower MAE "
+              "and a fastest frame under 90%% of the preset's):\n");
+  for (const Point& p : points) {
+    if (p.method != "gtao" || p.slices != 0 || p.config.find('@') != std::string::npos) continue;
+    ++presets;
+    const Point* by = nullptr;
+    for (const Point& q : points)
+      if (q.method == "gtao" && q.scale == p.scale && q.accumulated.mean_absolute < p.accumulated.mean_absolute &&
+          q.min_ms < kFaster * p.min_ms && (!by || q.accumulated.mean_absolute < by->accumulated.mean_absolute))
+        by = &q;
+    dominated += by != nullptr;
+    if (by)
+      std::printf("  %-8s %7.2f ms  MAE %.4f: dominated by %s (%.2f ms, MAE %.4f)\n", p.config.c_str(), p.min_ms,
+                  p.accumulated.mean_absolute, by->config.c_str(), by->min_ms, by->accumulated.mean_absolute);
+    else
+      std::printf("  %-8s %7.2f ms  MAE %.4f: on the envelope\n", p.config.c_str(), p.min_ms,
+                  p.accumulated.mean_absolute);
+  }
+  std::printf("target no GTAO quality preset dominated: %s (%d of %d dominated)\n",
+              presets == 0 ? "NOT MEASURED" : dominated == 0 ? "MET" : "NOT MET", dominated, presets);
+}
+
 void write_csv(const Options& o, const std::vector<Point>& points, const AoError& screen_space,
                const AoImage& reference, const AoImage& height_field) {
   std::ofstream csv(o.results_dir + "/ao_points.csv");
@@ -278,6 +308,7 @@ int run(int argc, char** argv) {
   }
   print_dominance(points, false);
   print_dominance(points, true);
+  print_preset_target(points);
   write_csv(o, points, screen_space, reference, height_field);
   return 0;
 }

@@ -73,25 +73,27 @@ constexpr const char* kGtaoHighHalf =
     R"({ "id": "ao", "type": "occlusion.gtao", "params": { "quality": "high", "radius": 0.5, "resolution_scale": 0.5 } })";
 constexpr const char* kSsao = R"({ "id": "ao", "type": "occlusion.ssao", "params": { "samples": 16, "radius": 0.5 } })";
 
-// Measured on lavapipe: GTAO high 0.035 after 8 frames and on the first, the height field 0.034
-// from the scene. The issue's target is 0.04 at 1280x720 (lumagraph-bench-ao); here 0.045
-// leaves room for the 128-ray reference's noise (about 0.02 per half-occluded pixel, so under
-// 0.001 on the mean) and for rasterization differences between drivers. The height field must
-// stay within 0.045 of the scene: it sees the same surfaces, less what the bunny hides.
+// Measured on lavapipe: GTAO high (2x6) 0.026 after 8 frames and on the first (3x3, the high of
+// earlier stops: 0.035), the height field 0.034 from the scene. The issue's target is 0.04 at
+// 1280x720 (lumagraph-bench-ao); here 0.045 leaves room for the 128-ray reference's noise (about
+// 0.02 per half-occluded pixel, so under 0.001 on the mean) and for rasterization differences
+// between drivers. The height field must stay within 0.045 of the scene: it sees the same
+// surfaces, less what the bunny hides.
 TEST(GtaoAccuracy, BunnyAgainstRayTracing) {
   if (!have_bunny()) GTEST_SKIP() << "../shared/data/mesh/bunny.obj is missing";
   const Measured m = measure(load_example_world("stanford-bunny"), kGtaoHigh, 0.5);
   EXPECT_LE(m.first.mean_absolute, 0.045);
   EXPECT_LE(m.accumulated.mean_absolute, 0.045);
   EXPECT_LE(m.screen_space.mean_absolute, 0.045);
-  // Bent normals where k_A < 0.9: measured 7.7 degrees from the reference's on average.
-  EXPECT_LE(m.bent_degrees, 10.0);
+  // Bent normals where k_A < 0.9: measured 9.2 degrees from the reference's on average at 2x6
+  // (7.7 at 3x3: two slices sample the azimuth more coarsely than three); 20% above it.
+  EXPECT_LE(m.bent_degrees, 11.0);
 }
 
 // Half resolution (horizons and denoiser on 80x45, then the joint bilateral upsample) against
 // full: issue 19 asks for at most 1.2x the full-resolution error at 1280x720. Measured here, at
-// 160x90 where a half-resolution texel covers four times as much of the bunny: 0.0353 after 8
-// frames against 0.0348 at full resolution (bent normals 7.8 degrees against 7.7).
+// 160x90 where a half-resolution texel covers four times as much of the bunny: 0.0286 after 8
+// frames against 0.0259 at full resolution (bent normals 7.9 degrees against 9.2).
 TEST(GtaoAccuracy, BunnyAtHalfResolutionAgainstRayTracing) {
   if (!have_bunny()) GTEST_SKIP() << "../shared/data/mesh/bunny.obj is missing";
   const World world = load_example_world("stanford-bunny");
@@ -101,13 +103,13 @@ TEST(GtaoAccuracy, BunnyAtHalfResolutionAgainstRayTracing) {
   EXPECT_LE(half.bent_degrees, 10.0);
 }
 
-// The box's corners are where GTAO errs most: measured 0.080 (GTAO) and 0.048 (height field
-// against the scene); the bounds leave about 20% for drivers and noise.
+// The box's corners are where GTAO errs most: measured 0.055 at 2x6 (0.080 at 3x3) and 0.048
+// (height field against the scene); the bounds leave about 20% over 3x3's for drivers and noise.
 TEST(GtaoAccuracy, CornellBoxAgainstRayTracing) {
   const Measured m = measure(load_example_world("cornell-box"), kGtaoHigh, 0.5);
   EXPECT_LE(m.accumulated.mean_absolute, 0.10);
   EXPECT_LE(m.screen_space.mean_absolute, 0.06);
-  EXPECT_LE(m.bent_degrees, 15.0);  // measured 12.3
+  EXPECT_LE(m.bent_degrees, 15.0);  // measured 12.2
 }
 
 // The baseline: SSAO with 16 samples measured 0.052; bounded at 0.065 so a regression shows.
