@@ -13,17 +13,23 @@
 namespace lg {
 namespace {
 
-constexpr uint32_t kTile = 16;      // nodes/env/sh_project/shaders/sh_project.comp
-constexpr uint64_t kTileSums = 25;  // vec4s per tile: every coefficient up to band 4
+constexpr uint32_t kBlockTexels = 64 * 32;  // nodes/env/sh_project/shaders/sh_project.comp
+constexpr uint64_t kBlockSums = 25;         // vec4s per block: room for every coefficient up to band 4
+
+struct ProjectPush {  // nodes/env/sh_project/shaders/sh_project.comp
+  int32_t count;
+};
 
 struct ReducePush {  // nodes/env/sh_project/shaders/sh_reduce.comp
   float band_factor[8];
   int32_t order;
-  int32_t tiles;
+  int32_t blocks;
 };
 
-uint32_t tiles_across(const Image& env) {
-  return ((env.desc().width >> sh_project_mip(env)) + kTile - 1) / kTile;
+// Blocks of one face.
+uint32_t face_blocks(const Image& env) {
+  const uint64_t size = env.desc().width >> sh_project_mip(env);
+  return uint32_t((size * size + kBlockTexels - 1) / kBlockTexels);
 }
 
 void partials_written_barrier(VkCommandBuffer cmd, const Buffer& partials) {
@@ -81,29 +87,30 @@ uint32_t sh_project_mip(const Image& env) {
 }
 
 uint64_t sh_partials_bytes(const Image& env) {
-  const uint64_t tiles = uint64_t(tiles_across(env)) * tiles_across(env) * 6;
-  return tiles * kTileSums * 16;
+  return uint64_t(face_blocks(env)) * 6 * kBlockSums * 16;
 }
 
 void record_sh_project(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
                        const ShProjectSettings& settings, Image& env, VkSampler sampler, const Buffer& partials,
                        const Buffer& coefficients) {
-  const uint32_t tiles = tiles_across(env);
+  const uint32_t blocks = face_blocks(env);
   const VkImageView faces =
       env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = sh_project_mip(env), .mip_count = 1});
-  const DescriptorWrite tile_writes[] = {sampled_image(0, faces, sampler), storage_buffer(1, partials.handle())};
+  const DescriptorWrite block_writes[] = {sampled_image(0, faces, sampler), storage_buffer(1, partials.handle())};
   const Pipeline& project =
-      pipelines.compute({name + " tiles",
+      pipelines.compute({name + " blocks",
                          node_shader("nodes/env/sh_project/shaders/sh_project.comp"),
-                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
-  bind_pipeline(gpu, cmd, project, tile_writes);
-  vkCmdDispatch(cmd, tiles, tiles, 6);
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                         sizeof(ProjectPush)});
+  bind_pipeline(gpu, cmd, project, block_writes);
+  push_constants(cmd, project, ProjectPush{sh_count(settings.order)});
+  vkCmdDispatch(cmd, blocks, 6, 1);
   partials_written_barrier(cmd, partials);
 
   ReducePush push{};
   for (int l = 0; l <= settings.order; ++l) push.band_factor[l] = float(settings.band_factors[l]);
   push.order = settings.order;
-  push.tiles = int32_t(tiles * tiles * 6);
+  push.blocks = int32_t(blocks * 6);
   const DescriptorWrite sum_writes[] = {storage_buffer(0, partials.handle()), storage_buffer(1, coefficients.handle())};
   const Pipeline& reduce =
       pipelines.compute({name + " sum",

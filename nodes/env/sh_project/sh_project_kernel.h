@@ -1,7 +1,7 @@
 // The kernel of env.sh_project, and the passes it records (which tests run directly): the
 // environment projected onto real SH (nodes/env/common/sh_basis.h, docs/env-conventions.md)
 // with exact texel solid angles, windowed and optionally convolved with the cosine lobe. Two
-// dispatches: tiles of 16x16 texels into partial sums (a scratch buffer the kernel owns), then
+// dispatches: blocks of 2048 texels into partial sums (a scratch buffer the kernel owns), then
 // one workgroup adds them up. Mip 0 is projected; of faces over 1024, the 1024 mip (lavapipe's
 // loop budget; the area-correct mips keep the integral and bands <= 4 barely vary over a texel).
 #pragma once
@@ -27,7 +27,7 @@ struct ShProjectSettings {
 
 ShProjectSettings sh_project_settings(int order, ShWindow window, double window_target, bool convolve_cosine);
 
-// The mip of `env` that is projected, and the bytes of scratch its tiles need.
+// The mip of `env` that is projected, and the bytes of scratch its blocks need.
 uint32_t sh_project_mip(const Image& env);
 uint64_t sh_partials_bytes(const Image& env);
 

@@ -1,60 +1,75 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Pass 1 of env.sh_project: each workgroup projects one 16x16 tile of one face onto real SH
-// (bands <= 4) and writes its sums to `partials`; sh_reduce.comp adds the tiles up. A texel
-// contributes L times the integral of Y_lm over the texel: the exact solid angle times the
-// Jacobian-weighted mean of Y_lm at 2x2 Gauss points (the centre alone leaves band 4 of a
-// constant sky at 5e-4 on 32^2 faces). One texel per invocation because lavapipe ends an
-// invocation's loops after 65535 iterations in all. Non-finite texels count as 0 and are counted.
+// Pass 1 of env.sh_project: each workgroup projects one block of kBlockTexels texels of one face
+// (row-major, the last block of a face may be short) onto real SH and writes its sums to
+// `partials`; sh_reduce.comp adds the blocks up. A texel contributes L times the integral of
+// Y_lm over the texel: the exact solid angle times the Jacobian-weighted mean of Y_lm at 2x2
+// Gauss points (the centre alone leaves band 4 of a constant sky at 5e-4 on 32^2 faces).
+// Each invocation sums kBlockTexels / 32 texels in registers and the block's 32 lanes are added
+// once: on lavapipe every barrier costs a pass over the workgroup, and a tree per coefficient
+// (9 barriers each, 25 coefficients) cost most of the time. 64 texels an invocation stay well
+// inside lavapipe's 65535 loop iterations an invocation (about 340 a texel); 32 lanes keep the
+// lanes' sums in 9.6 KB of shared memory (Vulkan guarantees 16 KB). Only the coefficients up to
+// the order are summed. Non-finite texels count as 0 and are counted.
 #include "nodes/env/common/shaders/cube_map.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+const uint kLanes = 32u;
+const uint kBlockTexels = 64u * kLanes;  // sh_project_kernel.cpp's kBlockTexels
+layout(local_size_x = 32) in;
 
 layout(binding = 0) uniform sampler2DArray env;  // the six faces of the mip projected
-// Per tile, LG_SH_MAX_COUNT sums; the first's w holds the tile's number of non-finite texels.
+// Per block, LG_SH_MAX_COUNT sums; the first's w holds the block's number of non-finite texels.
 layout(std430, binding = 1) writeonly buffer Partials { vec4 partials[]; };
+layout(push_constant) uniform Push {
+  int count;  // (order + 1)^2 coefficients summed
+};
 
-shared vec3 lanes[256];
-shared uint non_finite;
+shared vec3 lane_sums[kLanes * uint(LG_SH_MAX_COUNT)];
+shared uint lane_non_finite[kLanes];
 
 void main() {
-  uint lane = gl_LocalInvocationIndex;
-  if (lane == 0u) non_finite = 0u;
-  int size = textureSize(env, 0).x;
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  int face = int(gl_WorkGroupID.z);
-  float y_texel[LG_SH_MAX_COUNT];
-  for (int k = 0; k < LG_SH_MAX_COUNT; ++k) y_texel[k] = 0.0;
-  vec3 radiance = vec3(0.0);
-  bool bad = false;
-  if (all(lessThan(texel, ivec2(size)))) {
-    radiance = texelFetch(env, ivec3(texel, face), 0).rgb;
-    bad = any(isnan(radiance)) || any(isinf(radiance));
-    if (bad) radiance = vec3(0.0);
+  const uint lane = gl_LocalInvocationIndex;
+  const int size = textureSize(env, 0).x;
+  const int face = int(gl_WorkGroupID.y);
+  const uint face_texels = uint(size * size);
+  const uint first = gl_WorkGroupID.x * kBlockTexels;
+  vec3 sums[LG_SH_MAX_COUNT];
+  for (int k = 0; k < count; ++k) sums[k] = vec3(0.0);
+  uint non_finite = 0u;
+  for (uint i = first + lane; i < min(first + kBlockTexels, face_texels); i += kLanes) {
+    const ivec2 texel = ivec2(int(i % uint(size)), int(i / uint(size)));
+    vec3 radiance = texelFetch(env, ivec3(texel, face), 0).rgb;
+    if (any(isnan(radiance)) || any(isinf(radiance))) {
+      radiance = vec3(0.0);
+      ++non_finite;
+    }
+    float y_texel[LG_SH_MAX_COUNT];
+    for (int k = 0; k < count; ++k) y_texel[k] = 0.0;
     float jacobian_sum = 0.0;
     for (int g = 0; g < 4; ++g) {
-      vec2 gauss = vec2(g & 1, g >> 1) * (1.0 / sqrt(3.0)) + (0.5 - 0.5 / sqrt(3.0));  // 0.5 -+ 0.5 / sqrt(3)
-      vec2 uv = (vec2(texel) + gauss) / float(size);
-      float jacobian = cube_jacobian(uv * 2.0 - 1.0);
+      const vec2 gauss = vec2(g & 1, g >> 1) * (1.0 / sqrt(3.0)) + (0.5 - 0.5 / sqrt(3.0));  // 0.5 -+ 0.5 / sqrt(3)
+      const vec2 uv = (vec2(texel) + gauss) / float(size);
+      const float jacobian = cube_jacobian(uv * 2.0 - 1.0);
       float y[LG_SH_MAX_COUNT];
       sh_evaluate(cube_direction(face, uv), y);
-      for (int k = 0; k < LG_SH_MAX_COUNT; ++k) y_texel[k] += jacobian * y[k];
+      for (int k = 0; k < count; ++k) y_texel[k] += jacobian * y[k];
       jacobian_sum += jacobian;
     }
     radiance *= cube_texel_solid_angle(texel, size) / jacobian_sum;
+    for (int k = 0; k < count; ++k) sums[k] += radiance * y_texel[k];
   }
+  for (int k = 0; k < count; ++k) lane_sums[lane * uint(LG_SH_MAX_COUNT) + uint(k)] = sums[k];
+  lane_non_finite[lane] = non_finite;
   barrier();
-  if (bad) atomicAdd(non_finite, 1u);
-  uint tile = (gl_WorkGroupID.z * gl_NumWorkGroups.y + gl_WorkGroupID.y) * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  for (int k = 0; k < LG_SH_MAX_COUNT; ++k) {
-    lanes[lane] = radiance * y_texel[k];
-    barrier();
-    for (uint half_size = 128u; half_size > 0u; half_size /= 2u) {
-      if (lane < half_size) lanes[lane] += lanes[lane + half_size];
-      barrier();
+  if (lane < uint(count)) {
+    vec3 sum = vec3(0.0);
+    uint bad = 0u;
+    for (uint l = 0u; l < kLanes; ++l) {
+      sum += lane_sums[l * uint(LG_SH_MAX_COUNT) + lane];
+      bad += lane_non_finite[l];
     }
-    if (lane == 0u) partials[tile * uint(LG_SH_MAX_COUNT) + uint(k)] = vec4(lanes[0], k == 0 ? float(non_finite) : 0.0);
-    barrier();
+    const uint block = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    partials[block * uint(LG_SH_MAX_COUNT) + lane] = vec4(sum, lane == 0u ? float(bad) : 0.0);
   }
 }
