@@ -43,7 +43,8 @@ void main() {
   vec3 n = decode_normal(texelFetch(normal_tex, source, 0).rgb);
   vec3 uvw = (g + 0.5 * n) / vec3(lpv.counts.xyz);  // texel centres at (i + 0.5) / counts, as cell centres
   vec4 sh[3] = vec4[3](textureLod(sum_red, uvw, 0.0), textureLod(sum_green, uvw, 0.0), textureLod(sum_blue, uvw, 0.0));
-  vec4 lobe = sh_l1_cosine_lobe(-n);  // lpv_store.comp stored radiance
-  vec3 e = vec3(dot(sh[0], lobe), dot(sh[1], lobe), dot(sh[2], lobe));
+  // lpv_store.comp stored radiance; the light arriving travels along w with w . n < 0.
+  vec3 e = vec3(sh_l1_lobe_convolve(sh_l1_lobe(sh[0]), -n), sh_l1_lobe_convolve(sh_l1_lobe(sh[1]), -n),
+                sh_l1_lobe_convolve(sh_l1_lobe(sh[2]), -n));
   imageStore(irradiance, texel, vec4(clamp(finite_or_zero(max(e, vec3(0.0))), 0.0, 65504.0), lpv.scales.z));
 }

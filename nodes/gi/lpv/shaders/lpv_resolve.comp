@@ -18,7 +18,7 @@ void main() {
   uint i = lpv_cell_index(c);
   for (uint ch = 0u; ch < 3u; ++ch) {
     vec4 v = vec4(light_fixed[3u * i + ch]) / lpv.scales.x;
-    light[3u * i + ch] = v;
+    light[3u * i + ch] = lpv_outflow(v);
     sum[3u * i + ch] = v;
   }
   occlusion[i] = vec4(occlusion_fixed[i]) / lpv.scales.y;
