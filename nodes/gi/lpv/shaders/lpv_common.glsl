@@ -48,15 +48,15 @@ float sh_l1_lobe_eval(ShLobe l, vec3 w) {
 // lpv_faces), which falls short of the lobe's power pi by up to 15% (d along an axis) and
 // exceeds it by up to 5% (diagonals). lpv_outflow divides that out, so a step keeps the power.
 float sh_lobe_sampled_outflow(vec3 d) {
-  const vec3 axes[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
+  // Towards the neighbour along e (+-an axis) its far face lies along e, its side faces along
+  // (2 e + s) / sqrt(5) for the four s perpendicular to e.
   float sum = 0.0;
   for (int a = 0; a < 3; ++a)
-    for (float sign = -1.0; sign <= 1.0; sign += 2.0) {
-      vec3 e = sign * axes[a];
-      sum += 0.40066968 * max(dot(d, e), 0.0);  // the far face
-      for (int b = 1; b < 3; ++b)
-        for (float side = -1.0; side <= 1.0; side += 2.0)
-          sum += 0.42343135 * max(dot(d, normalize(e + 0.5 * side * axes[(a + b) % 3])), 0.0);
+    for (int sign = -1; sign <= 1; sign += 2) {
+      float along = float(sign) * d[a];
+      float sides = max(2.0 * along + d[(a + 1) % 3], 0.0) + max(2.0 * along - d[(a + 1) % 3], 0.0) +
+                    max(2.0 * along + d[(a + 2) % 3], 0.0) + max(2.0 * along - d[(a + 2) % 3], 0.0);
+      sum += 0.40066968 * max(along, 0.0) + 0.42343135 / 2.23606798 * sides;
     }
   return sum;
 }
@@ -69,11 +69,12 @@ vec4 lpv_outflow(vec4 sh) {
   return sh + extra * sh_l1_cosine_lobe(l.d);
 }
 
-// Its convolution with the clamped cosine about n: the irradiance at normal -n... the light
-// arriving along directions w with w . n > 0: the integral of a + b max(0, d . w) times
-// max(0, n . w) over the sphere, pi a + b 2 / 3 ((pi - t) cos t + sin t), t the angle of d and n.
-float sh_l1_lobe_convolve(ShLobe l, vec3 n) {
-  float c = clamp(dot(l.d, n), -1.0, 1.0);
+// The lobe's convolution with the clamped cosine about v: the integral over the sphere of
+// (a + b max(0, d . w)) max(0, v . w) = pi a + b 2/3 ((pi - t) cos t + sin t), t the angle between
+// d and v. With radiance and v = -n: the irradiance on a surface of normal n, whose light travels
+// along directions w with w . n < 0 (lpv_model.h's sh_lobe_irradiance).
+float sh_l1_lobe_convolve(ShLobe l, vec3 v) {
+  float c = clamp(dot(l.d, v), -1.0, 1.0);
   float t = acos(c);
   return LG_PI * l.a + l.b * (2.0 / 3.0) * ((LG_PI - t) * c + sqrt(max(1.0 - c * c, 0.0)));
 }

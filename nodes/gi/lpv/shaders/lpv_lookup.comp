@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // gi.lpv's lookup, one invocation per G-buffer pixel: the summed intensity trilinearly half a
 // cell out along the normal (the sampler filters lpv_store.comp's images, edges clamped), as
-// radiance over a cell face (intensity / cell^2), convolved with the cosine about the normal
-// for the light arriving at it (travelling along -n). rgb: irradiance, W/m^2; a: coverage, 1
+// radiance over a cell face (intensity / cell^2), read as a lobe (sh_l1_lobe) and convolved with
+// the cosine about the normal for the light arriving at it (travelling along -n). rgb: irradiance, W/m^2; a: coverage, 1
 // where the surface lies in the grid's box, 0 outside it, on the sky and in a frame without a
 // directional light (scales.z). The target is the output itself, or at resolution_scale 1/k below
 // 1 a smaller image whose texel i is the G-buffer's texel upsample_source_texel(i, k), which

@@ -1,9 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // gi.lpv's propagation step, one invocation per cell (gathering): the light of each face
-// neighbour that travels into this cell through the five faces of it that do not face back,
-// re-emitted from its centre as cosine lobes about those faces' normals; added to the sum. The
-// model and its face table are lpv_model.h's (the kernel uploads the table).
+// neighbour that travels into this cell through the five faces of it that do not face back (the
+// neighbour's coefficients read as a lobe, sh_l1_lobe), re-emitted from its centre as cosine lobes
+// about the directions it crossed those faces in; added to the sum, and sent on by the next step
+// with its lobe part scaled to keep its power (lpv_outflow). The model and its face table are
+// lpv_model.h's (the kernel uploads the table).
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
