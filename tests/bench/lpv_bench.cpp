@@ -5,8 +5,9 @@
 // room gets no light at all) and the gallery. Both carry one bounce of the main directional
 // light, so the reference is traced with that light alone (no environment, no other lights) and
 // two bounces (the visible surface and one more). Per world, for gi.lpv at four grids (8, 16, 32
-// and 64 cells along the longest side, 8 iterations each; and grid 32 without propagation, whose
-// time is that of everything but the propagation), for gi.voxel at three resolutions (32, 64 and
+// and 64 cells along the longest side, 8 iterations each; the default grid 16 with 16 iterations
+// and without propagation, whose time is that of everything but the propagation; --lpv picks
+// others), for gi.voxel at three resolutions (32, 64 and
 // 128 voxels along the longest side, six cones; and 64 and 128 with facing_colour) and for "no
 // indirect light": the relative RMS of
 // the node's irradiance against the reference's (the RMS of the differences over the reference's
@@ -17,7 +18,9 @@
 // over the west room's, a camera in each room (the reference's is 0). Writes lpv_points.csv
 // (columns compatible with docs/bench/probes/probe_points.csv; for gi.voxel `grid` is the
 // resolution and `iterations` the number of cones) into --results-dir; --methods lpv or voxel
-// runs one of them; scripts/run-lpv-benchmarks plots it.
+// runs one of them, --worlds some of the worlds; scripts/run-lpv-benchmarks plots it. Per row it
+// also prints the node's mean over the reference's, over all and per way the surfaces face
+// (its absolute scale: docs/lpv.md, "Energy and direction").
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -53,7 +56,7 @@ struct Options {
   std::string methods = "lpv,voxel";
   std::string worlds = "cornell-box,two-rooms-sun,gallery";
   // gi.lpv's settings, grid/iterations (iterations 0: without propagation); main() parses --lpv.
-  std::vector<std::pair<int, int>> lpv = {{8, 8}, {16, 8}, {32, 8}, {64, 8}, {32, 0}};
+  std::vector<std::pair<int, int>> lpv = {{8, 8}, {16, 8}, {32, 8}, {64, 8}, {16, 16}, {16, 0}};
 };
 
 std::vector<std::string> split_commas(const std::string& text) {
