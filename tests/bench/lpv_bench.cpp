@@ -5,8 +5,9 @@
 // room gets no light at all) and the gallery. Both carry one bounce of the main directional
 // light, so the reference is traced with that light alone (no environment, no other lights) and
 // two bounces (the visible surface and one more). Per world, for gi.lpv at four grids (8, 16, 32
-// and 64 cells along the longest side, 8 iterations each; and grid 32 without propagation, whose
-// time is that of everything but the propagation), for gi.voxel at three resolutions (32, 64 and
+// and 64 cells along the longest side, 8 iterations each; the default grid 16 with 16 iterations
+// and without propagation, whose time is that of everything but the propagation; --lpv picks
+// others), for gi.voxel at three resolutions (32, 64 and
 // 128 voxels along the longest side, six cones; and 64 and 128 with facing_colour) and for "no
 // indirect light": the relative RMS of
 // the node's irradiance against the reference's (the RMS of the differences over the reference's
@@ -17,7 +18,9 @@
 // over the west room's, a camera in each room (the reference's is 0). Writes lpv_points.csv
 // (columns compatible with docs/bench/probes/probe_points.csv; for gi.voxel `grid` is the
 // resolution and `iterations` the number of cones) into --results-dir; --methods lpv or voxel
-// runs one of them; scripts/run-lpv-benchmarks plots it.
+// runs one of them, --worlds some of the worlds; scripts/run-lpv-benchmarks plots it. Per row it
+// also prints the node's mean over the reference's, over all and per way the surfaces face
+// (its absolute scale: docs/lpv.md, "Energy and direction").
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -26,6 +29,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/renderer.h"
@@ -50,7 +54,20 @@ struct Options {
   uint32_t frame_width = 1280, frame_height = 720;  // timed
   uint32_t spp = 256, frames = 4;
   std::string methods = "lpv,voxel";
+  std::string worlds = "cornell-box,two-rooms-sun,gallery";
+  // gi.lpv's settings, grid/iterations (iterations 0: without propagation); main() parses --lpv.
+  std::vector<std::pair<int, int>> lpv = {{8, 8}, {16, 8}, {32, 8}, {64, 8}, {16, 16}, {16, 0}};
 };
+
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> out;
+  for (size_t start = 0; start <= text.size();) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
 
 // One setting of one node: gi.lpv's grid and iterations, or gi.voxel's resolution (and its six
 // cones, fixed).
@@ -90,6 +107,7 @@ struct FrameTime {
 // median, and the least, which on a machine shared with other work is the nearest to its cost
 // alone.
 FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
+  if (o.frames == 0) return {NAN, NAN};  // --frames 0: accuracy only
   Renderer renderer;
   renderer.set_graph(node_graph(q));
   const std::string prefix = q.method + "/";
@@ -136,17 +154,18 @@ int run(const Options& o) {
   const fs::path dir = fs::absolute(o.results_dir);
   fs::create_directories(dir);
   std::ofstream csv(dir / "lpv_points.csv");
-  csv << "world,method,quality,grid,iterations,frame_ms,relative_rms,reference_noise,beyond_noise,leak,frame_ms_min\n";
-  std::printf("%-13s %-6s %-8s %9s %8s %8s %9s %8s %8s\n", "world", "method", "quality", "frame ms", "min ms",
-              "rel RMS", "ref noise", "beyond", "leak");
+  csv << "world,method,quality,grid,iterations,frame_ms,relative_rms,reference_noise,beyond_noise,leak,frame_ms_min,"
+         "mean_ratio\n";
+  std::printf("%-13s %-6s %-8s %9s %8s %8s %9s %8s %8s %6s\n", "world", "method", "quality", "frame ms", "min ms",
+              "rel RMS", "ref noise", "beyond", "leak", "scale");
   std::vector<Quality> qualities;
   if (o.methods.find("lpv") != std::string::npos)
-    qualities.insert(qualities.end(), {{"lpv", 8, 8}, {"lpv", 16, 8}, {"lpv", 32, 8}, {"lpv", 64, 8}, {"lpv", 32, 0}});
+    for (const auto& [grid, iterations] : o.lpv) qualities.push_back({"lpv", grid, iterations});
   if (o.methods.find("voxel") != std::string::npos)
     qualities.insert(
         qualities.end(),
         {{"voxel", 32, 6}, {"voxel", 64, 6}, {"voxel", 128, 6}, {"voxel", 64, 6, true}, {"voxel", 128, 6, true}});
-  for (const std::string name : {"cornell-box", "two-rooms-sun", "gallery"}) {
+  for (const std::string& name : split_commas(o.worlds)) {
     const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
     SceneView view = make_scene_view(world, float(o.width) / o.height);
     view.point_lights.clear(), view.spot_lights.clear(), view.sphere_lights.clear();
@@ -166,11 +185,14 @@ int run(const Options& o) {
       const double beyond =
           std::sqrt(std::max(0.0, c.rms_over_mean * c.rms_over_mean - c.noise_over_mean * c.noise_over_mean));
       const std::string leak_text = rooms && std::isfinite(leak) ? std::to_string(leak) : "";
-      std::printf("%-13s %-6s %-8s %9.2f %8.2f %8.4f %9.4f %8.4f %8s\n", name.c_str(), method, quality.c_str(),
-                  ms.median_ms, ms.min_ms, c.rms_over_mean, c.noise_over_mean, beyond, leak_text.c_str());
+      std::printf("%-13s %-6s %-8s %9.2f %8.2f %8.4f %9.4f %8.4f %8s %6.3f\n", name.c_str(), method, quality.c_str(),
+                  ms.median_ms, ms.min_ms, c.rms_over_mean, c.noise_over_mean, beyond, leak_text.c_str(), c.mean_ratio);
+      const auto& f = c.mean_ratio_by_facing;
+      std::printf("  scale by facing: +x %.3f -x %.3f +y %.3f -y %.3f +z %.3f -z %.3f\n", f[0], f[1], f[2], f[3], f[4],
+                  f[5]);
       csv << name << ',' << method << ',' << quality << ',' << q.grid << ',' << q.iterations << ',' << ms.median_ms
           << ',' << c.rms_over_mean << ',' << c.noise_over_mean << ',' << beyond << ',' << leak_text << ',' << ms.min_ms
-          << '\n';
+          << ',' << c.mean_ratio << '\n';
     };
     std::vector<float> dark;
     for (const Quality& q : qualities) {
@@ -202,23 +224,41 @@ int main(int argc, char** argv) {
   lg::bench::Options o;
   lg::bench::BenchFlags flags(
       "usage: lumagraph-bench-lpv [--results-dir DIR] [--size WxH] [--frame-size WxH] [--spp N] [--frames N]\n"
-      "                           [--methods lpv,voxel]\n");
+      "                           [--methods lpv,voxel] [--worlds cornell-box,two-rooms-sun,gallery]\n"
+      "                           [--lpv GRID/ITERATIONS,...]   (--frames 0: no timing)\n");
   flags.text("--results-dir", o.results_dir);
   flags.size("--size", o.width, o.height);
   flags.size("--frame-size", o.frame_width, o.frame_height);
   flags.count("--spp", o.spp);
-  flags.count("--frames", o.frames);
+  flags.count("--frames", o.frames, 0);
   flags.text("--methods", o.methods);
+  flags.text("--worlds", o.worlds);
+  std::string lpv;
+  flags.text("--lpv", lpv);
   if (const auto status = flags.parse(argc, argv)) return *status;
   // run() picks the nodes by name: a misspelt one would silently measure nothing.
-  for (size_t start = 0; start <= o.methods.size();) {
-    const size_t end = std::min(o.methods.find(',', start), o.methods.size());
-    const std::string name = o.methods.substr(start, end - start);
+  for (const std::string& name : lg::bench::split_commas(o.methods))
     if (name != "lpv" && name != "voxel") {
       std::fprintf(stderr, "lumagraph-bench-lpv: --methods: '%s' is neither lpv nor voxel\n", name.c_str());
       return 2;
     }
-    start = end + 1;
+  for (const std::string& name : lg::bench::split_commas(o.worlds))
+    if (!std::filesystem::exists(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json")) {
+      std::fprintf(stderr, "lumagraph-bench-lpv: --worlds: no world '%s' in examples/worlds/\n", name.c_str());
+      return 2;
+    }
+  if (!lpv.empty()) {
+    o.lpv.clear();
+    for (const std::string& setting : lg::bench::split_commas(lpv)) {
+      int grid = 0, iterations = -1, used = 0;
+      if (std::sscanf(setting.c_str(), "%d/%d%n", &grid, &iterations, &used) != 2 || used != int(setting.size()) ||
+          grid < 4 || grid > 64 || iterations < 0 || iterations > 64) {
+        std::fprintf(stderr, "lumagraph-bench-lpv: --lpv: '%s' is not GRID/ITERATIONS (grid 4-64, iterations 0-64)\n",
+                     setting.c_str());
+        return 2;
+      }
+      o.lpv.emplace_back(grid, iterations);
+    }
   }
   return lg::bench::run(o);
 }

@@ -50,15 +50,14 @@ Graph lpv_graph(int grid, int iterations) {
 // node's irradiance against the reference's E = pi indirect_diffuse / diffuse colour; the RMS of
 // the differences over the reference's mean (lumagraph-bench-probes' relative_rms). Predicting no
 // indirect light gives sqrt(mean E^2) / mean E >= 1 on the same pixels: the node must come under
-// it, by more than the reference's own noise (128 paths a pixel). Grid 8 (cells of 26 cm) with 8
-// iterations: measured 0.89 against 1.24 (noise 0.20). Finer grids do worse here: light spreads
-// diffusively through the grid and fades within about five cells (docs/lpv.md), so a 32-cell
-// grid's 6.6 cm cells leave most of the box dark (1.29, worse than no indirect light).
+// it, by more than the reference's own noise (128 paths a pixel). The default grid 16 (cells of
+// 13 cm) with 8 iterations: measured 0.77 against 1.24 (noise 0.20); before the lobe reading and
+// the outflow scale (docs/lpv.md) grid 16 gave 1.05 and grid 32 1.29, worse than no indirect light.
 // Then the sun turns and the next frame follows it (nothing is kept between frames): the bounce
 // light changes.
 TEST(Lpv, BeatsNoIndirectLightOnTheCornellBoxAndFollowsTheSun) {
   World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
-  auto renderer = make_renderer(lpv_graph(8, 8));
+  auto renderer = make_renderer(lpv_graph(16, 8));
   renderer->render(world, kFrame);
   const std::vector<float> lpv = renderer->executor().read_image("lpv.irradiance");
   expect_no_validation_messages(renderer->context());

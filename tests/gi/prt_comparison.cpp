@@ -13,13 +13,17 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
                                      const std::vector<float>& frame) {
   const PathTransport transport(scene, 1);
   const CameraPixels camera(scene.view().camera, reference.width, reference.height);
-  double square = 0, noise = 0, absolute_square = 0, absolute_noise = 0, truth_sum = 0;
+  double square = 0, noise = 0, absolute_square = 0, absolute_noise = 0, truth_sum = 0, frame_sum = 0;
   PrtComparison out;
+  std::array<double, 6> facing_frame{}, facing_truth{};
   for (uint32_t y = 0; y < reference.height; ++y)
     for (uint32_t x = 0; x < reference.width; ++x) {
       const size_t i = size_t(y) * reference.width + x;
       const auto surface = transport.visible_surface(camera.eye(), camera.ray_direction(x, y), true);
       if (!surface || frame[4 * i + 3] < 1.0f) continue;
+      const glm::dvec3 n = glm::abs(surface->normal);
+      const int axis = n.x >= n.y && n.x >= n.z ? 0 : n.y >= n.z ? 1 : 2;
+      const int facing = 2 * axis + (surface->normal[axis] < 0.0 ? 1 : 0);
       for (int c = 0; c < 3; ++c) {
         if (!(surface->diffuse_color[c] > 0.0)) continue;
         const double to_irradiance = std::numbers::pi / surface->diffuse_color[c];
@@ -31,6 +35,9 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
         absolute_square += std::pow(frame[4 * i + c] - truth, 2);
         absolute_noise += error * error;
         truth_sum += truth;
+        frame_sum += frame[4 * i + c];
+        facing_frame[facing] += frame[4 * i + c];
+        facing_truth[facing] += truth;
         ++out.values;
       }
     }
@@ -41,6 +48,8 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
   const double mean = truth_sum / out.values;
   out.rms_over_mean = std::sqrt(absolute_square / out.values) / mean;
   out.noise_over_mean = std::sqrt(absolute_noise / out.values) / mean;
+  out.mean_ratio = frame_sum / truth_sum;
+  for (int f = 0; f < 6; ++f) out.mean_ratio_by_facing[f] = facing_truth[f] > 0.0 ? facing_frame[f] / facing_truth[f] : NAN;
   return out;
 }
 

@@ -8,6 +8,7 @@
 // relative_rms (no single dark pixel dominates it; predicting 0 everywhere gives at least 1).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -18,6 +19,10 @@ namespace lg::test {
 struct PrtComparison {
   double relative_rms = 0, reference_noise = 0, beyond_noise = 0;
   double rms_over_mean = 0, noise_over_mean = 0;  // the probe benchmark's measure, and the reference's noise in it
+  double mean_ratio = 0;  // the node's mean over the reference's: its absolute scale, 1 when right on average
+  // The same per way the surface faces (its normal's largest component: +x, -x, +y, -y, +z, -z; a
+  // box's walls), NaN where no pixel faces that way.
+  std::array<double, 6> mean_ratio_by_facing{};
   size_t values = 0;                              // pixels x channels compared
 };
 

@@ -40,6 +40,27 @@ double sh_l1_power(const ShL1& sh) {
   return std::sqrt(4.0 * kPi) * sh[0];
 }
 
+ShLobe sh_l1_lobe(const ShL1& sh) {
+  // A cosine lobe b max(0, d . w) projects to b pi Y00 and b 2 pi / 3 Y1(d): c0 = b sqrt(pi) / 2,
+  // |c1| = b sqrt(pi / 3); an isotropic a to c0 = a sqrt(4 pi).
+  const glm::dvec3 band1(sh[3], sh[1], sh[2]);
+  const double length = glm::length(band1), c0 = std::max(sh[0], 0.0);
+  ShLobe out;
+  out.b = std::min(length / std::sqrt(kPi / 3.0), c0 / (std::sqrt(kPi) / 2.0));
+  out.a = std::max(c0 - std::sqrt(kPi) / 2.0 * out.b, 0.0) / std::sqrt(4.0 * kPi);
+  if (length > 0.0) out.d = band1 / length;
+  return out;
+}
+
+double sh_lobe_eval(const ShLobe& lobe, glm::dvec3 direction) {
+  return lobe.a + lobe.b * std::max(glm::dot(lobe.d, direction), 0.0);
+}
+
+double sh_lobe_irradiance(const ShLobe& lobe, glm::dvec3 n) {
+  const double c = std::clamp(glm::dot(lobe.d, -n), -1.0, 1.0), t = std::acos(c);
+  return kPi * lobe.a + lobe.b * 2.0 / 3.0 * ((kPi - t) * c + std::sqrt(std::max(1.0 - c * c, 0.0)));
+}
+
 const std::array<glm::ivec3, 6>& lpv_directions() {
   static const std::array<glm::ivec3, 6> directions = {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0),
                                                        glm::ivec3(0, 1, 0), glm::ivec3(0, -1, 0),
@@ -50,22 +71,30 @@ const std::array<glm::ivec3, 6>& lpv_directions() {
 const std::array<std::array<LpvFace, kLpvFacesPerDirection>, 6>& lpv_faces() {
   static const auto table = [] {
     std::array<std::array<LpvFace, kLpvFacesPerDirection>, 6> out;
-    auto face = [](glm::dvec3 towards, glm::dvec3 normal, double solid_angle) {
-      LpvFace f{sh_l1_basis(towards), towards, sh_l1_cosine_lobe(normal)};
+    // The flux re-emitted about the direction it crossed the face in (lpv_model.h, LpvFace).
+    auto face = [](glm::dvec3 towards, double solid_angle) {
+      LpvFace f{sh_l1_basis(towards), towards, sh_l1_cosine_lobe(towards), solid_angle};
       for (double& c : f.emitted_lobe) c *= solid_angle / kPi;
       return f;
     };
     for (int d = 0; d < 6; ++d) {
       const glm::dvec3 dir(lpv_directions()[d]);
       int f = 0;
-      out[d][f++] = face(dir, dir, kFarFaceSolidAngle);
+      out[d][f++] = face(dir, kFarFaceSolidAngle);
       for (const glm::ivec3& s : lpv_directions())
         if (glm::dot(glm::dvec3(s), dir) == 0.0)
-          out[d][f++] = face(glm::normalize(dir + 0.5 * glm::dvec3(s)), glm::dvec3(s), kSideFaceSolidAngle);
+          out[d][f++] = face(glm::normalize(dir + 0.5 * glm::dvec3(s)), kSideFaceSolidAngle);
     }
     return out;
   }();
   return table;
+}
+
+double sh_lobe_sampled_outflow(glm::dvec3 d) {
+  double sum = 0.0;
+  for (const auto& faces : lpv_faces())
+    for (const LpvFace& face : faces) sum += face.solid_angle * std::max(glm::dot(d, face.towards), 0.0);
+  return sum;
 }
 
 LpvVolume::LpvVolume(glm::ivec3 c)
@@ -97,14 +126,15 @@ LpvVolume propagate_step(const LpvVolume& in, bool occlude) {
           const glm::ivec3 source = cell - lpv_directions()[d];  // its light travels along d into this cell
           if (!in.inside(source)) continue;
           const auto& light = in.light[in.index(source)];
+          std::array<ShLobe, 3> lobes = {sh_l1_lobe(light[0]), sh_l1_lobe(light[1]), sh_l1_lobe(light[2])};
+          for (ShLobe& lobe : lobes)
+            if (lobe.b > 0.0) lobe.b *= kPi / sh_lobe_sampled_outflow(lobe.d);
           for (const LpvFace& face : lpv_faces()[d]) {
             const double pass =
                 occlude ? lpv_transmittance(in.occlusion[in.index(source)], in.occlusion[in.index(cell)], face.towards)
                         : 1.0;
             for (int c = 0; c < 3; ++c) {
-              double flux = 0.0;  // the neighbour's intensity towards the face, non-negative
-              for (int k = 0; k < 4; ++k) flux += light[c][k] * face.towards_basis[k];
-              flux = std::max(0.0, flux) * pass;
+              const double flux = sh_lobe_eval(lobes[c], face.towards) * pass;  // intensity towards the face
               for (int k = 0; k < 4; ++k) sum[c][k] += flux * face.emitted_lobe[k];
             }
           }

@@ -24,6 +24,61 @@ vec4 sh_l1_cosine_lobe(vec3 n) {
   return vec4(0.88622693, 1.02332671 * n.y, 1.02332671 * n.z, 1.02332671 * n.x);
 }
 
+// The L1 coefficients read as the non-negative distribution with the same projection: an
+// isotropic part a plus a clamped-cosine lobe b max(0, d . w) (lpv_model.h's ShLobe).
+struct ShLobe {
+  float a, b;
+  vec3 d;
+};
+
+ShLobe sh_l1_lobe(vec4 sh) {
+  vec3 band1 = vec3(sh.w, sh.y, sh.z);
+  float len = length(band1);
+  float c0 = max(sh.x, 0.0);
+  float b = min(len / 1.02332671, c0 / 0.88622693);  // 1.0233 = sqrt(pi / 3), 0.8862 = sqrt(pi) / 2
+  return ShLobe(max(c0 - 0.88622693 * b, 0.0) / 3.5449077, b, len > 0.0 ? band1 / len : vec3(0.0));
+}
+
+float sh_l1_lobe_eval(ShLobe l, vec3 w) {
+  return l.a + l.b * max(dot(l.d, w), 0.0);
+}
+
+// What a step sends out of a cell from a unit lobe max(0, d . w): its intensity towards each of
+// the 30 faces its six neighbours receive through, times their solid angles (lpv_model.h's
+// lpv_faces), which falls short of the lobe's power pi by up to 15% (d along an axis) and
+// exceeds it by up to 5% (diagonals). lpv_outflow divides that out, so a step keeps the power.
+float sh_lobe_sampled_outflow(vec3 d) {
+  // Towards the neighbour along e (+-an axis) its far face lies along e, its side faces along
+  // (2 e + s) / sqrt(5) for the four s perpendicular to e.
+  float sum = 0.0;
+  for (int a = 0; a < 3; ++a)
+    for (int sign = -1; sign <= 1; sign += 2) {
+      float along = float(sign) * d[a];
+      float sides = max(2.0 * along + d[(a + 1) % 3], 0.0) + max(2.0 * along - d[(a + 1) % 3], 0.0) +
+                    max(2.0 * along + d[(a + 2) % 3], 0.0) + max(2.0 * along - d[(a + 2) % 3], 0.0);
+      sum += 0.40066968 * max(along, 0.0) + 0.42343135 / 2.23606798 * sides;
+    }
+  return sum;
+}
+
+// The light a cell sends on: its lobe part scaled by pi / sh_lobe_sampled_outflow, as SH.
+vec4 lpv_outflow(vec4 sh) {
+  ShLobe l = sh_l1_lobe(sh);
+  if (!(l.b > 0.0)) return sh;
+  float extra = l.b * (LG_PI / sh_lobe_sampled_outflow(l.d) - 1.0);
+  return sh + extra * sh_l1_cosine_lobe(l.d);
+}
+
+// The lobe's convolution with the clamped cosine about v: the integral over the sphere of
+// (a + b max(0, d . w)) max(0, v . w) = pi a + b 2/3 ((pi - t) cos t + sin t), t the angle between
+// d and v. With radiance and v = -n: the irradiance on a surface of normal n, whose light travels
+// along directions w with w . n < 0 (lpv_model.h's sh_lobe_irradiance).
+float sh_l1_lobe_convolve(ShLobe l, vec3 v) {
+  float c = clamp(dot(l.d, v), -1.0, 1.0);
+  float t = acos(c);
+  return LG_PI * l.a + l.b * (2.0 / 3.0) * ((LG_PI - t) * c + sqrt(max(1.0 - c * c, 0.0)));
+}
+
 uint lpv_cell_index(ivec3 c) {
   return uint((c.z * lpv.counts.y + c.y) * lpv.counts.x + c.x);
 }

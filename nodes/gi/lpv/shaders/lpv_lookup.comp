@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // gi.lpv's lookup, one invocation per G-buffer pixel: the summed intensity trilinearly half a
 // cell out along the normal (the sampler filters lpv_store.comp's images, edges clamped), as
-// radiance over a cell face (intensity / cell^2), convolved with the cosine about the normal
-// for the light arriving at it (travelling along -n). rgb: irradiance, W/m^2; a: coverage, 1
+// radiance over a cell face (intensity / cell^2), read as a lobe (sh_l1_lobe) and convolved with
+// the cosine about the normal for the light arriving at it (travelling along -n). rgb: irradiance, W/m^2; a: coverage, 1
 // where the surface lies in the grid's box, 0 outside it, on the sky and in a frame without a
 // directional light (scales.z). The target is the output itself, or at resolution_scale 1/k below
 // 1 a smaller image whose texel i is the G-buffer's texel upsample_source_texel(i, k), which
@@ -43,7 +43,8 @@ void main() {
   vec3 n = decode_normal(texelFetch(normal_tex, source, 0).rgb);
   vec3 uvw = (g + 0.5 * n) / vec3(lpv.counts.xyz);  // texel centres at (i + 0.5) / counts, as cell centres
   vec4 sh[3] = vec4[3](textureLod(sum_red, uvw, 0.0), textureLod(sum_green, uvw, 0.0), textureLod(sum_blue, uvw, 0.0));
-  vec4 lobe = sh_l1_cosine_lobe(-n);  // lpv_store.comp stored radiance
-  vec3 e = vec3(dot(sh[0], lobe), dot(sh[1], lobe), dot(sh[2], lobe));
+  // lpv_store.comp stored radiance; the light arriving travels along w with w . n < 0.
+  vec3 e = vec3(sh_l1_lobe_convolve(sh_l1_lobe(sh[0]), -n), sh_l1_lobe_convolve(sh_l1_lobe(sh[1]), -n),
+                sh_l1_lobe_convolve(sh_l1_lobe(sh[2]), -n));
   imageStore(irradiance, texel, vec4(clamp(finite_or_zero(max(e, vec3(0.0))), 0.0, 65504.0), lpv.scales.z));
 }

@@ -1,9 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // gi.lpv's propagation step, one invocation per cell (gathering): the light of each face
-// neighbour that travels into this cell through the five faces of it that do not face back,
-// re-emitted from its centre as cosine lobes about those faces' normals; added to the sum. The
-// model and its face table are lpv_model.h's (the kernel uploads the table).
+// neighbour that travels into this cell through the five faces of it that do not face back (the
+// neighbour's coefficients read as a lobe, sh_l1_lobe), re-emitted from its centre as cosine lobes
+// about the directions it crossed those faces in; added to the sum, and sent on by the next step
+// with its lobe part scaled to keep its power (lpv_outflow). The model and its face table are
+// lpv_model.h's (the kernel uploads the table).
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -35,19 +37,21 @@ void main() {
     ivec3 s = c - directions[d];
     if (!lpv_inside(s)) continue;
     uint j = lpv_cell_index(s);
-    vec4 source[3] = vec4[3](light_in[3u * j], light_in[3u * j + 1u], light_in[3u * j + 2u]);
+    ShLobe source[3] = ShLobe[3](sh_l1_lobe(light_in[3u * j]), sh_l1_lobe(light_in[3u * j + 1u]),
+                                 sh_l1_lobe(light_in[3u * j + 2u]));
     // The occlusion between the two cells, read opposite the way the light goes: the basis at
     // -w is the basis at w with band 1 negated.
     vec4 between = 0.5 * (occlusion[j] + here) * vec4(1.0, -1.0, -1.0, -1.0);
     for (int f = 0; f < 5; ++f) {
       vec4 y = face_basis[5 * d + f];
+      vec3 towards = vec3(y.w, y.y, y.z) / 0.48860251;
       float pass = occlude != 0u ? 1.0 - clamp(dot(between, y), 0.0, 1.0) : 1.0;
       vec4 lobe = face_lobe[5 * d + f] * pass;
-      for (int ch = 0; ch < 3; ++ch) gathered[ch] += max(dot(source[ch], y), 0.0) * lobe;
+      for (int ch = 0; ch < 3; ++ch) gathered[ch] += sh_l1_lobe_eval(source[ch], towards) * lobe;
     }
   }
   for (uint ch = 0u; ch < 3u; ++ch) {
-    light_out[3u * i + ch] = gathered[ch];
+    light_out[3u * i + ch] = lpv_outflow(gathered[ch]);
     sum[3u * i + ch] += gathered[ch];
   }
 }

@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // gi.lpv: the injected fixed-point sums to floats, one invocation per cell: the light that
-// propagation starts from, the first term of the sum the lookup reads, and the occlusion.
+// propagation starts from (its lobe part scaled to keep its power in the first step,
+// lpv_outflow), the first term of the sum the lookup reads, and the occlusion.
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -18,7 +19,7 @@ void main() {
   uint i = lpv_cell_index(c);
   for (uint ch = 0u; ch < 3u; ++ch) {
     vec4 v = vec4(light_fixed[3u * i + ch]) / lpv.scales.x;
-    light[3u * i + ch] = v;
+    light[3u * i + ch] = lpv_outflow(v);
     sum[3u * i + ch] = v;
   }
   occlusion[i] = vec4(occlusion_fixed[i]) / lpv.scales.y;
