@@ -138,6 +138,9 @@ struct NodeSchema {
   std::vector<LinkRequirement> requires_linked;
   std::vector<ParamPreset> presets;
   bool is_static = false;  // result depends only on params and static inputs: cached across frames
+  // A number param that, when not 0, makes a static node run every frame (env.sky's sun turning
+  // with time); -1: none.
+  int static_unless_param = -1;
   bool is_output = false;  // a sink: its inputs are results of the frame
   // An input whose pixel grid the camera is jittered on, sub-pixel, while the node runs
   // (temporal anti-aliasing: runtime/scene/camera_jitter.h); -1: the node needs no jitter.

@@ -17,8 +17,8 @@ class SchemaReader {
   void read(const JsonValue& root) {
     if (!expect_object(root, "")) return;
     check_keys(root, "",
-               {"type", "doc", "static", "output", "camera_jitter", "inputs", "outputs", "resources", "params",
-                "passes", "bypass", "requires", "presets"});
+               {"type", "doc", "static", "static_unless", "output", "camera_jitter", "inputs", "outputs", "resources",
+                "params", "passes", "bypass", "requires", "presets"});
     s_.type = string_at(root, "", "type", true);
     s_.category = s_.type.substr(0, s_.type.find('.'));
     s_.doc = string_at(root, "", "doc", true);
@@ -28,6 +28,7 @@ class SchemaReader {
     if (const JsonValue* params = root.find("params"); params && params->is_array())
       for (size_t k = 0; k < params->items().size(); ++k)
         ordering(params->items()[k], json_pointer_append("/params", k));
+    static_unless(root);
     each(root, "presets", [&](const JsonValue& v, const std::string& p) { preset(v, p); });
     each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, true)); });
     camera_jitter(root);
@@ -213,6 +214,22 @@ class SchemaReader {
     spec.history = bool_at(v, p, "history");
     if (!is_input) size_rule(v, p, spec.size);
     return spec;
+  }
+
+  // "static_unless": "param:NAME": a static node runs every frame while that number param is not 0.
+  void static_unless(const JsonValue& root) {
+    const JsonValue* v = root.find("static_unless");
+    if (!v) return;
+    if (!s_.is_static) d_.error(v->pos(), "/static_unless", "only a static node (\"static\": true) can have one");
+    if (!is_ref(*v, "param:")) {
+      d_.error(v->pos(), "/static_unless", "expected \"param:NAME\"");
+      return;
+    }
+    s_.static_unless_param = param_ref(*v, "/static_unless");
+    if (s_.static_unless_param >= 0 && !numeric_scalar(s_.params[size_t(s_.static_unless_param)])) {
+      d_.error(v->pos(), "/static_unless", "'" + v->as_string().substr(6) + "' is not a number param");
+      s_.static_unless_param = -1;
+    }
   }
 
   // "camera_jitter": "INPUT": the node asks for a jittered camera on that input's pixel grid.

@@ -300,9 +300,10 @@ class Lowerer {
     LoweredNode& node = out_.nodes[n];
     for (size_t i = 0; i < s.inputs.size(); ++i) check_fed(n, static_cast<int>(i), rn.input_link[i]);
 
-    // Static when the schema says so and every input is static; the key covers the type,
-    // the params and the inputs' keys, so it changes whenever the result could.
-    bool is_static = s.is_static;
+    // Static when the schema says so (and its static_unless param is 0) and every input is
+    // static; the key covers the type, the params and the inputs' keys, so it changes whenever
+    // the result could.
+    bool is_static = s.is_static && (s.static_unless_param < 0 || number_param(n, s.static_unless_param) == 0.0);
     uint64_t key = 0;
     if (is_static) {
       const JsonValue& params = out_.static_params.emplace_back(n, node_params(r_, n, roots_)).second;

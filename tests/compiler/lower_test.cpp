@@ -222,6 +222,25 @@ TEST(CompilerLower, StaticNodesGetCacheKeysThatFollowTheirInputsAndParams) {
   EXPECT_EQ(keys(compile_ok(same, builtin_registry())), k0);
 }
 
+// env.sky's static_unless param: a turning sun makes the sky, and every node it feeds, run each
+// frame; the BRDF table, fed by nothing, stays cached.
+TEST(CompilerLower, ATurningSunIsNotCachedNorIsWhatItFeeds) {
+  Plan plan = compile_ok(load_example("examples/animated-sky.json"), builtin_registry());
+  for (const char* name : {"sky/render", "sh/project", "specular/prefilter"}) {
+    const int p = test::pass_at(plan, name);
+    ASSERT_GE(p, 0) << name;
+    EXPECT_FALSE(plan.passes[p].is_static) << name;
+  }
+  EXPECT_TRUE(plan.passes[test::pass_at(plan, "dfg/integrate")].is_static);
+  EXPECT_EQ(resource(plan, "sky.cube").lifetime, ResourceLifetime::transient);
+  // The same graph with the sun still: cached again.
+  Graph still = load_example("examples/animated-sky.json");
+  test::node_named(still, "sky").params.set("sun_turn_speed", 0);
+  const Plan cached = compile_ok(still, builtin_registry());
+  EXPECT_TRUE(cached.passes[test::pass_at(cached, "sky/render")].is_static);
+  EXPECT_EQ(resource(cached, "sky.cube").lifetime, ResourceLifetime::cached);
+}
+
 TEST(CompilerLower, ABypassedNodeHasNoResourcesAndForwardsItsInputResource) {
   Plan plan = compile_ok(load_example("examples/post.json"), builtin_registry());
   for (const auto& r : plan.resources) EXPECT_FALSE(r.desc.name.starts_with("dof")) << r.desc.name;

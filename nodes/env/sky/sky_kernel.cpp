@@ -1,6 +1,8 @@
 #include "nodes/env/sky/sky_kernel.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/trigonometric.hpp>
 #include <glm/vec4.hpp>
 
 #include "nodes/common/node_params.h"
@@ -8,6 +10,7 @@
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
+#include "runtime/scene/scene_view.h"
 
 namespace lg {
 namespace {
@@ -38,18 +41,34 @@ Push make_push(const SkyModel& m) {
 class SkyKernel final : public NodeKernel {
  public:
   explicit SkyKernel(const PlanNode& node)
-      : model_(make_sky_model({glm::dvec3(param_float3(node, "sun_direction")), param_number(node, "sun_intensity"),
-                               param_number(node, "turbidity")})) {}
+      : params_{glm::dvec3(param_float3(node, "sun_direction")), param_number(node, "sun_intensity"),
+                param_number(node, "turbidity")},
+        turn_speed_(glm::radians(param_number(node, "sun_turn_speed"))) {}
 
+  // A turning sun is recorded every frame (the plan does not cache the node then), each frame's
+  // sun turned about +Y by the time since the first; the scene's frame time is its step.
   void record(PassContext& ctx) override {
-    record_sky(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, model_, ctx.image("out.cube"));
+    SkyParams params = params_;
+    if (turn_speed_ != 0.0) {
+      if (ctx.frame_index() == 0) seconds_ = 0.0;
+      params.sun_direction = sun_turned(params.sun_direction, turn_speed_ * seconds_);
+      seconds_ += ctx.scene().frame_seconds;
+    }
+    record_sky(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, make_sky_model(params), ctx.image("out.cube"));
   }
 
  private:
-  SkyModel model_;
+  SkyParams params_;
+  double turn_speed_;     // radians per second about +Y
+  double seconds_ = 0.0;  // since the first frame
 };
 
 }  // namespace
+
+glm::dvec3 sun_turned(const glm::dvec3& direction, double radians) {
+  const double c = std::cos(radians), s = std::sin(radians);
+  return {c * direction.x + s * direction.z, direction.y, -s * direction.x + c * direction.z};
+}
 
 void record_sky(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
                 const SkyModel& model, Image& cube) {

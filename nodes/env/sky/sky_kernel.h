@@ -12,6 +12,9 @@
 
 namespace lg {
 
+// `direction` turned by `radians` about +Y (counter-clockwise seen from above): env.sky's turning sun.
+glm::dvec3 sun_turned(const glm::dvec3& direction, double radians);
+
 // Records the sky into every mip of `cube` (an rgba16f cube map in GENERAL).
 void record_sky(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
                 const SkyModel& model, Image& cube);
