@@ -4,6 +4,8 @@
 
 #include <random>
 
+#include "runtime/scene/scene_file.h"
+#include "tests/lighting/captured_reflection_mask.h"
 #include "tests/lighting/specular_error.h"
 
 namespace lg::test {
@@ -86,6 +88,44 @@ TEST(SpecularError, AveragedReferencesHalveTheVarianceOfTheirMean) {
                                          frame_with_error(0.0f).material, {});
   // Mean |N(0, 0.3 / sqrt 2)| = 0.212 sqrt(2 / pi) = 0.169; 60,000 values, so within 0.003.
   EXPECT_NEAR(e.relative, 0.3 / std::sqrt(2.0) * std::sqrt(2.0 / M_PI), 0.003);
+}
+
+// A mirror floor seen from above at 45 degrees, a ball left out of the captures standing on it
+// in the middle of the view: the floor pixels in front of the ball mirror it, those at the image's
+// sides mirror the open sky.
+TEST(CapturedReflectionMask, FloorPixelsMirroringAnUncapturedBallAreLeftOut) {
+  const World world = parse_scene_file(R"({
+    "format": "lumagraph-world/1",
+    "materials": {"steel": {"roughness": 0.1, "metalness": 1}},
+    "entities": [
+      {"name": "floor", "shape": {"type": "quad", "size": [20, 20]}, "material": "steel"},
+      {"name": "ball", "transform": {"position": [0, 0.5, 0]}, "shape": {"type": "sphere", "radius": 0.5},
+       "captured_by_probes": false},
+      {"name": "camera", "transform": {"position": [0, 3, 3], "look_at": [0, 0, 0]}, "camera": {"vertical_fov": 60}}
+    ]})", "mask-test.json");
+  const uint32_t w = 64, h = 48;
+  const std::vector<uint8_t> mask = captured_reflection_mask(world, w, h, 0.01f);
+  // Row 28 looks 6.2 degrees below the centre (the ball covers 2.2 below to 12.6 above): the floor
+  // just in front of the ball, z = 0.59, whose mirror ray (51 degrees up, back) passes 0.16 from the
+  // ball's centre. Row 36, 15 degrees below, sees z = 1.27, whose mirror ray passes 2.2 m up over
+  // the ball into the sky.
+  size_t left_out = 0;
+  for (uint8_t m : mask) left_out += m == 0;
+  EXPECT_EQ(mask[28 * w + w / 2], 0) << "the floor in front of the ball mirrors it";
+  EXPECT_EQ(mask[36 * w + w / 2], 1) << "the floor nearer the camera mirrors the sky";
+  EXPECT_GT(left_out, 20u);
+  EXPECT_LT(left_out, size_t(w) * h / 2);
+  // With the ball captured, nothing is left out but the pixels where the camera sees no surface.
+  World captured = parse_scene_file(R"({
+    "format": "lumagraph-world/1",
+    "materials": {"steel": {"roughness": 0.1, "metalness": 1}},
+    "entities": [
+      {"name": "floor", "shape": {"type": "quad", "size": [20, 20]}, "material": "steel"},
+      {"name": "ball", "transform": {"position": [0, 0.5, 0]}, "shape": {"type": "sphere", "radius": 0.5}},
+      {"name": "camera", "transform": {"position": [0, 3, 3], "look_at": [0, 0, 0]}, "camera": {"vertical_fov": 60}}
+    ]})", "mask-test.json");
+  const std::vector<uint8_t> all = captured_reflection_mask(captured, w, h, 0.01f);
+  EXPECT_EQ(all[28 * w + w / 2], 1);
 }
 
 }  // namespace
