@@ -6,7 +6,11 @@
 // reflections over the environment, over the probes and under SSR; quality knobs swept: the
 // probes' face_size, SSR's max_steps and resolution_scale, the planar views' resolution_scale) gives
 // - its error: the specular term against the path tracer's specular AOV over the floor's and the
-//   ball's metal pixels (specular_error.h), at --size after --frames frames (SSR accumulates);
+//   ball's metal pixels (specular_error.h), at --size after --frames frames (SSR accumulates):
+//   the mean absolute error against the reference, and the RMS error with the reference's noise
+//   taken out (debiased_specular_error: the reference is traced as two halves with independent
+//   seeds, whose mean is the reference of the first error); both also over the floor's pixels
+//   that reflect only what the probes capture (captured_reflection_mask.h);
 // - its time: the GPU time of the reflection passes (probes/*, planar/*, ssr/*) at --time-size,
 //   median and fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
 //   work is CPU work) less the environment-only configuration's, which a loaded machine disturbs
@@ -28,6 +32,7 @@
 #include "nodes/gi/path_tracer/reference_file.h"
 #include "runtime/image/image_file.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/lighting/captured_reflection_mask.h"
 #include "tests/lighting/reflection_render.h"
 #include "tests/lighting/reflection_worlds.h"
 #include "tests/lighting/specular_error.h"
@@ -59,6 +64,9 @@ struct Point {
   double median_ms = 0, min_ms = 0, frame_ms = 0, first_extra_ms = 0;
   double cpu_ms = 0;  // median CPU time of a frame after the first, less the environment-only one's
   test::SpecularError all, floor, ball;
+  test::DebiasedError floor_rms, ball_rms;
+  test::SpecularError floor_captured;  // over the floor's pixels that reflect only captured entities
+  test::DebiasedError floor_captured_rms;
 };
 
 double median(std::vector<double> v) {
@@ -81,19 +89,20 @@ uint64_t text_hash(const std::string& text) {
   return hash;
 }
 
-// The reference of `w`, from the cache when a file there was traced for the same run: the world
-// and graph files (the environment is the graph's), the world's edits (its name), size and paths.
+// The reference of `w` with `paths` a pixel from `seed`, from the cache when a file there was
+// traced for the same run: the world and graph files (the environment is the graph's), the world's
+// edits (its name), size, paths and seed.
 ReferenceImage cached_reference(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
-                                const PathEnvironment& environment) {
+                                const PathEnvironment& environment, uint32_t paths, uint64_t seed) {
   const std::string source = LUMAGRAPH_SOURCE_DIR;
   const uint64_t hash = text_hash(file_text(source + "/examples/worlds/" + world_file) +
                                   file_text(source + "/examples/reflections.json"));
   char run[256];
-  std::snprintf(run, sizeof run, "world=%s files=%016" PRIx64 " size=%ux%u spp=%u", w.name.c_str(), hash, o.width,
-                o.height, o.paths);
+  std::snprintf(run, sizeof run, "world=%s files=%016" PRIx64 " size=%ux%u spp=%u seed=%" PRIu64, w.name.c_str(),
+                hash, o.width, o.height, paths, seed);
   char name[256];
-  std::snprintf(name, sizeof name, "/%s-%ux%u-%u-%016" PRIx64 ".part", w.name.c_str(), o.width, o.height, o.paths,
-                hash);
+  std::snprintf(name, sizeof name, "/%s-%ux%u-%u-s%" PRIu64 "-%016" PRIx64 ".part", w.name.c_str(), o.width, o.height,
+                paths, seed, hash);
   const std::string path = o.cache_dir + name;
   if (std::filesystem::exists(path)) {
     ReferencePart part = read_reference_part(path);
@@ -103,7 +112,7 @@ ReferenceImage cached_reference(const Options& o, const test::ReflectionWorld& w
     }
   }
   const auto start = std::chrono::steady_clock::now();
-  ReferencePart part{run, 0, 1, test::trace_specular_reference(w.world, o.width, o.height, o.paths, environment)};
+  ReferencePart part{run, 0, 1, test::trace_specular_reference(w.world, o.width, o.height, paths, environment, seed)};
   const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
   std::filesystem::create_directories(o.cache_dir);
   write_reference_part(path, part);
@@ -115,10 +124,16 @@ void print_error(const char* what, const test::SpecularError& e) {
   std::printf("  %-6s %6zu pixels, reference noise %.4f of its mean\n", what, e.pixels, e.noise);
 }
 
+// The reference as two halves of --paths with independent seeds, and their mean.
+struct References {
+  ReferenceImage a, b, mean;
+};
+
 class Measurer {
  public:
-  Measurer(const Options& o, const test::ReflectionWorld& w, const ReferenceImage& reference)
-      : o_(o), w_(w), reference_(reference) {}
+  Measurer(const Options& o, const test::ReflectionWorld& w, const References& references,
+           const std::vector<uint8_t>& captured)
+      : o_(o), w_(w), references_(references), reference_(references.mean), captured_(captured) {}
 
   void measure(ReflectionConfig config) {
     config.probe_params = o_.probe_params;
@@ -133,10 +148,15 @@ class Measurer {
     p.all = error(e, {});
     p.floor = error(e, {w_.floor_roughness});
     p.ball = error(e, {w_.ball_roughness});
+    p.floor_rms = debiased(e, {w_.floor_roughness});
+    p.ball_rms = debiased(e, {w_.ball_roughness});
+    p.floor_captured = error(e, {w_.floor_roughness, &captured_});
+    p.floor_captured_rms = debiased(e, {w_.floor_roughness, &captured_});
     if (!o_.maps_dir.empty()) save_picture(e, label);
-    std::printf("%-16s %-34s %8.2f %8.2f %8.1f %9.1f %9.0f   %7.4f %7.4f %7.4f\n", p.world.c_str(), label.c_str(),
-                p.median_ms, p.min_ms, p.cpu_ms, p.frame_ms, p.first_extra_ms, p.all.relative, p.floor.relative,
-                p.ball.relative);
+    std::printf("%-16s %-34s %8.2f %8.2f %8.1f %9.1f %9.0f   %7.4f %7.4f %7.4f   %7.4f %7.4f   %7.4f %7.4f\n",
+                p.world.c_str(), label.c_str(), p.median_ms, p.min_ms, p.cpu_ms, p.frame_ms, p.first_extra_ms,
+                p.all.relative, p.floor.relative, p.ball.relative, p.floor_rms.rms, p.ball_rms.rms,
+                p.floor_captured.relative, p.floor_captured_rms.rms);
     std::fflush(stdout);
     points.push_back(std::move(p));
   }
@@ -178,9 +198,15 @@ class Measurer {
     return test::specular_error(reference_, f.lit, f.direct, f.material, mask);
   }
 
+  test::DebiasedError debiased(const test::ReflectionFrame& f, test::SurfaceMask mask) const {
+    return test::debiased_specular_error(references_.a, references_.b, f.lit, f.direct, f.material, mask);
+  }
+
   const Options& o_;
   const test::ReflectionWorld& w_;
+  const References& references_;
   const ReferenceImage& reference_;
+  const std::vector<uint8_t>& captured_;
   double environment_cpu_ms_ = 0;  // measured first
 };
 
@@ -195,22 +221,40 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
   // One small frame for the plan's environment, which the reference is lit by.
   const test::ReflectionFrame base = test::render_reflections(
       w.world, o.width, o.height, test::reflection_graph({.source = ReflectionSource::environment}), 1, false);
-  const ReferenceImage reference = cached_reference(o, w, world_file, base.environment);
-  const auto noise = [&](float roughness) {
-    return test::specular_error(reference, base.lit, base.direct, base.material, {roughness});
+  References refs;
+  refs.a = cached_reference(o, w, world_file, base.environment, o.paths / 2, 1);
+  refs.b = cached_reference(o, w, world_file, base.environment, o.paths - o.paths / 2, 2);
+  refs.mean = test::average_references(refs.a, refs.b);
+  const ReferenceImage& reference = refs.mean;
+  const auto noise = [&](test::SurfaceMask mask) {
+    return test::specular_error(reference, base.lit, base.direct, base.material, mask);
   };
-  print_error("metal", noise(-1.0f));
-  print_error("floor", noise(w.floor_roughness));
-  print_error("ball", noise(w.ball_roughness));
-  references << w.name << ',' << o.width << ',' << o.height << ',' << o.paths << ',' << noise(-1.0f).noise << ','
-             << noise(w.floor_roughness).noise << ',' << noise(w.ball_roughness).noise << ','
-             << noise(w.floor_roughness).pixels << ',' << noise(w.ball_roughness).pixels << '\n';
-  std::printf("\n%-16s %-34s %8s %8s %8s %9s %9s   %-23s\n", "", "", "median", "min", "CPU", "frame", "1st frame",
-              "error / reference mean");
-  std::printf("%-16s %-34s %8s %8s %8s %9s %9s   %7s %7s %7s\n", "world", "configuration", "GPU ms", "GPU ms",
-              "extra ms", "GPU ms", "extra ms", "metal", "floor", "ball");
+  const std::vector<uint8_t> captured =
+      test::captured_reflection_mask(w.world, o.width, o.height, w.floor_roughness * w.floor_roughness);
+  const auto noise_rms = [&](test::SurfaceMask mask) {
+    return test::debiased_specular_error(refs.a, refs.b, base.lit, base.direct, base.material, mask).noise_rms;
+  };
+  print_error("metal", noise({-1.0f}));
+  print_error("floor", noise({w.floor_roughness}));
+  print_error("ball", noise({w.ball_roughness}));
+  references << w.name << ',' << o.width << ',' << o.height << ',' << o.paths << ',' << noise({-1.0f}).noise << ','
+             << noise({w.floor_roughness}).noise << ',' << noise({w.ball_roughness}).noise << ','
+             << noise({w.floor_roughness}).pixels << ',' << noise({w.ball_roughness}).pixels << ','
+             << noise_rms({w.floor_roughness}) << ',' << noise_rms({w.ball_roughness}) << ','
+             << noise({w.floor_roughness, &captured}).noise << ',' << noise_rms({w.floor_roughness, &captured}) << ','
+             << noise({w.floor_roughness, &captured}).pixels << '\n';
+  std::printf("  RMS noise of the reference: floor %.4f, ball %.4f of its mean\n", noise_rms({w.floor_roughness}),
+              noise_rms({w.ball_roughness}));
+  std::printf("  floor reflecting only captured entities: %zu pixels, noise %.4f (RMS %.4f) of its mean\n",
+              noise({w.floor_roughness, &captured}).pixels, noise({w.floor_roughness, &captured}).noise,
+              noise_rms({w.floor_roughness, &captured}));
+  std::printf("\n%-16s %-34s %8s %8s %8s %9s %9s   %-23s   %-15s   %-15s\n", "", "", "median", "min", "CPU", "frame",
+              "1st frame", "mean |error| / ref mean", "debiased RMS", "floor, captured");
+  std::printf("%-16s %-34s %8s %8s %8s %9s %9s   %7s %7s %7s   %7s %7s   %7s %7s\n", "world", "configuration",
+              "GPU ms", "GPU ms", "extra ms", "GPU ms", "extra ms", "metal", "floor", "ball", "floor", "ball", "|error|",
+              "RMS");
 
-  Measurer m(o, w, reference);
+  Measurer m(o, w, refs, captured);
   m.measure({.source = ReflectionSource::environment});
   for (const bool parallax : {false, true})
     for (const double face : o.faces)
@@ -237,14 +281,19 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
 void write_points(const Options& o, const std::vector<Point>& points) {
   std::ofstream csv(o.results_dir + "/reflection_points.csv");
   csv << "world,source,parallax,face_size,max_steps,ssr_scale,median_ms,min_ms,frame_ms,first_frame_extra_ms,"
-         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms,planar_scale\n";
+         "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms,planar_scale,"
+         "rms_floor,rms_ball,plain_rms_floor,plain_rms_ball,error_floor_captured,rms_floor_captured,"
+         "pixels_floor_captured\n";
   for (const Point& p : points) {
     const ReflectionConfig& c = p.config;
     csv << p.world << ',' << test::reflection_source_name(c.source) << ',' << c.parallax << ',' << c.face_size << ','
         << c.max_steps << ',' << (c.ssr_scale > 0 ? c.ssr_scale : 1.0) << ',' << p.median_ms << ',' << p.min_ms << ','
         << p.frame_ms << ',' << p.first_extra_ms << ',' << p.all.relative << ',' << p.floor.relative << ','
         << p.ball.relative << ',' << p.floor.pixels << ',' << p.ball.pixels << ',' << p.all.noise << ','
-        << test::config_label(c) << ',' << p.cpu_ms << ',' << (c.planar_scale > 0 ? c.planar_scale : 0.0) << '\n';
+        << test::config_label(c) << ',' << p.cpu_ms << ',' << (c.planar_scale > 0 ? c.planar_scale : 0.0) << ','
+        << p.floor_rms.rms << ',' << p.ball_rms.rms << ',' << p.floor_rms.plain_rms << ',' << p.ball_rms.plain_rms
+        << ',' << p.floor_captured.relative << ',' << p.floor_captured_rms.rms << ',' << p.floor_captured.pixels
+        << '\n';
   }
 }
 
@@ -259,7 +308,8 @@ const char* const usage =
     "  --time-size WxH     size the passes are timed at (default 1280x720)\n"
     "  --frames N          frames rendered before the error is taken (default 8; SSR accumulates)\n"
     "  --time-frames N     frames timed, the first not counted (default 4)\n"
-    "  --paths N           reference paths per pixel (default 1024)\n"
+    "  --paths N           reference paths per pixel (default 1024), traced as two halves with\n"
+    "                      independent seeds (for the debiased RMS error)\n"
     "  --faces LIST        gi.reflection_capture face sizes (default 16,32,64,128)\n"
     "  --steps LIST        lighting.ssr max_steps (default 8,16,32,64,128)\n"
     "  --scales LIST       lighting.ssr resolution_scale values (default 1)\n"
@@ -281,7 +331,7 @@ int run(int argc, char** argv) {
   flags.size("--time-size", o.time_width, o.time_height);
   flags.count("--frames", o.frames);
   flags.count("--time-frames", o.time_frames, 2);
-  flags.count("--paths", o.paths);
+  flags.count("--paths", o.paths, 2);  // two halves
   flags.numbers("--faces", o.faces);
   flags.numbers("--steps", o.steps);
   flags.numbers("--scales", o.scales);
@@ -294,7 +344,8 @@ int run(int argc, char** argv) {
   if (const auto status = flags.parse(argc, argv)) return *status;
   std::filesystem::create_directories(o.results_dir);
   std::ofstream references(o.results_dir + "/reflection_references.csv");
-  references << "world,width,height,paths,noise_metal,noise_floor,noise_ball,pixels_floor,pixels_ball\n";
+  references << "world,width,height,paths,noise_metal,noise_floor,noise_ball,pixels_floor,pixels_ball,"
+                "noise_rms_floor,noise_rms_ball,noise_floor_captured,noise_rms_floor_captured,pixels_floor_captured\n";
   std::vector<Point> points;
   std::printf(
       "Specular term against the path tracer's specular AOV (%ux%u, %u paths a pixel, %d frames), reflection "
