@@ -13,7 +13,7 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
                                      const std::vector<float>& frame) {
   const PathTransport transport(scene, 1);
   const CameraPixels camera(scene.view().camera, reference.width, reference.height);
-  double square = 0, noise = 0, absolute_square = 0, absolute_noise = 0, truth_sum = 0;
+  double square = 0, noise = 0, absolute_square = 0, absolute_noise = 0, truth_sum = 0, frame_sum = 0;
   PrtComparison out;
   for (uint32_t y = 0; y < reference.height; ++y)
     for (uint32_t x = 0; x < reference.width; ++x) {
@@ -31,6 +31,7 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
         absolute_square += std::pow(frame[4 * i + c] - truth, 2);
         absolute_noise += error * error;
         truth_sum += truth;
+        frame_sum += frame[4 * i + c];
         ++out.values;
       }
     }
@@ -41,6 +42,7 @@ PrtComparison compare_with_reference(const PathScene& scene, const ReferenceImag
   const double mean = truth_sum / out.values;
   out.rms_over_mean = std::sqrt(absolute_square / out.values) / mean;
   out.noise_over_mean = std::sqrt(absolute_noise / out.values) / mean;
+  out.mean_over_mean = frame_sum / truth_sum;
   return out;
 }
 

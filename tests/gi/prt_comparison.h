@@ -18,6 +18,7 @@ namespace lg::test {
 struct PrtComparison {
   double relative_rms = 0, reference_noise = 0, beyond_noise = 0;
   double rms_over_mean = 0, noise_over_mean = 0;  // the probe benchmark's measure, and the reference's noise in it
+  double mean_over_mean = 0;                      // the frame's mean over the reference's: 1 unbiased, below 1 too dark
   size_t values = 0;                              // pixels x channels compared
 };
 
