@@ -91,9 +91,9 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
   vec3 grid_size = cell * vec3(voxel.counts.xyz);
   float top = float(voxel.counts.w - 1);
   vec3 light = vec3(0.0);
-  float opacity = 0.0, occluded = 0.0;
+  float opacity = 0.0, occluded = 0.0, blocked = 0.0;
   float t = cell;
-  for (int s = 0; s < 128 && opacity < 0.99; ++s) {
+  for (int s = 0; s < 128 && opacity < 0.99 && blocked < 0.99; ++s) {
     // The level whose voxels are at most that wide: a whole level, as blending in the next one
     // would reach twice as far.
     float level = min(floor(log2(max(min(2.0 * t * kTanHalfAngle, (cell + t * cosine) / 1.5), cell) / cell)), top);
@@ -106,7 +106,14 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
     float a = clamp(v.in_front, 0.0, 1.0);
     light += (1.0 - opacity) * a * max(v.radiance, vec3(0.0));
     opacity += (1.0 - opacity) * a;
-    if (t <= voxel.irradiance.w) occluded += (1.0 - occluded) * clamp(v.opaque, 0.0, 1.0);
+    float opaque = clamp(v.opaque, 0.0, 1.0);
+    if (t <= voxel.irradiance.w) occluded += (1.0 - occluded) * opaque;
+    // The march ends once the voxels are solid whichever way they face (nothing lit is seen
+    // through them: closed surfaces face the ray before their backs), but not for the voxels
+    // of the surface the cone starts from, which the filter reaches within 2.5 voxels of it. A
+    // march ended by facing opacity alone went on through every surface's back (1.5-2.3x the
+    // frame time in the two rooms).
+    if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
     t += width;
   }
   return Cone(light, occluded);
