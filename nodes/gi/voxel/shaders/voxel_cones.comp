@@ -111,8 +111,7 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
     // The march ends once the voxels are solid whichever way they face (nothing lit is seen
     // through them: closed surfaces face the ray before their backs), but not for the voxels
     // of the surface the cone starts from, which the filter reaches within 2.5 voxels of it. A
-    // march ended by facing opacity alone went on through every surface's back (1.5-2.3x the
-    // frame time in the two rooms).
+    // march ended by facing opacity alone went on through every surface's back.
     if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
     t += width;
   }
