@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstddef>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <optional>
@@ -58,7 +60,6 @@ class VoxelKernel final : public NodeKernel {
   explicit VoxelKernel(const PlanNode& node)
       : resolution_(int(param_number(node, "resolution"))),
         ao_distance_(float(param_number(node, "ao_distance"))),
-        facing_colour_(param_bool(node, "facing_colour")),
         k_(resolution_divisor(node)) {}
 
   void record(PassContext& ctx) override {
@@ -100,13 +101,25 @@ class VoxelKernel final : public NodeKernel {
       c.shadow_from_world = shadow_from_world(bounds, direction);
     }
     shadow_from_world_ = c.shadow_from_world;
+    const std::vector<DrawConstants> draws = draw_constants(scene);
+    // The volume is rebuilt only when what it is made of changed: the grid, the light, the draws
+    // (transforms, materials) or the meshes' contents (scene.version). Anything that moves
+    // changes one of those, so the frame it moves in rebuilds, and a static scene pays for the
+    // cones alone.
+    std::vector<std::byte> key(sizeof(c) + sizeof(scene.version) + draws.size() * sizeof(DrawConstants));
+    std::memcpy(key.data(), &c, sizeof(c));
+    std::memcpy(key.data() + sizeof(c), &scene.version, sizeof(scene.version));
+    if (!draws.empty())
+      std::memcpy(key.data() + sizeof(c) + sizeof(scene.version), draws.data(), draws.size() * sizeof(DrawConstants));
+    rebuild_ = images_new_ || key != built_from_;
+    built_from_ = std::move(key);
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     }
     constants_->write_value(c);
-    draws_->write(draw_constants(scene));
+    draws_->write(draws);
   }
 
   // The sums and the chain, sized when the counts change (the box of a moving world may change
@@ -134,6 +147,7 @@ class VoxelKernel final : public NodeKernel {
     extent[doubled_axis_] *= 2;
     const char* axes[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) seen_[a] = image(std::string("voxels seen along ") + axes[a], extent, levels_);
+    facing_ = image("voxels facing", extent, levels_);
     images_new_ = true;
     allocated_counts_ = grid_.counts;
   }
@@ -148,7 +162,7 @@ class VoxelKernel final : public NodeKernel {
     const VkRenderingInfo rendering = rendering_info(size, size, {}, &depth);
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    if (light_present_) {
+    if (light_present_ && rebuild_) {
       const Pipeline& pipeline = shadow_depth_pipeline(ctx, map.desc().format, false);
       set_viewport(cmd, size, size);
       const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle())};
@@ -166,9 +180,11 @@ class VoxelKernel final : public NodeKernel {
   // order separate passes by them.
   void record_volume(PassContext& ctx) {
     prepare(ctx);
-    voxelize(ctx);
-    inject(ctx);
-    build_chain(ctx);
+    if (rebuild_) {
+      voxelize(ctx);
+      inject(ctx);
+      build_chain(ctx);
+    }
     trace_cones(ctx);
   }
 
@@ -204,6 +220,7 @@ class VoxelKernel final : public NodeKernel {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_) {
       for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, facing_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
     }
     images_new_ = false;
     compute_to_compute_barrier(cmd);  // the atomics; last frame's reads of the chain
@@ -212,7 +229,8 @@ class VoxelKernel final : public NodeKernel {
                                       sampled_image(2, ctx.image("tmp.shadow_map").view(), ctx.nearest_sampler()),
                                       storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
-                                      storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1}))};
+                                      storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1})),
+                                      storage_image(6, facing_.view({.base_mip = 0, .mip_count = 1}))};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
@@ -226,10 +244,11 @@ class VoxelKernel final : public NodeKernel {
         writes.push_back(storage_image(1 + a, seen_[a].view({.base_mip = level - 1, .mip_count = 1})));
       for (uint32_t a = 0; a < 3; ++a)
         writes.push_back(storage_image(4 + a, seen_[a].view({.base_mip = level, .mip_count = 1})));
-      writes.push_back(storage_buffer(7, grid_sums_.handle()));
-      const int32_t push[2] = {int32_t(level), facing_colour_ ? 1 : 0};
+      writes.push_back(storage_image(7, facing_.view({.base_mip = level - 1, .mip_count = 1})));
+      writes.push_back(storage_image(8, facing_.view({.base_mip = level, .mip_count = 1})));
+      const int32_t push = int32_t(level);
       dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_downsample.comp", writes, uint32_t(counts.x),
-                       uint32_t(counts.y * counts.z), std::as_bytes(std::span(push)));
+                       uint32_t(counts.y * counts.z), std::as_bytes(std::span(&push, 1)));
     }
   }
 
@@ -249,7 +268,8 @@ class VoxelKernel final : public NodeKernel {
         storage_image(5, target.view()),
         storage_image(6, ao.view()),
         sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
+        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(9, facing_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)));
   }
@@ -275,7 +295,6 @@ class VoxelKernel final : public NodeKernel {
 
   const int resolution_;
   const float ao_distance_;
-  const bool facing_colour_;
   const int32_t k_;  // the G-buffer's resolution over the cones' targets: 1 / resolution_scale
   std::optional<uint64_t> prepared_frame_;
   CellGrid grid_;
@@ -285,9 +304,12 @@ class VoxelKernel final : public NodeKernel {
   uint32_t levels_ = 1;
   std::optional<HostBuffer> constants_, draws_, camera_;
   Buffer grid_sums_;
-  std::array<Image, 3> seen_;  // the chain as rays along x, y and z see it (voxel_common.glsl)
-  int doubled_axis_ = 0;       // the axis along which those hold both directions
-  bool images_new_ = false;    // not yet in the GENERAL layout
+  std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)
+  Image facing_;                       // how much of each voxel faces rays along each axis (the same)
+  int doubled_axis_ = 0;               // the axis along which those hold both directions
+  bool images_new_ = false;            // not yet in the GENERAL layout
+  bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
+  std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
 };
 
 }  // namespace

@@ -5,7 +5,10 @@
 // normal's hemisphere, one along the normal and five 60 degrees from it, 72 degrees apart. Each
 // starts one voxel out along the normal and marches front to back through the anisotropic chain
 // (voxel_common.glsl; the three directions facing the ray, weighted by the squares of its
-// components). A sample at distance t reads, trilinearly within one level, the level whose
+// components). A sample's radiance is the colour of the surfaces facing the ray over how much
+// faces it (the facing image), so a floor seen obliquely keeps its whole radiance though only
+// the chain's vertical direction shows it, and what faces away from the ray (a sunlit roof seen
+// from the room below it) adds nothing. A sample at distance t reads, trilinearly within one level, the level whose
 // voxels are as wide as the cone there (2 t tan 30, rounded down to a level), but never wider
 // than 2/3 of the sample's height h above the surface's tangent plane: the filter reaches one
 // voxel beyond the sample, so voxels of width w <= h / 1.5 never blend in the surface the cone
@@ -34,6 +37,7 @@ layout(binding = 3) uniform sampler2D normal_tex;
 layout(binding = 4) uniform sampler3D seen_x;
 layout(binding = 7) uniform sampler3D seen_y;
 layout(binding = 8) uniform sampler3D seen_z;
+layout(binding = 9) uniform sampler3D facing_image;
 layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
 layout(binding = 6, r8) uniform writeonly image2D ao;
 layout(push_constant) uniform Push {
@@ -42,6 +46,7 @@ layout(push_constant) uniform Push {
 
 const float kTanHalfAngle = 0.57735027;  // tan 30 deg
 const float kCentreWeight = 0.25, kSideWeight = 0.15;
+const float kCrossing = 4.0;
 
 // What a ray travelling along `negative` (0 or 1) of `image`'s axis sees at `uvw` (the grid's
 // box in [0, 1]^3) of `level`: within its half, clamped half a voxel inside it so the filter does
@@ -53,12 +58,26 @@ vec4 seen(sampler3D image, vec3 uvw, int level, int negative) {
   return textureLod(image, uvw, float(level));
 }
 
+// What a cone's sample sees.
+struct Sample {
+  vec3 radiance;   // of what faces the ray, W/m^2/sr
+  float opaque;    // the chain's opacity, whichever way the surfaces face
+  float in_front;  // opacity of what faces the ray only
+};
+
 // The chain at `uvw` and `level` for a ray along `d` (unit): the three directions facing the ray,
-// weighted by d's squared components (they sum to 1).
-vec4 sample_chain(vec3 uvw, int level, vec3 d) {
+// weighted by d's squared components (they sum to 1). in_front: how much of the voxel faces the
+// ray along any of the three directions, each counted fully once the ray crosses that axis at 30
+// degrees or more (w >= 1/4), fading below.
+Sample sample_chain(vec3 uvw, int level, vec3 d) {
   vec3 w = d * d;
-  return w.x * seen(seen_x, uvw, level, int(d.x < 0.0)) + w.y * seen(seen_y, uvw, level, int(d.y < 0.0)) +
-         w.z * seen(seen_z, uvw, level, int(d.z < 0.0));
+  bvec3 negative = lessThan(d, vec3(0.0));
+  vec4 colour = w.x * seen(seen_x, uvw, level, int(negative.x)) + w.y * seen(seen_y, uvw, level, int(negative.y)) +
+                w.z * seen(seen_z, uvw, level, int(negative.z));
+  vec3 facing = mix(seen(facing_image, uvw, level, 0).rgb, seen(facing_image, uvw, level, 1).rgb, negative);
+  vec3 in_front = min(vec3(1.0), kCrossing * w) * facing;
+  // Below 1e-3 of a voxel facing the ray, the colour (at most as large) is negligible.
+  return Sample(colour.rgb / max(dot(w, facing), 1e-3), colour.a, max(in_front.x, max(in_front.y, in_front.z)));
 }
 
 struct Cone {
@@ -72,19 +91,28 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
   vec3 grid_size = cell * vec3(voxel.counts.xyz);
   float top = float(voxel.counts.w - 1);
   vec3 light = vec3(0.0);
-  float opacity = 0.0, occluded = 0.0;
+  float opacity = 0.0, occluded = 0.0, blocked = 0.0;
   float t = cell;
-  for (int s = 0; s < 128 && opacity < 0.99; ++s) {
+  for (int s = 0; s < 128 && opacity < 0.99 && blocked < 0.99; ++s) {
     // The level whose voxels are at most that wide: a whole level, as blending in the next one
     // would reach twice as far.
     float level = min(floor(log2(max(min(2.0 * t * kTanHalfAngle, (cell + t * cosine) / 1.5), cell) / cell)), top);
     float width = cell * exp2(level);
     vec3 uvw = (origin + direction * t - voxel.origin_cell.xyz) / grid_size;
     if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
-    vec4 v = sample_chain(uvw, int(level), direction);
-    light += (1.0 - opacity) * max(v.rgb, vec3(0.0));
-    opacity += (1.0 - opacity) * clamp(v.a, 0.0, 1.0);
-    if (t <= voxel.irradiance.w) occluded = opacity;
+    Sample v = sample_chain(uvw, int(level), direction);
+    // Light stops at what faces the ray only (a ray never meets the back of a surface); the
+    // occlusion counts every voxel, as a one-sided roof occludes the floor below it.
+    float a = clamp(v.in_front, 0.0, 1.0);
+    light += (1.0 - opacity) * a * max(v.radiance, vec3(0.0));
+    opacity += (1.0 - opacity) * a;
+    float opaque = clamp(v.opaque, 0.0, 1.0);
+    if (t <= voxel.irradiance.w) occluded += (1.0 - occluded) * opaque;
+    // The march ends once the voxels are solid whichever way they face (nothing lit is seen
+    // through them: closed surfaces face the ray before their backs), but not for the voxels
+    // of the surface the cone starts from, which the filter reaches within 2.5 voxels of it. A
+    // march ended by facing opacity alone went on through every surface's back.
+    if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
     t += width;
   }
   return Cone(light, occluded);

@@ -1,15 +1,17 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // gi.voxel's injection, one invocation per voxel: the voxelization's sums into level 0 of the
-// chain, the same for rays along all six directions. A marked voxel is opaque (a = 1) and its colour the radiance a diffuse surface of its
-// mean colour and normal reflects under the light: albedo x E x max(0, -n . l) / pi x visibility.
+// chain and of the facing image (voxel_common.glsl). A marked voxel is opaque (a = 1) for rays
+// along all six directions; its radiance is what a diffuse surface of its mean colour and normal
+// reflects under the light, and a ray sees it only where that surface faces the ray (see
+// facing()): albedo x E x max(0, -n . l) / pi x visibility.
 // Only the side a face's normal faces is lit: with both (|n . l|) the dark face of a wall thinner
 // than 2.5 voxels passed the shadow test below and glowed (a 0.2 m wall at 13 cm voxels lit the
 // floor on its shadowed side at 1.35 W/m^2 under a 10 W/m^2 sun); a voxel whose normals cancel
 // out (both faces of a thin wall) reflects nothing. Visibility: lighting.deferred's 3x3
 // percentage-closer filter at the voxel's centre moved one voxel out along the normal, with a
 // depth bias of 1.5 voxels: a voxel's centre may lie up to sqrt(3)/2 voxels behind the surface it
-// holds. The radiance is the same in every direction (isotropic voxels).
+// holds.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/common/shaders/finite.glsl"
 
@@ -17,17 +19,33 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 1) readonly buffer Grid { int grid[]; };
 layout(binding = 2) uniform sampler2D shadow_map;
-// Level 0 of the chain (voxel_common.glsl): the same in all six directions.
+// Level 0 of the chain and of the facing image (voxel_common.glsl).
 layout(binding = 3, rgba16f) uniform writeonly image3D seen_x;
 layout(binding = 4, rgba16f) uniform writeonly image3D seen_y;
 layout(binding = 5, rgba16f) uniform writeonly image3D seen_z;
+layout(binding = 6, rgba16f) uniform writeonly image3D facing_image;
 
-void store(ivec3 c, vec4 v) {
+// How much of a surface of unit normal n faces rays travelling along each axis the positive way
+// (negative = 0) or the negative way: 1 from 15 degrees off edge-on, falling linearly to 0
+// edge-on (a ray only ever meets surfaces whose normal is against its travel). A sunlit roof
+// faces no ray travelling up or sideways, so rays in the rooms below cannot see it in a coarse
+// voxel that also holds the ceiling's dark underside; the lit face of a thin wall faces no ray
+// coming from its dark side. A voxel whose normals cancel (both faces of a slab thinner than a
+// voxel, or zero-area triangles) reflects nothing: it faces every ray, dark and opaque.
+vec3 facing(vec3 n, int negative) {
+  if (n == vec3(0.0)) return vec3(1.0);
+  return clamp((negative == 1 ? n : -n) * 3.8637033, 0.0, 1.0);  // 1 / sin 15 deg
+}
+
+// An empty voxel: opacity 0, so nothing faces anything.
+void store(ivec3 c, vec3 radiance, vec3 n, float opacity) {
   for (int negative = 0; negative < 2; ++negative) {
     ivec3 t = voxel_chain_texel(c, voxel.counts.xyz, negative);
-    imageStore(seen_x, t, v);
-    imageStore(seen_y, t, v);
-    imageStore(seen_z, t, v);
+    vec3 f = opacity * facing(n, negative);
+    imageStore(seen_x, t, vec4(radiance * f.x, opacity));
+    imageStore(seen_y, t, vec4(radiance * f.y, opacity));
+    imageStore(seen_z, t, vec4(radiance * f.z, opacity));
+    imageStore(facing_image, t, vec4(f, 1.0));  // alpha unused
   }
 }
 
@@ -54,7 +72,7 @@ void main() {
   uint base = LG_VOXEL_INTS * voxel_index(c);
   int triangles = grid[base + 6u];
   if (triangles <= 0) {
-    store(c, vec4(0.0));
+    store(c, vec3(0.0), vec3(0.0), 0.0);
     return;
   }
   float to_unit = 1.0 / (float(triangles) * kVoxelUnit);
@@ -63,12 +81,12 @@ void main() {
   vec3 l = voxel.light.xyz;
   float len = length(n);
   vec3 radiance = vec3(0.0);
+  n = len > 1e-3 ? n / len : vec3(0.0);
   if (len > 1e-3 && voxel.light.w > 0.0) {
-    n /= len;
     float cosine = max(0.0, -dot(n, l));
     vec3 centre = voxel.origin_cell.xyz + (vec3(c) + 0.5) * voxel.origin_cell.w;
     float v = cosine > 0.0 ? visibility(centre + n * voxel.origin_cell.w) : 0.0;
     radiance = albedo * voxel.irradiance.rgb * (cosine * v / LG_PI);
   }
-  store(c, vec4(clamp(finite_or_zero(radiance), 0.0, 65504.0), 1.0));
+  store(c, clamp(finite_or_zero(radiance), 0.0, 65504.0), n, 1.0);
 }
