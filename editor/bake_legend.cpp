@@ -41,10 +41,14 @@ BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::stri
   if (h.mode != mode)
     throw BakeFileError(path + ": a " + bake_mode_name(h.mode) + " bake, expected a " + bake_mode_name(mode) +
                         " bake; " + hint);
-  if (h.chunk_count != 1)
-    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
-                        " of a bake; merge the chunks first (lumagraph bake merge)");
+  require_whole(path, h.chunk_index, h.chunk_count, "a bake");
   return file;
+}
+
+void require_whole(const std::string& path, uint32_t chunk_index, uint32_t chunk_count, const char* what) {
+  if (chunk_count != 1)
+    throw BakeFileError(path + ": chunk " + std::to_string(chunk_index) + " of " + std::to_string(chunk_count) + " of " +
+                        what + "; merge the chunks first (lumagraph bake merge)");
 }
 
 WorldMesh load_baked_mesh(const std::string& mesh_path, const std::string& bake_path, uint64_t input_hash,
@@ -110,6 +114,17 @@ MaskedVisibility mask_visibility(vtkDataArray* visibility, vtkDataArray* valid) 
   return masked;
 }
 
+vtkSmartPointer<vtkLookupTable> table_of(vtkColorTransferFunction* ramp) {
+  auto lut = vtkSmartPointer<vtkLookupTable>::New();
+  lut->SetNumberOfTableValues(256);
+  for (int i = 0; i < 256; ++i) {
+    double rgb[3];
+    ramp->GetColor(i / 255.0, rgb);
+    lut->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1);
+  }
+  return lut;
+}
+
 // Viridis at five stops: perceptually even, readable in grey, and distinct from the grey mask.
 vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range) {
   vtkNew<vtkColorTransferFunction> ramp;
@@ -119,13 +134,7 @@ vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range) 
                               {0.369, 0.789, 0.383},
                               {0.993, 0.906, 0.144}};
   for (int i = 0; i < 5; ++i) ramp->AddRGBPoint(i / 4.0, stops[i][0], stops[i][1], stops[i][2]);
-  auto lut = vtkSmartPointer<vtkLookupTable>::New();
-  lut->SetNumberOfTableValues(256);
-  for (int i = 0; i < 256; ++i) {
-    double rgb[3];
-    ramp->GetColor(i / 255.0, rgb);
-    lut->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1);
-  }
+  const vtkSmartPointer<vtkLookupTable> lut = table_of(ramp);
   // A constant bake (an empty scene) still needs a range the colour map can span.
   lut->SetRange(range[0], std::max(range[1], range[0] + 1e-6));
   lut->SetNanColor(0.55, 0.55, 0.55, 1);

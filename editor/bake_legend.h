@@ -14,6 +14,7 @@ class vtkDataArray;
 class vtkFloatArray;
 class vtkLookupTable;
 class vtkActor;
+class vtkColorTransferFunction;
 class vtkMapper;
 class vtkPolyData;
 class vtkRenderer;
@@ -28,6 +29,10 @@ enum class BakeMode;
 // missing, damaged, a chunk of a bake, or a bake of another mode than `mode` (`hint` then says
 // how to open it).
 BakeFile read_whole_bake(const std::string& path, BakeMode mode, const std::string& hint);
+
+// Throws BakeFileError naming `path` when it holds one chunk of a bake (`what`: "a bake", "a
+// probe bake"), which has to be merged first.
+void require_whole(const std::string& path, uint32_t chunk_index, uint32_t chunk_count, const char* what);
 
 // The world mesh of the mesh or scene file `mesh_path` (loaded as `lumagraph bake` loads it), checked against the
 // geometry a per-vertex bake at `bake_path` was made from; throws BakeFileError naming the file that is missing,
@@ -52,6 +57,8 @@ struct MaskedVisibility {
 };
 MaskedVisibility mask_visibility(vtkDataArray* visibility, vtkDataArray* valid);
 
+// 256 colours of `ramp` over [0, 1], for a lookup table.
+vtkSmartPointer<vtkLookupTable> table_of(vtkColorTransferFunction* ramp);
 // Viridis over `range`, NaN grey.
 vtkSmartPointer<vtkLookupTable> visibility_colours(std::array<double, 2> range);
 // Adds an unlit actor for `mapper` coloured by `lut` over its range: unlit so that a colour on

@@ -76,9 +76,7 @@ ProbeBake load_probe_bake(const std::string& path) {
   bake.path = path;
   bake.file = read_probe_file(path);
   const ProbeFileHeader& h = bake.file.header;
-  if (h.chunk_count != 1)
-    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
-                        " of a probe bake; merge the chunks first (lumagraph bake merge)");
+  require_whole(path, h.chunk_index, h.chunk_count, "a probe bake");
   bake.grids = probe_grids(bake.file);
   return bake;
 }

@@ -54,13 +54,7 @@ vtkSmartPointer<vtkLookupTable> signed_colours(double magnitude) {
   ramp->AddRGBPoint(0.0, 0.23, 0.30, 0.75);
   ramp->AddRGBPoint(0.5, 0.87, 0.87, 0.87);
   ramp->AddRGBPoint(1.0, 0.71, 0.02, 0.15);
-  auto lut = vtkSmartPointer<vtkLookupTable>::New();
-  lut->SetNumberOfTableValues(256);
-  for (int i = 0; i < 256; ++i) {
-    double rgb[3];
-    ramp->GetColor(i / 255.0, rgb);
-    lut->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1);
-  }
+  const vtkSmartPointer<vtkLookupTable> lut = table_of(ramp);
   const double m = std::max(magnitude, 1e-6);
   lut->SetRange(-m, m);
   return lut;
@@ -75,9 +69,7 @@ PrtBake load_prt_bake(const std::string& path, const std::string& mesh_path) {
   bake.mesh_path = mesh_path;
   bake.file = read_prt_file(path);
   const PrtFileHeader& h = bake.file.header;
-  if (h.chunk_count != 1)
-    throw BakeFileError(path + ": chunk " + std::to_string(h.chunk_index) + " of " + std::to_string(h.chunk_count) +
-                        " of a bake; merge the chunks first (lumagraph bake merge)");
+  require_whole(path, h.chunk_index, h.chunk_count, "a PRT bake");
   bake.mesh = load_baked_mesh(mesh_path, path, h.input_hash, h.vertices);
   return bake;
 }
