@@ -19,10 +19,15 @@ layout(binding = 2, rgba16f) uniform writeonly image2D blurred;
 const float GOLDEN_ANGLE = 2.39996323;
 
 // The taps a circle of radius R covers, each weighing clamp(R + 1 - r, 0, 1) at its distance r
-// (a one-pixel ramp at the edge): the taps' density N / (pi M^2) times the ramp's integral over
-// the plane, pi (R^2 + R + 1/3).
+// (a one-pixel ramp at the edge): the pixel's own, and the spiral's density N / (pi M^2) times
+// the ramp's integral over the plane, pi (R^2 + R + 1/3). With few taps against the circle the
+// pixel's own dominates, and the blur fades to the sharp image rather than to gaps.
 float taps_covered(float radius) {
-  return float(samples) * (radius * radius + radius + 1.0 / 3.0) / (max_blur * max_blur);
+  return 1.0 + float(samples) * (radius * radius + radius + 1.0 / 3.0) / (max_blur * max_blur);
+}
+
+bool finite(vec3 c) {
+  return !any(isnan(c)) && !any(isinf(c));
 }
 
 void main() {
@@ -30,7 +35,9 @@ void main() {
   ivec2 size = imageSize(blurred);
   if (any(greaterThanEqual(texel, size))) return;
   float centre = texelFetch(coc, texel, 0).r;
-  vec4 nearer = vec4(0.0), rest = vec4(0.0);
+  vec3 own = texelFetch(scene_color, texel, 0).rgb;
+  vec4 nearer = vec4(0.0);
+  vec4 rest = finite(own) ? vec4(own, 1.0) * defocus_blend(abs(centre)) / taps_covered(abs(centre)) : vec4(0.0);
   for (uint i = 0u; i < samples; ++i) {
     // Vogel's spiral: evenly spread taps over the disc for any count.
     float r = sqrt((float(i) + 0.5) / float(samples)) * max_blur;
@@ -41,7 +48,7 @@ void main() {
     vec3 c = texelFetch(scene_color, tap, 0).rgb;
     float tap_coc = texelFetch(coc, tap, 0).r;
     float spread = abs(tap_coc);
-    float w = any(isnan(c)) || any(isinf(c)) ? 0.0 : defocus_blend(spread);
+    float w = finite(c) ? defocus_blend(spread) : 0.0;
     if (tap_coc < centre - 1.0) {
       // Nearer by over a pixel of blur: spreads fully over this pixel.
       nearer += vec4(c, 1.0) * w * clamp(spread - r + 1.0, 0.0, 1.0) / taps_covered(spread);
