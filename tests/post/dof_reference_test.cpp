@@ -199,8 +199,8 @@ TEST_F(DofReference, DofLeavesTheFocusPlaneUnchanged) {
 }
 
 // A defocused sphere over the sky spreads about as wide as in the reference: its radius to
-// within 1 px, the gather's one-pixel ramp at the circle's edge (measured +0.69 px near,
-// +0.60 px far).
+// within 1 px, the gather's one-pixel ramp at the circle's edge (measured +0.61 px near,
+// +0.49 px far).
 TEST_F(DofReference, DofSpreadsADefocusedSphereAsWideAsTheReference) {
   for (const Sphere& s : {kNear, kFar}) {
     const Blob dof = blob(dof_, s), reference = blob(reference_, s);
@@ -216,7 +216,7 @@ TEST_F(DofReference, DofSpreadsADefocusedSphereAsWideAsTheReference) {
 // post.dof is given, not the reference: the pinhole frame rasterizes the 1.5-pixel spheres 15%
 // smaller than their box-filtered area). What is left is the taps' count under a circle taken
 // from its area (pi (R^2 + R + 1/3) at the taps' density) where 64 discrete taps stand: measured
-// 0.9997 near and 1.0007 far; 1.5% is the bound. (Before, with the taps normalised over the
+// 0.9998 near and 1.0005 far; 1.5% is the bound. (Before, with the taps normalised over the
 // sky's wider circle: 1.055 near, 0.66 far.)
 TEST_F(DofReference, DofKeepsADefocusedSpheresEnergy) {
   for (const Sphere& s : {kNear, kFar}) {
