@@ -39,6 +39,7 @@ struct SizeRule {
   std::array<uint32_t, 2> fixed{1, 1};
   double scale = 1;
   int scale_param = -1;
+  bool only_when_scaled = false;  // a 1x1 placeholder (bound, never used) while scale_param is 1
   enum class Mips : uint8_t { one, full, param, fixed } mips = Mips::one;
   int mips_param = -1;
   uint32_t mips_fixed = 1;

@@ -202,7 +202,8 @@ class SchemaReader {
   }
 
   PortSpec port(const JsonValue& v, const std::string& p, bool is_input) {
-    check_keys(v, p, {"name", "type", "doc", "optional", "history", "extent", "scale", "mips", "sh_order"});
+    check_keys(v, p, {"name", "type", "doc", "optional", "history", "extent", "scale", "only_when_scaled", "mips",
+                       "sh_order"});
     PortSpec spec;
     spec.name = string_at(v, p, "name", true);
     spec.doc = string_at(v, p, "doc", true);
@@ -265,6 +266,10 @@ class SchemaReader {
       else if (is_ref(*s, "param:")) r.scale_param = param_ref(*s, json_pointer_append(p, "scale"));
       else d_.error(s->pos(), json_pointer_append(p, "scale"), "expected a number or \"param:NAME\"");
     }
+    r.only_when_scaled = bool_at(v, p, "only_when_scaled");
+    if (r.only_when_scaled && r.scale_param < 0)
+      d_.error(v.find("only_when_scaled")->pos(), json_pointer_append(p, "only_when_scaled"),
+               "needs \"scale\": \"param:NAME\" (the param whose value 1 leaves the resource unused)");
     if (const JsonValue* m = v.find("mips")) {
       if (m->is_string() && m->as_string() == "full") {
         r.mips = SizeRule::Mips::full;

@@ -209,6 +209,7 @@ class Lowerer {
     double scale = rule.scale_param >= 0 ? number_param(n, rule.scale_param).value_or(1) : rule.scale;
     res.width = texels(w * scale);
     res.height = texels(h * scale);
+    if (rule.only_when_scaled && scale >= 1) res.width = res.height = 1;
     res.layers = res.kind == ResourceKind::cube ? 6 : 1;
     uint32_t full = full_mip_count(res.width, res.height);
     switch (rule.mips) {

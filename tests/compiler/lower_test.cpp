@@ -165,6 +165,24 @@ TEST(CompilerLower, FrameSizeChangesFrameSizedResourcesOnly) {
   EXPECT_EQ(small.frame.width, 640u);
 }
 
+// occlusion.gtao's upsample guide (surface, ao_guide, bent_low) is used only below
+// resolution_scale 1: "only_when_scaled" makes it a 1x1 placeholder at 1 (it took 8.8 MiB at
+// 1280x720 unused) and sizes it by the scale below 1.
+TEST(CompilerLower, AResourceOnlyUsedWhenScaledIsAPlaceholderAtScaleOne) {
+  for (double scale : {1.0, 0.5}) {
+    SCOPED_TRACE("resolution_scale " + std::to_string(scale));
+    Graph g = load_example("examples/default.json");
+    test::node_named(g, "gtao").params.set("resolution_scale", scale);
+    Plan plan = compile_ok(g, builtin_registry(), at(1280, 720));
+    const uint32_t w = scale < 1 ? 640 : 1, h = scale < 1 ? 360 : 1;
+    for (const char* name : {"gtao/surface", "gtao/ao_guide", "gtao/bent_low"}) {
+      EXPECT_EQ(resource(plan, name).width, w) << name;
+      EXPECT_EQ(resource(plan, name).height, h) << name;
+    }
+    EXPECT_EQ(resource(plan, "gtao/noisy").width, uint32_t(1280 * scale));  // the horizon grid, either way
+  }
+}
+
 TEST(CompilerLower, AnExtentBeyondTheLimitIsAnError) {
   Graph g = load_example("examples/minimal.json");
   test::node_named(g, "gbuf").params.set("resolution_scale", 2.0);

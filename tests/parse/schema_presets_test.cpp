@@ -81,5 +81,20 @@ TEST(SchemaPresets, TheBuiltInNodesWithAQualityKnobHavePresets) {
   }
 }
 
+// "only_when_scaled" reads the value of the resource's scale param, so a fixed scale or none is
+// refused where the key is.
+TEST(SchemaResources, OnlyWhenScaledNeedsAScaleParam) {
+  Diagnostics d("scaled.json");
+  EXPECT_FALSE(read_node_schema(R"({ "type": "test.scaled", "doc": "A node.",
+  "params": [ { "name": "scale", "type": "float", "default": 1, "min": 0.25, "max": 1, "doc": "Scale." } ],
+  "resources": [ { "name": "guide", "type": "texture2d:hdr", "scale": 0.5, "only_when_scaled": true, "doc": "." } ],
+  "passes": [ { "name": "run", "queue": "compute", "uses": {} } ] })",
+                                d));
+  const std::string text = d.to_string();
+  EXPECT_NE(text.find("scaled.json:3:"), std::string::npos) << text;
+  EXPECT_NE(text.find("/resources/0/only_when_scaled"), std::string::npos) << text;
+  EXPECT_NE(text.find("needs \"scale\": \"param:NAME\""), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace lg

@@ -73,11 +73,21 @@ float upsample_bilinear(int t, vec2 f) {
   return b.x * b.y;
 }
 
+// How alike in normal each tap's surface is to one with normal n (unnormalized, as the guide's):
+// cos^8 of the angle between them.
+vec4 upsample_facing(UpsampleGuide guide, vec3 n) {
+  vec4 facing;
+  for (int t = 0; t < 4; ++t) facing[t] = max(dot(n, guide.normal[t]), 0.0);
+  facing *= facing;
+  facing *= facing;
+  return facing * facing;
+}
+
 // The weights of the four taps (summing to 1) for the pixel at fraction `f` (in [0, 1)) of the
-// way from tap 0 toward tap 3, with G-buffer depth `depth` (> 0) and normal n (unnormalized, as
-// the guide's); all 0 where every tap is sky. Callers that upsample several images at once
-// apply one set of weights to each.
-vec4 upsample_weights(UpsampleGuide guide, float depth, vec3 n, vec2 f) {
+// way from tap 0 toward tap 3, with G-buffer depth `depth` (> 0) and the taps' likeness in
+// normal `facing` (upsample_facing; all 1 to weigh by depth alone); all 0 where every tap is
+// sky. Callers that upsample several images at once apply one set of weights to each.
+vec4 upsample_weights_facing(UpsampleGuide guide, float depth, vec4 facing, vec2 f) {
   vec4 weights = vec4(0.0);
   float total = 0.0, best_rank = 0.0;
   int best = -1;
@@ -85,10 +95,7 @@ vec4 upsample_weights(UpsampleGuide guide, float depth, vec3 n, vec2 f) {
     if (guide.depth[t] <= 0.0) continue;
     float q = abs(guide.depth[t] - depth) * guide.distance_scale[t];
     float near = 1.0 / (1.0 + q * q);
-    float facing = max(dot(n, guide.normal[t]), 0.0);
-    facing *= facing;
-    facing *= facing;
-    float alike = near * near * facing * facing;
+    float alike = near * near * facing[t];
     float rank = alike + 1e-6 * near;  // faces turned away still rank by distance
     if (rank > best_rank) {
       best_rank = rank;
@@ -102,6 +109,11 @@ vec4 upsample_weights(UpsampleGuide guide, float depth, vec3 n, vec2 f) {
   vec4 one_hot = vec4(0.0);
   if (best >= 0) one_hot[best] = 1.0;
   return one_hot;
+}
+
+// The same, alike in view distance and normal n (unnormalized, as the guide's).
+vec4 upsample_weights(UpsampleGuide guide, float depth, vec3 n, vec2 f) {
+  return upsample_weights_facing(guide, depth, upsample_facing(guide, n), f);
 }
 
 struct UpsampleTaps {

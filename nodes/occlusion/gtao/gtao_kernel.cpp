@@ -93,10 +93,19 @@ class GtaoKernel final : public NodeKernel {
     const float stretch = 1.0f + 0.5f * std::min(1.0f, radius_ / (4.0f * std::max(thickness_, 1e-4f)));
     c.search = glm::vec4(radius_, 0.5f * h * std::abs(p[1][1]), stretch, 0.25f * std::max(w, h));
     c.counts[2] = uint32_t(ctx.frame_index());
-    // Not the cleared history of the first frame (it would read as full occlusion), nor after a cut.
-    c.counts[3] = history_usable(ctx, "in.history") ? 1u : 0u;
+    c.counts[3] = 0;  // the denoiser's pass says whether the history is usable (use_history)
     c.blend = glm::vec4(temporal_blend_, camera.near_plane, float(k_), 0.0f);
     constants_->write_value(c);
+    written_ = c;
+  }
+
+  // Not the cleared history of the first frame (it would read as full occlusion), nor after a cut.
+  // Only a pass that uses in.history sees it (PassContext::has is per pass): when the first pass
+  // wrote the constants, the history was never blended (found by gtao_history_test.cpp). The
+  // constants are read when the frame runs, after every pass is recorded.
+  void use_history(PassContext& ctx) {
+    written_.counts[3] = history_usable(ctx, "in.history") ? 1u : 0u;
+    constants_->write_value(written_);
   }
 
   void prefilter(PassContext& ctx) {
@@ -137,6 +146,7 @@ class GtaoKernel final : public NodeKernel {
   // From noisy into out.ao at resolution_scale 1, else from surface into ao_guide.
   void denoise(PassContext& ctx) {
     write_constants(ctx, ctx.image("in.gbuffer", 4));
+    use_history(ctx);
     Image& noisy = ctx.image(full_resolution() ? "tmp.noisy" : "tmp.surface");
     Image& history = ctx.has("in.history") ? ctx.image("in.history") : noisy;
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
@@ -159,7 +169,6 @@ class GtaoKernel final : public NodeKernel {
     const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
                                       sampled_image(1, ctx.image("tmp.bent_low").view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
-                                      sampled_image(3, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
                                       storage_image(4, ctx.image("out.ao").view()),
                                       storage_image(5, ctx.image("out.bent_normals").view())};
     dispatch_compute(ctx, "nodes/occlusion/gtao/shaders/upsample.comp", writes, low.desc().width, low.desc().height,
@@ -170,6 +179,7 @@ class GtaoKernel final : public NodeKernel {
   float radius_, thickness_, temporal_blend_;
   int32_t k_;  // 1 / resolution_scale: the G-buffer's resolution over the horizon grid's
   std::optional<HostBuffer> constants_;
+  Constants written_{};
   uint64_t written_frame_ = ~uint64_t{0};
 };
 

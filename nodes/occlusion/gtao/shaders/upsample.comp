@@ -2,9 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 // occlusion.gtao's upsample at resolution_scale 1/k below 1: the denoised, accumulated occlusion
 // and the bent normals of the horizon grid brought back to the G-buffer's resolution, both with
-// one set of depth- and normal-guided weights (joint_upsample.glsl), so occlusion does not leak
-// across a silhouette. One invocation per grid texel writes its block of k x k pixels. The
-// guide's surfaces come with the occlusion (ao_guide.glsl): two fetches a tap, not four.
+// one set of depth-guided weights (joint_upsample.glsl), so occlusion does not leak across a
+// silhouette. One invocation per grid texel writes its block of k x k pixels. The guide's
+// surfaces come with the occlusion (ao_guide.glsl): two fetches a tap, not four. Each pixel
+// fetches its depth only: its G-buffer normal (rgb10a2, the dearest fetch measured) weighed
+// creases that depth already separates but for a few pixels along them, and occlusion changes
+// smoothly across a crease.
 #include "nodes/common/shaders/joint_upsample.glsl"
 #include "nodes/occlusion/gtao/shaders/ao_guide.glsl"
 
@@ -13,7 +16,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D ao_guide;
 layout(binding = 1) uniform sampler2D bent_low;
 layout(binding = 2) uniform sampler2D depth_tex;
-layout(binding = 3) uniform sampler2D normal_tex;
 layout(binding = 4, r8) uniform writeonly image2D ao;
 layout(binding = 5, rgba8_snorm) uniform writeonly image2D bent_normals;
 layout(push_constant) uniform Push {
@@ -51,20 +53,17 @@ void main() {
     ivec2 texel = origin + ivec2(i % width, i / width);
     float depth = texelFetch(depth_tex, texel, 0).r;
     // The sky, and a surface whose taps are all sky (thinner than k pixels against it), are
-    // unoccluded, as horizons.comp writes the sky.
+    // unoccluded, as horizons.comp writes the sky, with no cone (the open hemisphere to
+    // lighting.ibl). Where the taps' cones cancel, their surfaces' normals stand in.
     float visibility = 1.0;
     vec4 cone = vec4(0.0);
-    if (depth > 0.0) {
-      vec3 stored = texelFetch(normal_tex, texel, 0).rgb;
-      vec4 w = upsample_weights(guide, depth, decode_normal_unnormalized(stored), upsample_fraction(texel, low, k));
-      if (dot(w, vec4(1.0)) > 0.0) {
-        visibility = dot(w, occlusion);
-        cone = w.x * bent[0] + w.y * bent[1] + w.z * bent[2] + w.w * bent[3];
-        float length_xyz = length(cone.xyz);
-        cone.xyz = length_xyz > 1e-6 ? cone.xyz / length_xyz : decode_normal(stored);
-      } else {
-        cone = vec4(decode_normal(stored), 0.0);
-      }
+    vec4 w = depth > 0.0 ? upsample_weights_facing(guide, depth, vec4(1.0), upsample_fraction(texel, low, k)) : vec4(0.0);
+    if (dot(w, vec4(1.0)) > 0.0) {
+      visibility = dot(w, occlusion);
+      cone = w.x * bent[0] + w.y * bent[1] + w.z * bent[2] + w.w * bent[3];
+      vec3 surface = w.x * guide.normal[0] + w.y * guide.normal[1] + w.z * guide.normal[2] + w.w * guide.normal[3];
+      float length_xyz = length(cone.xyz), length_surface = length(surface);
+      cone.xyz = length_xyz > 1e-6 ? cone.xyz / length_xyz : (length_surface > 1e-6 ? surface / length_surface : vec3(0.0));
     }
     imageStore(ao, texel, vec4(visibility));
     imageStore(bent_normals, texel, cone);
