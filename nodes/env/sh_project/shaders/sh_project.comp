@@ -8,7 +8,7 @@
 // Each invocation sums kBlockTexels / 32 texels in registers and the block's 32 lanes are added
 // once: on lavapipe every barrier costs a pass over the workgroup, and a tree per coefficient
 // (9 barriers each, 25 coefficients) cost most of the time. 64 texels an invocation stay well
-// inside lavapipe's 65535 loop iterations an invocation (about 340 a texel); 32 lanes keep the
+// inside lavapipe's 65535 loop iterations an invocation (about 110 a texel); 32 lanes keep the
 // lanes' sums in 9.6 KB of shared memory (Vulkan guarantees 16 KB). Only the coefficients up to
 // the order are summed. Non-finite texels count as 0 and are counted.
 #include "nodes/env/common/shaders/cube_map.glsl"
