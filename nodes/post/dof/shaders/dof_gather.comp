@@ -46,9 +46,11 @@ void main() {
     // spread an in-focus edge's light by its blurred neighbour's circle.
     ivec2 tap = clamp(texel + ivec2(floor(vec2(cos(a), sin(a)) * r + 0.5)), ivec2(0), size - 1);
     vec3 c = texelFetch(scene_color, tap, 0).rgb;
+    // A bad texel lends nothing (skipped: a zero weight times Inf or NaN is NaN).
+    if (!finite(c)) continue;
     float tap_coc = texelFetch(coc, tap, 0).r;
     float spread = abs(tap_coc);
-    float w = finite(c) ? defocus_blend(spread) : 0.0;
+    float w = defocus_blend(spread);
     if (tap_coc < centre - 1.0) {
       // Nearer by over a pixel of blur: spreads fully over this pixel.
       nearer += vec4(c, 1.0) * w * clamp(spread - r + 1.0, 0.0, 1.0) / taps_covered(spread);
