@@ -85,7 +85,8 @@ ExposureHarness::ExposureHarness(Context& context, std::string_view graph_json, 
     : image_(std::make_shared<HostImage>(std::move(image))), kernels_(builtin_kernels()), gpu_scene_(context) {
   kernels_.add("test.image", [image = image_](const PlanNode&) { return std::make_unique<ImageKernel>(image); });
   executor_ = std::make_unique<Executor>(
-      context, kernels_, compile_graph(context, graph_json, frame.value_or(FrameSize{image_->width, image_->height}), scene));
+      context, kernels_,
+      compile_graph(context, graph_json, frame.value_or(FrameSize{image_->width, image_->height}), scene));
 }
 
 FrameStats ExposureHarness::run_frame() {
