@@ -3,7 +3,8 @@
 //   it (an integral over the face), the open floor next to nothing and no occlusion, the corner
 //   some; with the face dark, next to nothing; with the sun at zero, exactly zero;
 // - a closed room lit from outside: the known leak through its ceiling stays below its bound;
-// - the frame after the sun turns and the wall moves equals a fresh renderer's;
+// - the frame after the sun turns and the wall moves equals a fresh renderer's, and so does the
+//   frame after a draw changes only its mesh;
 // - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
 //   every output finite, validation clean;
 // - a scene without a directional light drops the node from examples/gi-voxel.json, with the
@@ -289,6 +290,43 @@ TEST(Voxel, KeepsItsVolumeUntilTheSceneChanges) {
   EXPECT_GT(largest, 0.0);
   EXPECT_LE(worst, 2e-3 * largest);
   expect_no_validation_messages(renderer->context());
+}
+
+// A draw that changes only its mesh changes the volume: a 1 m block on the floor becomes a 10 cm
+// one (both meshes added before the first frame, so the scene's version, the block's transform
+// and material and the grid over the wall and floor all stay the same). The next frame equals a
+// fresh renderer's frame of the changed scene (1e-3 of the largest value, as above); a volume kept
+// from the first frame still holds the big block, its lit faces and its shadow.
+TEST(Voxel, RebuildsWhenADrawChangesItsMesh) {
+  World world = floor_and_wall(kSunFromTheEast, 10.0f);
+  const int small = world.add_mesh(make_box(glm::vec3(0.1f)));
+  Entity block = world.create("block");
+  world.add(block, MeshRenderer{world.add_mesh(make_box(glm::vec3(1.0f))), 0});
+  world.add(block, Transform{}).position = {0.5f, 0.5f, 0.0f};
+  const Graph graph = voxel_graph(32, 1.0);
+  auto renderer = make_renderer(graph);
+  renderer->render(world, kFrame);
+  const std::vector<float> before = renderer->executor().read_image("voxel.irradiance");
+  world.get<MeshRenderer>(block).mesh = small;
+  renderer->render(world, kFrame);
+  const std::vector<float> swapped = renderer->executor().read_image("voxel.irradiance");
+  auto fresh = make_renderer(graph);
+  fresh->render(world, kFrame);
+  const std::vector<float> expected = fresh->executor().read_image("voxel.irradiance");
+
+  ASSERT_EQ(swapped.size(), expected.size());
+  double largest = 0, worst = 0, change = 0;
+  for (size_t i = 0; i < expected.size(); ++i)
+    if (i % 4 != 3) {
+      largest = std::max(largest, double(std::abs(expected[i])));
+      worst = std::max(worst, double(std::abs(swapped[i] - expected[i])));
+      change += std::abs(expected[i] - before[i]);
+    }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_GT(change, 0.0);  // the smaller block does change the frame
+  EXPECT_LE(worst, 1e-3 * largest);
+  expect_no_validation_messages(renderer->context());
+  expect_no_validation_messages(fresh->context());
 }
 
 // A 4 x 4 m roof tilted 30 degrees over a floor, drawn as two triangles and as 4 x 4 tiles of two,

@@ -64,11 +64,12 @@ const Registry& registry_with_image() {
   return registry;
 }
 
-Plan compile_graph(const Context& context, std::string_view graph_json, FrameSize frame) {
+Plan compile_graph(const Context& context, std::string_view graph_json, FrameSize frame, const SceneSummary& scene) {
   Diagnostics d("exposure test graph");
   std::optional<Graph> graph = parse_graph_text(graph_json, d);
   if (!graph) throw std::invalid_argument(d.to_string());
   CompileOptions options;
+  options.scene = scene;
   options.frame = frame;
   options.alias = device_alias_options(context);
   options.alias.enabled = false;
@@ -80,11 +81,12 @@ Plan compile_graph(const Context& context, std::string_view graph_json, FrameSiz
 }  // namespace
 
 ExposureHarness::ExposureHarness(Context& context, std::string_view graph_json, HostImage image,
-                                 std::optional<FrameSize> frame)
+                                 std::optional<FrameSize> frame, const SceneSummary& scene)
     : image_(std::make_shared<HostImage>(std::move(image))), kernels_(builtin_kernels()), gpu_scene_(context) {
   kernels_.add("test.image", [image = image_](const PlanNode&) { return std::make_unique<ImageKernel>(image); });
   executor_ = std::make_unique<Executor>(
-      context, kernels_, compile_graph(context, graph_json, frame.value_or(FrameSize{image_->width, image_->height})));
+      context, kernels_,
+      compile_graph(context, graph_json, frame.value_or(FrameSize{image_->width, image_->height}), scene));
 }
 
 FrameStats ExposureHarness::run_frame() {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "graph/compiler.h"
+#include "graph/scene_summary.h"
 #include "runtime/exec/executor.h"
 #include "runtime/exec/frame_stats.h"
 #include "runtime/exec/gpu_scene.h"
@@ -30,9 +31,10 @@ struct HostImage {
 class ExposureHarness {
  public:
   // `graph_json`: a graph file's text that may use "test.image"; the frame is `image`'s size
-  // unless `frame` says (test.image's "scale" param then sizes the image against it).
+  // unless `frame` says (test.image's "scale" param then sizes the image against it). The plan
+  // is compiled for `scene` (the summary decides bypasses: a thin-lens camera for post.dof).
   ExposureHarness(Context& context, std::string_view graph_json, HostImage image,
-                  std::optional<FrameSize> frame = std::nullopt);
+                  std::optional<FrameSize> frame = std::nullopt, const SceneSummary& scene = default_scene_summary());
 
   HostImage& image() { return *image_; }  // change it between frames
   SceneView& scene() { return scene_; }   // frame_seconds, camera_cut

@@ -4,7 +4,6 @@
 #include <array>
 #include <bit>
 #include <cstddef>
-#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <optional>
@@ -103,14 +102,19 @@ class VoxelKernel final : public NodeKernel {
     shadow_from_world_ = c.shadow_from_world;
     const std::vector<DrawConstants> draws = draw_constants(scene);
     // The volume is rebuilt only when what it is made of changed: the grid, the light, the draws
-    // (transforms, materials) or the meshes' contents (scene.version). Anything that moves
+    // (transforms, materials), which mesh each draws (not in DrawConstants: a draw may swap
+    // meshes of the same bounds) or the meshes' contents (scene.version). Anything that moves
     // changes one of those, so the frame it moves in rebuilds, and a static scene pays for the
     // cones alone.
-    std::vector<std::byte> key(sizeof(c) + sizeof(scene.version) + draws.size() * sizeof(DrawConstants));
-    std::memcpy(key.data(), &c, sizeof(c));
-    std::memcpy(key.data() + sizeof(c), &scene.version, sizeof(scene.version));
-    if (!draws.empty())
-      std::memcpy(key.data() + sizeof(c) + sizeof(scene.version), draws.data(), draws.size() * sizeof(DrawConstants));
+    std::vector<std::byte> key;
+    auto append = [&key](const void* data, size_t bytes) {
+      const auto* first = static_cast<const std::byte*>(data);
+      key.insert(key.end(), first, first + bytes);
+    };
+    append(&c, sizeof(c));
+    append(&scene.version, sizeof(scene.version));
+    append(draws.data(), draws.size() * sizeof(DrawConstants));
+    for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
     rebuild_ = images_new_ || key != built_from_;
     built_from_ = std::move(key);
     if (!constants_) {

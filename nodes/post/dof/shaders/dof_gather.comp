@@ -9,6 +9,7 @@
 // composite blends them: a pixel in focus stays in the sharp image and lends no light here.
 #include "nodes/post/dof/shaders/dof_constants.glsl"
 #include "nodes/post/dof/shaders/dof_blend.glsl"
+#include "nodes/common/shaders/finite.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -26,10 +27,6 @@ float taps_covered(float radius) {
   return 1.0 + float(samples) * (radius * radius + radius + 1.0 / 3.0) / (max_blur * max_blur);
 }
 
-bool finite(vec3 c) {
-  return !any(isnan(c)) && !any(isinf(c));
-}
-
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(blurred);
@@ -37,7 +34,7 @@ void main() {
   float centre = texelFetch(coc, texel, 0).r;
   vec3 own = texelFetch(scene_color, texel, 0).rgb;
   vec4 nearer = vec4(0.0);
-  vec4 rest = finite(own) ? vec4(own, 1.0) * defocus_blend(abs(centre)) / taps_covered(abs(centre)) : vec4(0.0);
+  vec4 rest = all_finite(vec4(own, 0.0)) ? vec4(own, 1.0) * defocus_blend(abs(centre)) / taps_covered(abs(centre)) : vec4(0.0);
   for (uint i = 0u; i < samples; ++i) {
     // Vogel's spiral: evenly spread taps over the disc for any count.
     float r = sqrt((float(i) + 0.5) / float(samples)) * max_blur;
@@ -46,9 +43,11 @@ void main() {
     // spread an in-focus edge's light by its blurred neighbour's circle.
     ivec2 tap = clamp(texel + ivec2(floor(vec2(cos(a), sin(a)) * r + 0.5)), ivec2(0), size - 1);
     vec3 c = texelFetch(scene_color, tap, 0).rgb;
+    // A bad texel lends nothing (skipped: a zero weight times Inf or NaN is NaN).
+    if (!all_finite(vec4(c, 0.0))) continue;
     float tap_coc = texelFetch(coc, tap, 0).r;
     float spread = abs(tap_coc);
-    float w = finite(c) ? defocus_blend(spread) : 0.0;
+    float w = defocus_blend(spread);
     if (tap_coc < centre - 1.0) {
       // Nearer by over a pixel of blur: spreads fully over this pixel.
       nearer += vec4(c, 1.0) * w * clamp(spread - r + 1.0, 0.0, 1.0) / taps_covered(spread);
