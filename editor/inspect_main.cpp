@@ -14,10 +14,12 @@
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
 #include <iostream>
+#include <optional>
 
 #include "editor/headless_help.h"
 #include "editor/inspector_widget.h"
 #include "editor/probe_view.h"
+#include "editor/prt_view.h"
 
 int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
@@ -77,8 +79,27 @@ int main(int argc, char** argv) {
     opened = inspector.open_probes(file, args.value(volume).toInt() - 1);
   else
     opened = args.isSet(bake) ? inspector.open_bake(file) : inspector.open_environment(file);
-  if (opened && probes && args.isSet(probe)) inspector.select_probe(args.value(probe).toULongLong());
-  if (opened && prt && args.isSet(vertex)) inspector.select_prt_vertex(args.value(vertex).toULongLong());
+  // --probe and --vertex: an index below the count shown, or an error in the view.
+  auto index_of = [&](const QCommandLineOption& option, size_t count, const QString& what) -> std::optional<size_t> {
+    bool number = false;
+    const qulonglong index = args.value(option).toULongLong(&number);
+    if (number && index < count) return size_t(index);
+    inspector.show_error(QStringLiteral("--%1 %2: expected a %3 from 0 to %4 (the bake has %5)")
+                             .arg(option.names().front(), args.value(option), what)
+                             .arg(qlonglong(count) - 1)
+                             .arg(count));
+    return std::nullopt;
+  };
+  if (opened && probes && args.isSet(probe)) {
+    const std::optional<size_t> index = index_of(probe, inspector.probe_state()->probes, QStringLiteral("probe"));
+    if (index) inspector.select_probe(*index);
+    opened = index.has_value();
+  }
+  if (opened && prt && args.isSet(vertex)) {
+    const std::optional<size_t> index = index_of(vertex, inspector.prt_state()->vertices, QStringLiteral("vertex"));
+    if (index) inspector.select_prt_vertex(*index);
+    opened = index.has_value();
+  }
   (opened ? std::cout : std::cerr) << inspector.summary().toStdString() << "\n";
   if (!args.isSet(screenshot)) return app.exec();
   for (int i = 0; i < 5; ++i) QApplication::processEvents();

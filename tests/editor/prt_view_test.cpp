@@ -120,6 +120,18 @@ TEST(PrtView, RefusesAChunkAnotherMeshAndABakeWithoutItsMesh) {
   const QString err = QString::fromUtf8(inspect.readAllStandardError());
   EXPECT_TRUE(err.contains(whole + ": a PRT bake opens on the mesh or scene it was baked from: add --mesh MESH"))
       << err.toStdString();
+
+  // A vertex the bake does not have is an error, not silently nothing.
+  for (const char* bad : {"999999", "seven"}) {
+    QProcess past;
+    past.start(QStringLiteral(LUMAGRAPH_BINARY_DIR "/lumagraph-inspect"),
+               {"--bake", whole, "--mesh", two_spheres, "--vertex", bad, "--screenshot", png});
+    ASSERT_TRUE(past.waitForFinished(60'000));
+    EXPECT_EQ(past.exitCode(), 2) << bad;
+    const QString said = QString::fromUtf8(past.readAllStandardError());
+    EXPECT_TRUE(said.contains(QStringLiteral("--vertex %1: expected a vertex from 0 to 2449 (the bake has 2450)").arg(bad)))
+        << said.toStdString();
+  }
 }
 
 }  // namespace
