@@ -84,9 +84,10 @@ int main(int argc, char** argv) {
     bool number = false;
     const qulonglong index = args.value(option).toULongLong(&number);
     if (number && index < count) return size_t(index);
-    inspector.show_error(QStringLiteral("--%1 %2: expected a %3 from 0 to %4 (the bake has %5)")
+    inspector.show_error(QStringLiteral("--%1 %2: expected a %3 from 0 to %4 (%5 has %6)")
                              .arg(option.names().front(), args.value(option), what)
                              .arg(qlonglong(count) - 1)
+                             .arg(file)
                              .arg(count));
     return std::nullopt;
   };

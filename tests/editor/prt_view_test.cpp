@@ -129,7 +129,7 @@ TEST(PrtView, RefusesAChunkAnotherMeshAndABakeWithoutItsMesh) {
     ASSERT_TRUE(past.waitForFinished(60'000));
     EXPECT_EQ(past.exitCode(), 2) << bad;
     const QString said = QString::fromUtf8(past.readAllStandardError());
-    EXPECT_TRUE(said.contains(QStringLiteral("--vertex %1: expected a vertex from 0 to 2449 (the bake has 2450)").arg(bad)))
+    EXPECT_TRUE(said.contains(QStringLiteral("--vertex %1: expected a vertex from 0 to 2449 (%2 has 2450)").arg(bad, whole)))
         << said.toStdString();
   }
 }
