@@ -30,10 +30,11 @@ class SchemaReader {
         ordering(params->items()[k], json_pointer_append("/params", k));
     static_unless(root);
     each(root, "presets", [&](const JsonValue& v, const std::string& p) { preset(v, p); });
-    each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, true)); });
+    each(root, "inputs", [&](const JsonValue& v, const std::string& p) { s_.inputs.push_back(port(v, p, Role::input)); });
     camera_jitter(root);
-    each(root, "outputs", [&](const JsonValue& v, const std::string& p) { s_.outputs.push_back(port(v, p, false)); });
-    each(root, "resources", [&](const JsonValue& v, const std::string& p) { s_.resources.push_back(port(v, p, false)); });
+    each(root, "outputs", [&](const JsonValue& v, const std::string& p) { s_.outputs.push_back(port(v, p, Role::output)); });
+    each(root, "resources",
+         [&](const JsonValue& v, const std::string& p) { s_.resources.push_back(port(v, p, Role::resource)); });
     each(root, "passes", [&](const JsonValue& v, const std::string& p) { pass(v, p); });
     each(root, "bypass", [&](const JsonValue& v, const std::string& p) { bypass(v, p); });
     each(root, "requires", [&](const JsonValue& v, const std::string& p) { requirement(v, p); });
@@ -201,7 +202,10 @@ class SchemaReader {
     s_.presets.push_back(std::move(preset));
   }
 
-  PortSpec port(const JsonValue& v, const std::string& p, bool is_input) {
+  enum class Role { input, output, resource };
+
+  PortSpec port(const JsonValue& v, const std::string& p, Role role) {
+    const bool is_input = role == Role::input;
     check_keys(v, p, {"name", "type", "doc", "optional", "history", "extent", "scale", "only_when_scaled", "mips",
                        "sh_order"});
     PortSpec spec;
@@ -214,6 +218,10 @@ class SchemaReader {
     spec.optional = bool_at(v, p, "optional");
     spec.history = bool_at(v, p, "history");
     if (!is_input) size_rule(v, p, spec.size);
+    // A placeholder is for what the node alone reads: an output would hand its consumers a 1x1 image.
+    if (const JsonValue* placeholder = v.find("only_when_scaled"); placeholder && role != Role::resource)
+      d_.error(placeholder->pos(), json_pointer_append(p, "only_when_scaled"),
+               "only a resource can be a placeholder at scale 1, not an input or an output");
     return spec;
   }
 

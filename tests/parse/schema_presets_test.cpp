@@ -96,5 +96,19 @@ TEST(SchemaResources, OnlyWhenScaledNeedsAScaleParam) {
   EXPECT_NE(text.find("needs \"scale\": \"param:NAME\""), std::string::npos) << text;
 }
 
+// An output fed to other nodes must have its real size: "only_when_scaled" is a resource's key.
+TEST(SchemaResources, OnlyWhenScaledIsRefusedOnAnOutput) {
+  Diagnostics d("scaled.json");
+  EXPECT_FALSE(read_node_schema(R"({ "type": "test.scaled", "doc": "A node.",
+  "params": [ { "name": "scale", "type": "float", "default": 1, "min": 0.25, "max": 1, "doc": "Scale." } ],
+  "outputs": [ { "name": "guide", "type": "texture2d:hdr", "scale": "param:scale", "only_when_scaled": true, "doc": "." } ],
+  "passes": [ { "name": "run", "queue": "compute", "uses": {} } ] })",
+                                d));
+  const std::string text = d.to_string();
+  EXPECT_NE(text.find("scaled.json:3:"), std::string::npos) << text;
+  EXPECT_NE(text.find("/outputs/0/only_when_scaled"), std::string::npos) << text;
+  EXPECT_NE(text.find("only a resource can be a placeholder at scale 1"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace lg
