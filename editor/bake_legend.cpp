@@ -189,6 +189,13 @@ vtkSmartPointer<vtkActor> add_visibility_actor(vtkRenderer* renderer, vtkMapper*
   return actor;
 }
 
+std::array<double, 2> display_point_of(vtkRenderer* renderer, double x, double y, double z) {
+  renderer->SetWorldPoint(x, y, z, 1.0);
+  renderer->WorldToDisplay();
+  const double* d = renderer->GetDisplayPoint();
+  return {d[0], d[1]};
+}
+
 void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset) {
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOff();

@@ -70,6 +70,10 @@ vtkSmartPointer<vtkActor> add_visibility_actor(vtkRenderer* renderer, vtkMapper*
 void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* title, const char* masked);
 void add_title(vtkRenderer* renderer, const std::string& text);
 
+// Where world point (x, y, z) is on the renderer's view, in VTK's display coordinates (origin
+// bottom left): for tests that click on something.
+std::array<double, 2> display_point_of(vtkRenderer* renderer, double x, double y, double z);
+
 // Points the camera at the centre of `bounds` (xmin, xmax, ymin, ymax, zmin, zmax) from
 // `offset` away, Y up, shifted left of the colour bar, and fits the bounds in view.
 void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset);

@@ -350,10 +350,7 @@ ProbeViewState ProbeView::state() const {
 std::array<double, 2> ProbeView::display_point(size_t probe) const {
   const Pipeline& p = *pipeline_;
   const glm::dvec3 x = probe_position(*p.grid, probe);
-  p.renderer->SetWorldPoint(x.x, x.y, x.z, 1.0);
-  p.renderer->WorldToDisplay();
-  const double* d = p.renderer->GetDisplayPoint();
-  return {d[0], d[1]};
+  return display_point_of(p.renderer, x.x, x.y, x.z);
 }
 
 }  // namespace lg

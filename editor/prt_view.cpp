@@ -256,10 +256,7 @@ PrtViewState PrtView::state() const {
 std::array<double, 2> PrtView::display_point(size_t vertex) const {
   const Pipeline& p = *pipeline_;
   const glm::vec3 x = p.bake->mesh.positions[vertex];
-  p.renderer->SetWorldPoint(x.x, x.y, x.z, 1.0);
-  p.renderer->WorldToDisplay();
-  const double* d = p.renderer->GetDisplayPoint();
-  return {d[0], d[1]};
+  return display_point_of(p.renderer, x.x, x.y, x.z);
 }
 
 }  // namespace lg
