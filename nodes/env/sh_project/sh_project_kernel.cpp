@@ -16,10 +16,6 @@ namespace {
 constexpr uint32_t kBlockTexels = 64 * 32;  // nodes/env/sh_project/shaders/sh_project.comp
 constexpr uint64_t kBlockSums = 25;         // vec4s per block: room for every coefficient up to band 4
 
-struct ProjectPush {  // nodes/env/sh_project/shaders/sh_project.comp
-  int32_t count;
-};
-
 struct ReducePush {  // nodes/env/sh_project/shaders/sh_reduce.comp
   float band_factor[8];
   int32_t order;
@@ -101,9 +97,9 @@ void record_sh_project(Context& gpu, PipelineCache& pipelines, VkCommandBuffer c
       pipelines.compute({name + " blocks",
                          node_shader("nodes/env/sh_project/shaders/sh_project.comp"),
                          {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
-                         sizeof(ProjectPush)});
+                         0,
+                         {uint32_t(sh_count(settings.order))}});  // sh_project.comp's `count`
   bind_pipeline(gpu, cmd, project, block_writes);
-  push_constants(cmd, project, ProjectPush{sh_count(settings.order)});
   vkCmdDispatch(cmd, blocks, 6, 1);
   partials_written_barrier(cmd, partials);
 

@@ -21,9 +21,10 @@ layout(local_size_x = 32) in;
 layout(binding = 0) uniform sampler2DArray env;  // the six faces of the mip projected
 // Per block, LG_SH_MAX_COUNT sums; the first's w holds the block's number of non-finite texels.
 layout(std430, binding = 1) writeonly buffer Partials { vec4 partials[]; };
-layout(push_constant) uniform Push {
-  int count;  // (order + 1)^2 coefficients summed
-};
+// (order + 1)^2 coefficients summed; a specialization constant, so the loops over coefficients
+// unroll and their arrays stay in registers (as a push constant they were indexed in memory,
+// and the basis was evaluated in full).
+layout(constant_id = 0) const int count = 9;
 
 shared vec3 lane_sums[kLanes * uint(LG_SH_MAX_COUNT)];
 shared uint lane_non_finite[kLanes];
