@@ -11,7 +11,9 @@
 //   SH: orders 1 to 4 of cosine-convolved SH (irradiance): the truncation error (SH irradiance
 //   against brute-force irradiance) and the implementation's own (GPU coefficients against the
 //   double-precision projection, both reconstructed), over kErrorDirections random directions.
-// Writes env_prefilter.csv, env_prefilter_equal_error.csv and env_sh.csv; the plot is made by
+//   Irradiance: env.irradiance's 32^2 cube from source mips 1 to 4 (faces 64 to 8), relative RMS
+//   against the brute-force irradiance of the full 128^2 map at kErrorTexels random texels.
+// Writes env_prefilter.csv, env_prefilter_equal_error.csv, env_sh.csv and env_irradiance.csv; the plot is made by
 // scripts/run-env-benchmarks.
 #include <benchmark/benchmark.h>
 
@@ -31,6 +33,7 @@
 #include <vector>
 
 #include "nodes/env/common/sh_basis.h"
+#include "nodes/env/irradiance/irradiance_kernel.h"
 #include "nodes/env/irradiance/irradiance_reference.h"
 #include "nodes/env/sh_project/sh_project_kernel.h"
 #include "nodes/env/sh_project/sh_reference.h"
@@ -58,6 +61,8 @@ constexpr uint32_t kLevels[] = {1, 2, 4, 3};
 constexpr int kLevelCount = int(std::size(kLevels));
 constexpr uint32_t kSampleCounts[] = {16, 64, 256, 1024, 4096};
 constexpr int kShOrders[] = {1, 2, 3, 4};
+constexpr uint32_t kIrradianceFace = 32;  // env.irradiance's default face_size
+constexpr uint32_t kIrradianceSourceMips[] = {1, 2, 3, 4};  // 3: the default
 constexpr int kErrorTexels = 150;      // per roughness, as the accuracy test
 constexpr int kErrorDirections = 200;  // for the SH irradiance
 
@@ -89,6 +94,7 @@ struct Probe {
   CubeImage env;
   std::vector<std::vector<Texel>> prefilter_texels;  // per entry of kLevels
   std::vector<glm::dvec3> directions, irradiance;    // brute-force irradiance E along directions
+  std::vector<Texel> irradiance_texels;               // brute-force E / pi at texels of a 32^2 cube
 
   const std::vector<std::vector<Texel>>& prefilter_references() {
     if (prefilter_texels.empty())
@@ -117,16 +123,28 @@ struct Probe {
       irradiance.push_back(std::numbers::pi * irradiance_over_pi_reference(env, directions.back()));
     }
   }
+
+  const std::vector<Texel>& irradiance_cube_references() {
+    if (irradiance_texels.empty()) {
+      const CubeImage shape(kIrradianceFace);
+      std::mt19937_64 rng(90);
+      for (int t = 0; t < kErrorTexels; ++t) {
+        const int f = int(rng() % 6);
+        const uint32_t i = uint32_t(rng() % kIrradianceFace), j = uint32_t(rng() % kIrradianceFace);
+        irradiance_texels.push_back({f, i, j, irradiance_over_pi_reference(env, shape.direction(f, i, j))});
+      }
+    }
+    return irradiance_texels;
+  }
 };
 
 std::vector<std::unique_ptr<Probe>> load_probes() {
   std::vector<std::unique_ptr<Probe>> probes;
-  probes.push_back(
-      std::make_unique<Probe>(Probe{"random", test::round_to_half(test::random_environment(kFace, 500)), {}, {}, {}}));
+  probes.push_back(std::make_unique<Probe>(Probe{"random", test::round_to_half(test::random_environment(kFace, 500))}));
   for (const char* name : {"grace.hdr", "pisa.hdr"}) {
     std::optional<CubeImage> env = test::load_probe(name, kFace);
     if (env)
-      probes.push_back(std::make_unique<Probe>(Probe{name, test::round_to_half(std::move(*env)), {}, {}, {}}));
+      probes.push_back(std::make_unique<Probe>(Probe{name, test::round_to_half(std::move(*env))}));
     else
       std::printf("skipping %s: ../shared/data/env/%s is missing\n", name, name);
   }
@@ -179,6 +197,13 @@ struct ShPoint {
   double truncation_rms = 0;      // SH irradiance (double-precision projection) vs brute force
   double implementation_rms = 0;  // GPU SH irradiance vs double-precision SH irradiance, / E
   double coefficient_error = 0;   // max |gpu - reference| / coefficient norm, worst channel
+};
+
+struct IrradiancePoint {
+  std::string env;
+  uint32_t source_mip;
+  std::vector<double> times_ms;
+  double rms = 0;  // relative, against the brute force over the whole 128^2 map
 };
 
 void bench_prefilter(benchmark::State& state, Probe& probe, PrefilterPoint& point) {
@@ -268,6 +293,28 @@ void bench_sh(benchmark::State& state, Probe& probe, ShPoint& point) {
   state.counters["implementation_rms"] = point.implementation_rms;
 }
 
+void bench_irradiance(benchmark::State& state, Probe& probe, IrradiancePoint& point) {
+  const std::vector<CubeImage> chain = mip_chain(probe.env);
+  Image source = test::make_cube(gpu().context, "env", kFace, uint32_t(chain.size()));
+  test::upload_cube(gpu().submitter, source, chain, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+  Image out = test::make_cube(gpu().context, "irradiance", kIrradianceFace, 1);
+  time_runs(
+      state,
+      [&](VkCommandBuffer cmd) {
+        image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+        record_irradiance(gpu().context, gpu().pipelines, cmd, "bench/irradiance", point.source_mip, source,
+                          gpu().nearest.handle(), out);
+        memory_barrier(cmd);
+      },
+      point.times_ms);
+  const CubeImage result = test::read_cube(gpu().submitter, out, 0, VK_IMAGE_LAYOUT_GENERAL);
+  double sum = 0;
+  for (const Texel& t : probe.irradiance_cube_references())
+    for (int c = 0; c < 3; ++c) sum += std::pow((result.at(t.face, t.i, t.j)[c] - t.reference[c]) / t.reference[c], 2);
+  point.rms = std::sqrt(sum / (3.0 * kErrorTexels));
+  state.counters["rms"] = point.rms;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Equal error: the plain curve's time (and sample count) at each filtered point's error,
 // interpolated linearly in log-log between the plain points where the plain curve last comes
@@ -323,7 +370,8 @@ std::vector<EqualError> equal_error(const std::vector<PrefilterPoint>& points) {
 // ---------------------------------------------------------------------------------------------
 
 void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& prefilter,
-                     const std::vector<EqualError>& equal, const std::vector<ShPoint>& sh) {
+                     const std::vector<EqualError>& equal, const std::vector<ShPoint>& sh,
+                     const std::vector<IrradiancePoint>& irradiance) {
   std::printf(
       "\nSpecular prefilter, 128^2 output with 5 mips (all mips timed), RMS relative error over %d random\n"
       "texels per roughness against the double-precision brute force (samples 0: the exact method):\n",
@@ -375,6 +423,21 @@ void print_and_write(const std::string& dir, const std::vector<PrefilterPoint>& 
     shcsv << p.env << ',' << p.order << ',' << med << ',' << min << ',' << p.times_ms.size() << ',' << p.truncation_rms
           << ',' << p.implementation_rms << ',' << p.coefficient_error << '\n';
   }
+
+  std::printf(
+      "\nIrradiance (env.irradiance), a %u^2 cube by cosine convolution of one source mip of the 128^2 map,\n"
+      "relative RMS over %d random texels against the brute force over the whole 128^2 map:\n",
+      kIrradianceFace, kErrorTexels);
+  std::printf("%-10s %10s %11s %10s %8s %10s\n", "env", "source mip", "source face", "median ms", "min ms", "error");
+  std::ofstream ircsv(dir + "/env_irradiance.csv");
+  ircsv << "env,source_mip,source_face,median_ms,min_ms,runs,relative_rms\n";
+  for (const IrradiancePoint& p : irradiance) {
+    const double med = median(p.times_ms), min = *std::min_element(p.times_ms.begin(), p.times_ms.end());
+    std::printf("%-10s %10u %11u %10.3f %8.3f %9.3f%%\n", p.env.c_str(), p.source_mip, kFace >> p.source_mip, med, min,
+                100 * p.rms);
+    ircsv << p.env << ',' << p.source_mip << ',' << (kFace >> p.source_mip) << ',' << med << ',' << min << ','
+          << p.times_ms.size() << ',' << p.rms << '\n';
+  }
 }
 
 const char* const usage =
@@ -406,8 +469,10 @@ int run(int argc, char** argv) {
   // Points are filled in as their benchmarks run; reserved so the references stay put.
   std::vector<PrefilterPoint> prefilter;
   std::vector<ShPoint> sh;
+  std::vector<IrradiancePoint> irradiance;
   prefilter.reserve(probes.size() * (1 + 2 * std::size(kSampleCounts)));
   sh.reserve(probes.size() * std::size(kShOrders));
+  irradiance.reserve(probes.size() * std::size(kIrradianceSourceMips));
   for (auto& probe : probes) {
     PrefilterPoint& exact = prefilter.emplace_back(PrefilterPoint{probe->name, PrefilterSampling::filtered, 0, {}});
     benchmark::RegisterBenchmark(("prefilter/" + probe->name + "/exact").c_str(),
@@ -435,6 +500,15 @@ int run(int argc, char** argv) {
           ->Iterations(runs)
           ->Unit(benchmark::kMillisecond);
     }
+    for (uint32_t mip : kIrradianceSourceMips) {
+      IrradiancePoint& point = irradiance.emplace_back(IrradiancePoint{probe->name, mip, {}});
+      benchmark::RegisterBenchmark(
+          ("irradiance/" + probe->name + "/" + std::to_string(mip)).c_str(),
+          [&probe = *probe, &point](benchmark::State& st) { bench_irradiance(st, probe, point); })
+          ->UseManualTime()
+          ->Iterations(runs)
+          ->Unit(benchmark::kMillisecond);
+    }
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
@@ -442,8 +516,10 @@ int run(int argc, char** argv) {
   // Only what ran (a filter may have left points out).
   std::erase_if(prefilter, [](const PrefilterPoint& p) { return p.times_ms.empty(); });
   std::erase_if(sh, [](const ShPoint& p) { return p.times_ms.empty(); });
-  print_and_write(results_dir, prefilter, equal_error(prefilter), sh);
-  std::printf("\nwrote %s/env_prefilter.csv, env_prefilter_equal_error.csv, env_sh.csv\n", results_dir.c_str());
+  std::erase_if(irradiance, [](const IrradiancePoint& p) { return p.times_ms.empty(); });
+  print_and_write(results_dir, prefilter, equal_error(prefilter), sh, irradiance);
+  std::printf("\nwrote %s/env_prefilter.csv, env_prefilter_equal_error.csv, env_sh.csv, env_irradiance.csv\n",
+              results_dir.c_str());
   return 0;
 }
 
