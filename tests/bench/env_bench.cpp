@@ -298,12 +298,14 @@ void bench_irradiance(benchmark::State& state, Probe& probe, IrradiancePoint& po
   Image source = test::make_cube(gpu().context, "env", kFace, uint32_t(chain.size()));
   test::upload_cube(gpu().submitter, source, chain, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
   Image out = test::make_cube(gpu().context, "irradiance", kIrradianceFace, 1);
+  Image sources;
+  fit_irradiance_sources(gpu().context, "sources", source, point.source_mip, sources);
   time_runs(
       state,
       [&](VkCommandBuffer cmd) {
         image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
         record_irradiance(gpu().context, gpu().pipelines, cmd, "bench/irradiance", point.source_mip, source,
-                          gpu().nearest.handle(), out);
+                          gpu().nearest.handle(), sources, out);
         memory_barrier(cmd);
       },
       point.times_ms);

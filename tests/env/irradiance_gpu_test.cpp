@@ -1,10 +1,13 @@
 // env.irradiance's pass on lavapipe against the double-precision brute force over every texel
-// of the same mip, on a random environment and the probes; a constant environment L gives
-// irradiance pi L (stored / pi: L); NaN and Inf texels count as 0. Tolerance 2e-3 relative:
-// rgba16f output (4.9e-4) and float sums over up to 24576 texels (measured 9.8e-4). Against
-// the brute force over mip 0 instead, the default source_mip 3 (16^2 of a 128^2 probe) is
-// printed, not bounded: 1.4e-3 on the random sky, 1.2% on pisa, 23% on grace, whose small
-// bright sources smear across texels straddling a normal's horizon.
+// of the full map, on a random environment and the probes; a constant environment L gives
+// irradiance pi L (stored / pi: L); NaN and Inf texels count as 0. The source mip's texels are
+// lights at the luminance-weighted mean direction of the full map's texels under them
+// (irradiance_sources.comp), exact for grey light seen whole above a normal's horizon. Measured
+// max relative error, the default source_mip 3 (16^2 of a 128^2 probe): grace 1.4%, pisa 1.0%
+// (when each coarse texel lit from its centre: 23% and 1.2%; grace's sun smeared across texels
+// straddling a normal's horizon); a random 64^2 sky from 16^2: 2.3e-3 (its coloured texels'
+// directions differ by channel). Bounds 2% and 3e-3. From mip 0 (one texel a light): 2e-3,
+// rgba16f output (4.9e-4) and float sums over up to 24576 texels (measured 9.8e-4).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,16 +33,19 @@ class IrradianceGpuTest : public GpuTest {
     upload_cube(submitter(), source, chain, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
     Image out = make_cube(context(), "irradiance", out_size, 1);
     Sampler nearest(context(), {.filter = Filter::nearest});
+    Image sources;
+    fit_irradiance_sources(context(), "sources", source, source_mip, sources);
     submitter().run([&](VkCommandBuffer cmd) {
       image_barrier(cmd, out, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-      record_irradiance(context(), pipelines(), cmd, "irradiance/convolve", source_mip, source, nearest.handle(), out);
+      record_irradiance(context(), pipelines(), cmd, "irradiance/convolve", source_mip, source, nearest.handle(),
+                        sources, out);
       memory_barrier(cmd);
     });
     return read_cube(submitter(), out, 0, VK_IMAGE_LAYOUT_GENERAL);
   }
 
-  // Max relative error of every output texel against the brute force over mip `source_mip`
-  // (of the half-precision env) and, printed, over mip 0.
+  // Max relative error of every output texel against the brute force over mip 0 (of the
+  // half-precision env) and, printed, over mip `source_mip`.
   double check(const CubeImage& env, const char* what, uint32_t source_mip) {
     const CubeImage seen = round_to_half(env);
     const std::vector<CubeImage> chain = mip_chain(seen);
@@ -55,21 +61,21 @@ class IrradianceGpuTest : public GpuTest {
             worst_mip0 = std::max(worst_mip0, std::abs(gpu.at(f, i, j)[c] - fine[c]) / fine[c]);
           }
         }
-    std::cout << what << ", " << chain[source_mip].size << "^2 source: max relative error " << worst
-              << " (against mip 0: " << worst_mip0 << ")\n";
-    return worst;
+    std::cout << what << ", " << chain[source_mip].size << "^2 source: max relative error " << worst_mip0
+              << " (against the source mip's own brute force: " << worst << ")\n";
+    return worst_mip0;
   }
 };
 
 TEST_F(IrradianceGpuTest, MatchesTheBruteForceOnARandomEnvironment) {
-  EXPECT_LE(check(random_environment(64, 600), "random", 2), 2e-3);
+  EXPECT_LE(check(random_environment(64, 600), "random", 2), 3e-3);
 }
 
 TEST_F(IrradianceGpuTest, MatchesTheBruteForceOnTheProbes) {
   for (const char* name : {"grace.hdr", "pisa.hdr"}) {
     const std::optional<CubeImage> env = load_probe(name, 128);
     if (!env) GTEST_SKIP() << "../shared/data/env/" << name << " is missing";
-    EXPECT_LE(check(*env, name, 3), 2e-3) << name;
+    EXPECT_LE(check(*env, name, 3), 2e-2) << name;
   }
 }
 

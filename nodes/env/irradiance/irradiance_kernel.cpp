@@ -2,8 +2,10 @@
 
 #include <algorithm>
 
+#include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/image.h"
 #include "runtime/gpu/pipeline.h"
@@ -11,20 +13,34 @@
 namespace lg {
 namespace {
 
-constexpr uint32_t kGroup = 8;
+constexpr uint32_t kGroup = 8;  // both shaders' workgroup side
+// A source texel sums the texels of at most this many mips finer (64 x 64 of them) for its
+// light and direction (irradiance_sources.comp): lavapipe's 65535 loop iterations an invocation.
+constexpr uint32_t kMaxFineLevels = 6;
+
+struct SourcesPush {  // shaders/irradiance_sources.comp
+  int32_t source_mip, fine_mip;
+};
 
 class IrradianceKernel final : public NodeKernel {
  public:
   explicit IrradianceKernel(const PlanNode& node) : source_mip_(uint32_t(param_number(node, "source_mip"))) {}
 
   void record(PassContext& ctx) override {
-    record_irradiance(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, source_mip_, ctx.image("in.env"),
-                      ctx.nearest_sampler(), ctx.image("out.irradiance"));
+    Image& env = ctx.image("in.env");
+    fit_irradiance_sources(ctx.gpu(), ctx.node().id + " irradiance sources", env, source_mip_, sources_);
+    record_irradiance(ctx.gpu(), ctx.pipelines(), ctx.cmd(), ctx.pass().name, source_mip_, env, ctx.nearest_sampler(),
+                      sources_, ctx.image("out.irradiance"));
   }
 
  private:
   uint32_t source_mip_;
+  Image sources_;
 };
+
+uint32_t face_size(const Image& env, uint32_t mip) {
+  return std::max(env.desc().width >> mip, 1u);
+}
 
 }  // namespace
 
@@ -34,17 +50,43 @@ uint32_t irradiance_source_mip(const Image& env, uint32_t source_mip) {
   return mip;
 }
 
+void fit_irradiance_sources(Context& gpu, const std::string& name, const Image& env, uint32_t source_mip,
+                            Image& sources) {
+  const uint32_t size = face_size(env, irradiance_source_mip(env, source_mip));
+  if (sources.handle() != VK_NULL_HANDLE && sources.desc().height == size) return;
+  sources = Image::dedicated(gpu, {.name = name,
+                                   .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                   .width = 2 * size,
+                                   .height = size,
+                                   .layers = 6,
+                                   .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
+}
+
 void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
-                       uint32_t source_mip, Image& env, VkSampler sampler, Image& irradiance) {
-  const Pipeline& pipeline =
+                       uint32_t source_mip, Image& env, VkSampler sampler, Image& sources, Image& irradiance) {
+  const uint32_t mip = irradiance_source_mip(env, source_mip), source_size = face_size(env, mip);
+  const VkImageView sources_view = sources.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+  image_barrier(cmd, sources, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+  const Pipeline& weigh =
+      pipelines.compute({name + " sources",
+                         node_shader("nodes/env/irradiance/shaders/irradiance_sources.comp"),
+                         {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                         sizeof(SourcesPush)});
+  const DescriptorWrite source_writes[] = {sampled_image(0, env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY}), sampler),
+                                           storage_image(1, sources_view)};
+  bind_pipeline(gpu, cmd, weigh, source_writes);
+  push_constants(cmd, weigh, SourcesPush{int32_t(mip), int32_t(mip > kMaxFineLevels ? mip - kMaxFineLevels : 0)});
+  vkCmdDispatch(cmd, (source_size + kGroup - 1) / kGroup, (source_size + kGroup - 1) / kGroup, 6);
+  compute_to_compute_barrier(cmd);
+
+  const Pipeline& convolve =
       pipelines.compute({name,
                          node_shader("nodes/env/irradiance/shaders/irradiance.comp"),
                          {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}}});
-  const uint32_t mip = irradiance_source_mip(env, source_mip);
   const DescriptorWrite writes[] = {
-      sampled_image(0, env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = mip, .mip_count = 1}), sampler),
+      sampled_image(0, sources_view, sampler, VK_IMAGE_LAYOUT_GENERAL),
       storage_image(1, irradiance.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = 0, .mip_count = 1}))};
-  bind_pipeline(gpu, cmd, pipeline, writes);
+  bind_pipeline(gpu, cmd, convolve, writes);
   const uint32_t size = irradiance.desc().width;
   vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "runtime/exec/node_kernel.h"
+#include "runtime/gpu/image.h"
 
 namespace lg {
 
@@ -17,10 +18,16 @@ namespace lg {
 inline constexpr uint32_t kIrradianceMaxSourceFace = 64;
 uint32_t irradiance_source_mip(const Image& env, uint32_t source_mip);
 
+// The image the pass keeps the source mip's texels in, each as its direction and its radiance x
+// solid angle side by side (irradiance_sources.comp); made again only when `sources` does not fit.
+void fit_irradiance_sources(Context& gpu, const std::string& name, const Image& env, uint32_t source_mip,
+                            Image& sources);
+
 // Records `irradiance` (rgba16f cube, GENERAL, mip 0) from mip irradiance_source_mip(env,
-// source_mip) of `env` (READ_ONLY_OPTIMAL).
+// source_mip) of `env` (READ_ONLY_OPTIMAL), through `sources` (fit_irradiance_sources; its
+// contents are not kept).
 void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
-                       uint32_t source_mip, Image& env, VkSampler sampler, Image& irradiance);
+                       uint32_t source_mip, Image& env, VkSampler sampler, Image& sources, Image& irradiance);
 
 std::unique_ptr<NodeKernel> make_irradiance_kernel(const PlanNode& node);
 
