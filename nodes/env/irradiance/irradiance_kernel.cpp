@@ -13,7 +13,8 @@
 namespace lg {
 namespace {
 
-constexpr uint32_t kGroup = 8;  // both shaders' workgroup side
+constexpr uint32_t kGroup = 8;        // both shaders' workgroup side
+constexpr uint32_t kOutputBlock = 4;  // output texels a side that one invocation of irradiance.comp sums
 // A source texel sums the texels of at most this many mips finer (64 x 64 of them) for its
 // light and direction (irradiance_sources.comp): lavapipe's 65535 loop iterations an invocation.
 constexpr uint32_t kMaxFineLevels = 6;
@@ -87,8 +88,8 @@ void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer c
       sampled_image(0, sources_view, sampler, VK_IMAGE_LAYOUT_GENERAL),
       storage_image(1, irradiance.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY, .base_mip = 0, .mip_count = 1}))};
   bind_pipeline(gpu, cmd, convolve, writes);
-  const uint32_t size = irradiance.desc().width;
-  vkCmdDispatch(cmd, (size + kGroup - 1) / kGroup, (size + kGroup - 1) / kGroup, 6);
+  const uint32_t blocks = (irradiance.desc().width + kOutputBlock - 1) / kOutputBlock;
+  vkCmdDispatch(cmd, (blocks + kGroup - 1) / kGroup, (blocks + kGroup - 1) / kGroup, 6);
 }
 
 std::unique_ptr<NodeKernel> make_irradiance_kernel(const PlanNode& node) {
