@@ -1,4 +1,4 @@
-// Some passes' GPU time in a Renderer, per frame (the benchmarks of gi.lpv and gi.voxel, gi.prt and
+// Some passes' GPU time in a Renderer, per frame (the benchmarks of gi.prt and
 // lighting.deferred's area pass). Light types stay out of this header: area_specular_bench.cpp
 // includes it beside the renderer's own names for them.
 #pragma once
