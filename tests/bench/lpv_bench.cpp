@@ -19,7 +19,8 @@
 // (the reference's is 0). Writes lpv_points.csv (columns compatible with
 // docs/bench/probes/probe_points.csv; for gi.voxel `grid` is the resolution and `iterations` the
 // number of cones; mean_ratio the node's mean irradiance over the reference's, 1 unbiased;
-// frame_ms_moving gi.voxel's median with the sun turning, see frame_ms) into --results-dir;
+// frame_ms_moving gi.voxel's median with the sun turning, see frame_ms; cpu_ms the CPU time the
+// node adds to a frame, the process's over the G-buffer alone's) into --results-dir;
 // --methods lpv or voxel runs one of them, --worlds some of the worlds; scripts/run-lpv-benchmarks
 // plots it. Per row it also prints the mean ratio per way the surfaces face (docs/lpv.md,
 // "Energy and direction").
@@ -44,6 +45,7 @@
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/bench/renderer_pass_timing.h"
 #include "tests/gi/prt_comparison.h"
 
 namespace lg::bench {
@@ -124,7 +126,29 @@ Graph node_graph(const Quality& q) {
 struct FrameTime {
   double median_ms, min_ms;
   double moving_median_ms = NAN;  // gi.voxel with the sun turning every frame (its volume rebuilt)
+  double cpu_ms = NAN;            // the process's CPU time a frame, all threads (the frame's, not the node's)
 };
+
+// The G-buffer alone, whose CPU time a frame run() takes from each node's frame.
+Graph gbuffer_graph() {
+  Diagnostics d("gbuffer-bench.json");
+  std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" } ], "links": [], "outputs": [ "gbuf.gbuffer" ] })",
+                                                d);
+  if (!graph) throw std::runtime_error(d.to_string());
+  return std::move(*graph);
+}
+
+// The process's CPU time a frame (all threads: lavapipe's GPU work is CPU work) over the frames
+// after the first of `graph`.
+double frame_cpu_ms(const World& world, Graph graph, const Options& o) {
+  Renderer renderer;
+  renderer.set_graph(std::move(graph));
+  renderer.render(world, {o.frame_width, o.frame_height});
+  const double start = process_cpu_ms();
+  for (uint32_t f = 0; f < o.frames; ++f) renderer.render(world, {o.frame_width, o.frame_height});
+  return (process_cpu_ms() - start) / o.frames;
+}
 
 // The node's passes' GPU time over the frames after the first (pipelines JIT-compiled): the
 // median, and the least, which on a machine shared with other work is the nearest to its cost
@@ -144,7 +168,9 @@ FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
     renderer.set_graph(node_graph(q));
     std::vector<double> frames;
     std::map<std::string, std::vector<double>> passes;
+    double cpu_start = 0;
     for (uint32_t f = 0; f <= o.frames; ++f) {
+      if (f == 1) cpu_start = process_cpu_ms();
       if (turning)
         scene.each<DirectionalLight, Transform>([](Entity, DirectionalLight&, Transform& t) {
           t.rotation = glm::angleAxis(glm::radians(0.1f), glm::vec3(0, 1, 0)) * t.rotation;
@@ -160,11 +186,12 @@ FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
     for (const auto& [name, ms] : passes) std::printf(" %s %.1f", name.c_str(), median(ms));
     std::printf(" ms (medians)\n");
     std::sort(frames.begin(), frames.end());
-    return frames;
+    return std::pair(frames, (process_cpu_ms() - cpu_start) / o.frames);
   };
-  const std::vector<double> still = timed(false, "");
+  const auto [still, cpu_ms] = timed(false, "");
   FrameTime out{still[still.size() / 2], still.front()};
-  if (q.method == "voxel") out.moving_median_ms = median(timed(true, ", sun turning"));
+  out.cpu_ms = cpu_ms;
+  if (q.method == "voxel") out.moving_median_ms = median(timed(true, ", sun turning").first);
   return out;
 }
 
@@ -207,7 +234,7 @@ int run(const Options& o) {
   fs::create_directories(dir);
   std::ofstream csv(dir / "lpv_points.csv");
   csv << "world,method,quality,grid,iterations,frame_ms,relative_rms,reference_noise,beyond_noise,leak,frame_ms_min,"
-         "mean_ratio,frame_ms_moving\n";
+         "mean_ratio,frame_ms_moving,cpu_ms\n";
   std::printf("%-13s %-6s %-8s %9s %8s %8s %9s %8s %8s %6s\n", "world", "method", "quality", "frame ms", "min ms",
               "rel RMS", "ref noise", "beyond", "leak", "scale");
   std::vector<Quality> qualities;
@@ -230,6 +257,7 @@ int run(const Options& o) {
     std::printf("%s: reference %ux%u, %u paths, 2 bounces in %.1f s\n", name.c_str(), o.width, o.height, o.spp,
                 seconds_since(start));
     const bool rooms = name == "two-rooms-sun";
+    const double gbuffer_cpu_ms = o.frames ? frame_cpu_ms(world, gbuffer_graph(), o) : NAN;
     auto row = [&](const char* method, const std::string& quality, const Quality& q, FrameTime ms,
                    const test::PrtComparison& c, double leak) {
       const double beyond =
@@ -244,6 +272,10 @@ int run(const Options& o) {
           << ',' << c.rms_over_mean << ',' << c.noise_over_mean << ',' << beyond << ',' << leak_text << ',' << ms.min_ms
           << ',' << c.mean_ratio << ',';
       if (std::isfinite(ms.moving_median_ms)) csv << ms.moving_median_ms;
+      csv << ',';
+      // The CPU time the node adds to a frame: on 2 idle cores its passes take about half of it.
+      const double cpu = ms.cpu_ms - gbuffer_cpu_ms;
+      if (std::isfinite(cpu)) csv << cpu, std::printf("  CPU time it adds to a frame: %.1f ms\n", cpu);
       csv << '\n';
     };
     std::vector<float> dark;
