@@ -2,6 +2,8 @@
 // - the Cornell box's sun (its one directional light), one bounce: the node's irradiance against the
 //   path tracer's indirect diffuse light of that sun alone, closer than no indirect light at all;
 //   and the next frame after the sun turns follows it;
+// - two rooms sharing a wall the sun lights on neither face: the light in the closed one stays
+//   below its bound (fails with the geometry volume from the RSM alone);
 // - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
 //   every output finite, validation clean;
 // - a moved object that turns the grid's 6x2x2 cells into 2x6x2: the next frame matches a fresh

@@ -32,9 +32,11 @@ vec3 vertex_vec3(uint v, uint offset) {
 }
 
 void main() {
-  if (gl_GlobalInvocationID.x >= triangle_count) return;
   uint t = first_triangle + gl_GlobalInvocationID.x;
   int first_layer = int(gl_GlobalInvocationID.y * slab_layers);
+  // The local size's 8 slabs are mostly past the grid (a 16-cell grid is one slab): those
+  // invocations leave before reading their triangle, or they would read it 8 times over.
+  if (gl_GlobalInvocationID.x >= triangle_count || first_layer >= lpv.counts.z) return;
   Draw d = draws[draw_index];
   uint i0 = indices[3u * t], i1 = indices[3u * t + 1u], i2 = indices[3u * t + 2u];
   vec3 origin = lpv.origin_cell.xyz;
