@@ -7,23 +7,23 @@
 // two bounces (the visible surface and one more). Per world, for gi.lpv at four grids (8, 16, 32
 // and 64 cells along the longest side, 8 iterations each, the lookup at its default resolution
 // scale 1/4; the default grid 16 with 16 iterations, without propagation, whose time is that of
-// everything but the propagation, and with the lookup at 1/2; --lpv picks others), for gi.voxel at three resolutions (32, 64 and 128 voxels along the longest side, six
-// cones, resolution scale 0.5; and 64 at scale 1/4) and for "no
-// indirect light": the relative RMS of
-// the node's irradiance against the reference's (the RMS of the differences over the reference's
-// mean, lumagraph-bench-probes' relative_rms; through tests/gi/prt_comparison.h), the
-// reference's noise in the same measure, and the node's GPU time per frame at --frame-size (all
-// its passes; lavapipe; the median and the least of the frames after the first, and each pass's
-// median; gi.voxel keeps its volume while nothing moves, so it is also timed with the sun turning). In the two rooms also the
-// leak: the mean irradiance on the east room's floor over the west room's, a camera in each room
-// (the reference's is 0). Writes lpv_points.csv (columns compatible with
+// everything but the propagation, and with the lookup at 1/2; --lpv picks others), for gi.voxel
+// at three resolutions (32, 64 and 128 voxels along the longest side, six cones, resolution scale
+// 0.5; and 64 at scale 1/4) and for "no indirect light": the relative RMS of the node's
+// irradiance against the reference's (the RMS of the differences over the reference's mean,
+// lumagraph-bench-probes' relative_rms; through tests/gi/prt_comparison.h), the reference's noise
+// in the same measure, and the node's GPU time per frame at --frame-size (all its passes;
+// lavapipe; the median and the least of the frames after the first, and each pass's median;
+// gi.voxel keeps its volume while nothing moves, so it is also timed with the sun turning). In
+// the two rooms also the leak: the mean irradiance on the east room's floor over the west room's,
+// a camera in each room (the reference's is 0). Writes lpv_points.csv (columns compatible with
 // docs/bench/probes/probe_points.csv; for gi.voxel `grid` is the resolution and `iterations` the
 // number of cones; mean_ratio the node's mean irradiance over the reference's, 1 unbiased;
 // frame_ms_moving gi.voxel's median with the sun turning, see frame_ms; cpu_ms the CPU time the
-// node adds to a frame, the process's over the G-buffer alone's) into --results-dir;
-// --methods lpv or voxel runs one of them, --worlds some of the worlds; scripts/run-lpv-benchmarks
-// plots it. Per row it also prints the mean ratio per way the surfaces face (docs/lpv.md,
-// "Energy and direction").
+// node adds to a frame, the process's over the G-buffer alone's) into --results-dir; --methods
+// lpv or voxel runs one of them, --worlds some of the worlds; scripts/run-lpv-benchmarks plots
+// it. Per row it also prints the mean ratio per way the surfaces face (docs/lpv.md, "Energy and
+// direction").
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -77,9 +77,12 @@ struct Options {
   std::string methods = "lpv,voxel";
   std::string worlds = "cornell-box,two-rooms-sun,gallery";
   // gi.lpv's settings (iterations 0: without propagation); main() parses --lpv.
-  std::vector<Quality> lpv = {{"lpv", 8, 8, kLpvDefaultDivisor},  {"lpv", 16, 8, kLpvDefaultDivisor},
-                              {"lpv", 32, 8, kLpvDefaultDivisor}, {"lpv", 64, 8, kLpvDefaultDivisor},
-                              {"lpv", 16, 16, kLpvDefaultDivisor}, {"lpv", 16, 0, kLpvDefaultDivisor},
+  std::vector<Quality> lpv = {{"lpv", 8, 8, kLpvDefaultDivisor},
+                              {"lpv", 16, 8, kLpvDefaultDivisor},
+                              {"lpv", 32, 8, kLpvDefaultDivisor},
+                              {"lpv", 64, 8, kLpvDefaultDivisor},
+                              {"lpv", 16, 16, kLpvDefaultDivisor},
+                              {"lpv", 16, 0, kLpvDefaultDivisor},
                               {"lpv", 16, 8, 2}};
 };
 
@@ -106,10 +109,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 Graph node_graph(const Quality& q) {
-  const std::string params = (q.method == "lpv" ? R"("gi.lpv", "params": { "grid": )" + std::to_string(q.grid) +
-                                                      R"(, "iterations": )" + std::to_string(q.iterations)
-                                                : R"("gi.voxel", "params": { "resolution": )" + std::to_string(q.grid)) +
-                             R"(, "resolution_scale": )" + std::to_string(1.0 / q.scale_divisor);
+  const std::string params =
+      (q.method == "lpv" ? R"("gi.lpv", "params": { "grid": )" + std::to_string(q.grid) + R"(, "iterations": )" +
+                               std::to_string(q.iterations)
+                         : R"("gi.voxel", "params": { "resolution": )" + std::to_string(q.grid)) +
+      R"(, "resolution_scale": )" + std::to_string(1.0 / q.scale_divisor);
   Diagnostics d(q.method + "-bench.json");
   std::optional<Graph> graph = parse_graph_text(R"({ "format": "lumagraph/1", "nodes": [
       { "id": "gbuf", "type": "scene.gbuffer" },
@@ -238,10 +242,10 @@ int run(const Options& o) {
   std::printf("%-13s %-6s %-8s %9s %8s %8s %9s %8s %8s %6s\n", "world", "method", "quality", "frame ms", "min ms",
               "rel RMS", "ref noise", "beyond", "leak", "scale");
   std::vector<Quality> qualities;
-  if (o.methods.find("lpv") != std::string::npos)
-    qualities = o.lpv;
+  if (o.methods.find("lpv") != std::string::npos) qualities = o.lpv;
   if (o.methods.find("voxel") != std::string::npos)
-    qualities.insert(qualities.end(), {{"voxel", 32, 6, 2}, {"voxel", 64, 6, 2}, {"voxel", 128, 6, 2}, {"voxel", 64, 6, 4}});
+    qualities.insert(qualities.end(),
+                     {{"voxel", 32, 6, 2}, {"voxel", 64, 6, 2}, {"voxel", 128, 6, 2}, {"voxel", 64, 6, 4}});
   for (const std::string& name : split_commas(o.worlds)) {
     const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
     SceneView view = make_scene_view(world, float(o.width) / o.height);
@@ -308,7 +312,8 @@ int main(int argc, char** argv) {
   lg::bench::BenchFlags flags(
       "usage: lumagraph-bench-lpv [--results-dir DIR] [--size WxH] [--frame-size WxH] [--spp N] [--frames N]\n"
       "                           [--methods lpv,voxel] [--worlds cornell-box,two-rooms-sun,gallery]\n"
-      "                           [--lpv GRID/ITERATIONS[:K],...]   (--frames 0: no timing; K: resolution scale 1/K)\n");
+      "                           [--lpv GRID/ITERATIONS[:K],...]   (--frames 0: no timing; K: resolution scale "
+      "1/K)\n");
   flags.text("--results-dir", o.results_dir);
   flags.size("--size", o.width, o.height);
   flags.size("--frame-size", o.frame_width, o.frame_height);

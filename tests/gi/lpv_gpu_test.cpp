@@ -114,9 +114,9 @@ TEST(Lpv, LightDoesNotLeakThroughAWallTheSunDoesNotLight) {
     world.add(e, Transform{}).position = at;
   };
   const float t = 0.1f;
-  slab({8 + 3 * t, t, 4 + 2 * t}, {0, -t / 2, 0});     // both floors
+  slab({8 + 3 * t, t, 4 + 2 * t}, {0, -t / 2, 0});         // both floors
   slab({4 + t, t, 4 + 2 * t}, {2 + t / 2, 3 + t / 2, 0});  // the east room's ceiling
-  slab({t, 3, 4}, {0, 1.5f, 0});                          // the shared wall
+  slab({t, 3, 4}, {0, 1.5f, 0});                           // the shared wall
   slab({t, 3, 4}, {-4 - t, 1.5f, 0});
   slab({t, 3, 4}, {4 + t, 1.5f, 0});
   for (float z : {-2 - t / 2, 2 + t / 2}) slab({8 + 3 * t, 3, t}, {0, 1.5f, z});

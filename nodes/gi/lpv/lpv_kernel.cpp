@@ -303,16 +303,11 @@ class LpvKernel final : public NodeKernel {
       compute_to_compute_barrier(ctx.cmd());
       const uint32_t occlude = occlusion_ && i > 0 ? 1u : 0u;
       std::array<Image, 3>&from = light_[i % 2], &to = light_[(i + 1) % 2];
-      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),
-                                        general_sampled(ctx, 1, from[0]),
-                                        general_sampled(ctx, 2, from[1]),
-                                        general_sampled(ctx, 3, from[2]),
-                                        storage_image(4, to[0].view()),
-                                        storage_image(5, to[1].view()),
-                                        storage_image(6, to[2].view()),
-                                        storage_buffer(7, sum_.handle()),
-                                        general_sampled(ctx, 8, occlusion_grid_),
-                                        uniform_buffer(9, faces_->handle())};
+      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),  general_sampled(ctx, 1, from[0]),
+                                        general_sampled(ctx, 2, from[1]),         general_sampled(ctx, 3, from[2]),
+                                        storage_image(4, to[0].view()),           storage_image(5, to[1].view()),
+                                        storage_image(6, to[2].view()),           storage_buffer(7, sum_.handle()),
+                                        general_sampled(ctx, 8, occlusion_grid_), uniform_buffer(9, faces_->handle())};
       dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_propagate.comp", writes, std::as_bytes(std::span(&occlude, 1)));
     }
   }

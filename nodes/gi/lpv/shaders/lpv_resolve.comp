@@ -3,9 +3,9 @@
 // gi.lpv: the injected fixed-point sums to floats, one invocation per cell: the light that
 // propagation starts from (in lpv_outflow's form, its lobe part scaled to keep its power in the
 // first step), the first term of the sum the lookup reads, and the occlusion (read as a lobe
-// too, sh_l1_lobe: a surface blocks the light that travels into it, not the light that runs along it). The light and the
-// occlusion go to 3D images, which lpv_propagate.comp reads with texelFetch (lavapipe gathers
-// those; a storage buffer's vec4 it reads lane by lane).
+// too, sh_l1_lobe: a surface blocks the light that travels into it, not the light that runs
+// along it). The light and the occlusion go to 3D images, which lpv_propagate.comp reads with
+// texelFetch (lavapipe gathers those; a storage buffer's vec4 it reads lane by lane).
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
