@@ -1,10 +1,19 @@
 #include "tests/bench/renderer_pass_timing.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 
 #include "api/renderer.h"
 
 namespace lg::bench {
+
+double process_cpu_ms() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto ms = [](const timeval& t) { return double(t.tv_sec) * 1e3 + double(t.tv_usec) * 1e-3; };
+  return ms(usage.ru_utime) + ms(usage.ru_stime);
+}
 
 std::vector<double> sorted_pass_ms(Renderer& renderer, const World& world, uint32_t width, uint32_t height,
                                    uint32_t frames, const std::function<bool(const std::string&)>& counts) {

@@ -1,6 +1,6 @@
-// Some passes' GPU time in a Renderer, per frame (the benchmarks of gi.lpv and gi.voxel, gi.prt and
-// lighting.deferred's area pass). Light types stay out of this header: area_specular_bench.cpp
-// includes it beside the renderer's own names for them.
+// Some passes' GPU time in a Renderer, per frame (the benchmarks of gi.prt and
+// lighting.deferred's area pass), and the process's CPU time (gi.lpv's). Light types stay out of
+// this header: area_specular_bench.cpp includes it beside the renderer's own names for them.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +14,10 @@ class World;
 }  // namespace lg
 
 namespace lg::bench {
+
+// The CPU time this process has used, all threads, in ms: lavapipe's GPU work is CPU work, and
+// a loaded machine disturbs it far less than the timestamps.
+double process_cpu_ms();
 
 // Renders `frames` + 1 frames of `world` at width x height and returns, sorted, the GPU time of
 // the passes `counts` accepts summed per frame, for all but the first (it JIT-compiles the

@@ -2,6 +2,8 @@
 // - the Cornell box's sun (its one directional light), one bounce: the node's irradiance against the
 //   path tracer's indirect diffuse light of that sun alone, closer than no indirect light at all;
 //   and the next frame after the sun turns follows it;
+// - two rooms sharing a wall the sun lights on neither face: the light in the closed one stays
+//   below its bound (fails with the geometry volume from the RSM alone);
 // - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
 //   every output finite, validation clean;
 // - a moved object that turns the grid's 6x2x2 cells into 2x6x2: the next frame matches a fresh
@@ -90,6 +92,59 @@ TEST(Lpv, BeatsNoIndirectLightOnTheCornellBoxAndFollowsTheSun) {
   for (size_t i = 0; i < lpv.size(); ++i)
     if (i % 4 != 3) change += std::abs(turned[i] - lpv[i]), total += lpv[i];
   EXPECT_GT(change, 0.1 * total);  // a different patch of sunlight, a different bounce
+  expect_no_validation_messages(renderer->context());
+}
+
+// Two rooms (4 x 3 x 4 m inside each, 0.1 m slabs) side by side along x, sharing a wall; the west
+// one open to a sun from above, the east one closed. The sun lights the west room's floor and
+// neither face of the shared wall (it comes from slightly west: the west face is turned away),
+// so the truth in the east room is 0. Light reaching the east room is leak: the mean irradiance
+// a camera in the east room sees over the mean a camera in the west room sees. With the geometry
+// volume from the RSM's surfels alone the shared wall blocked nothing: 5.5% (grid 16); from the
+// draws' triangles, 1.3% (docs/lpv.md; a one-cell wall holding both its faces still passes some).
+// Bound 2.5%, between the two.
+TEST(Lpv, LightDoesNotLeakThroughAWallTheSunDoesNotLight) {
+  World world;
+  PbrMaterial white;
+  white.base_color = glm::vec4(glm::vec3(0.8f), 1.0f);
+  const int material = world.add_material(white);
+  auto slab = [&](glm::vec3 size, glm::vec3 at) {
+    Entity e = world.create("slab");
+    world.add(e, MeshRenderer{world.add_mesh(make_box(size)), material});
+    world.add(e, Transform{}).position = at;
+  };
+  const float t = 0.1f;
+  slab({8 + 3 * t, t, 4 + 2 * t}, {0, -t / 2, 0});         // both floors
+  slab({4 + t, t, 4 + 2 * t}, {2 + t / 2, 3 + t / 2, 0});  // the east room's ceiling
+  slab({t, 3, 4}, {0, 1.5f, 0});                           // the shared wall
+  slab({t, 3, 4}, {-4 - t, 1.5f, 0});
+  slab({t, 3, 4}, {4 + t, 1.5f, 0});
+  for (float z : {-2 - t / 2, 2 + t / 2}) slab({8 + 3 * t, 3, t}, {0, 1.5f, z});
+  Entity camera = world.create("camera");
+  world.add(camera, Camera{});
+  world.add(camera, Transform{});
+  Entity sun = world.create("sun");
+  world.add(sun, DirectionalLight{.intensity = 10.0f});
+  world.add(sun, Transform{}).rotation = look_rotation({-0.2f, -1.0f, -0.1f});
+  auto renderer = make_renderer(lpv_graph(16, 8));
+  auto mean_seen = [&](float x) {  // from (x, 2, 1.8), looking down into the room
+    Transform& eye = world.get<Transform>(camera);
+    eye.position = {x, 2.0f, 1.8f};
+    eye.rotation = look_rotation({0.0f, -0.8f, -1.0f});
+    renderer->render(world, kFrame);
+    const std::vector<float> e = renderer->executor().read_image("lpv.irradiance");
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < e.size(); i += 4)
+      if (e[i + 3] > 0.5f) sum += e[i + 1], ++n;
+    EXPECT_EQ(n, size_t(kFrame.width) * kFrame.height);  // every pixel sees the inside of the room
+    return sum / double(n);
+  };
+  const double west = mean_seen(-2.0f), east = mean_seen(2.0f);
+  std::printf("mean irradiance seen in the west room %.5f, in the east room %.5f W/m^2: leak %.3f%%\n", west, east,
+              100.0 * east / west);
+  EXPECT_GT(west, 0.0);
+  EXPECT_LT(east, 0.025 * west);
   expect_no_validation_messages(renderer->context());
 }
 

@@ -35,6 +35,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kFixedRange = 1073741824.0;  // 2^30: the most any fixed-point sum may reach
 constexpr double kLobePeak = 1.02332671;      // the largest coefficient of sh_l1_cosine_lobe
+// A triangle's blocking in a cell is at most 1 x kLobePeak (lpv_voxelize.comp): 2^16 units a unit
+// keeps 2^15 of them in a cell within an int, which no cell's surfaces come near.
+constexpr double kOcclusionUnit = 65536.0;
+// lpv_voxelize.comp's local size: 8 triangles x 8 slabs of cell layers; a slab is as many layers
+// as keep an invocation's loop under lavapipe's 65,535 iterations (gi.voxel's voxelize.comp).
+constexpr uint32_t kVoxelizeTile = 8;
+constexpr uint32_t kTrianglesPerDispatch = 65535 * kVoxelizeTile;
+constexpr int kVoxelizeLoopIterations = 65535;
 
 struct Constants {  // shaders/lpv_common.glsl
   glm::vec4 origin_cell;
@@ -45,6 +53,10 @@ struct Constants {  // shaders/lpv_common.glsl
 
 struct RsmLight {  // shaders/lpv_rsm.frag
   glm::vec4 direction, irradiance;
+};
+
+struct VoxelizePush {  // shaders/lpv_voxelize.comp
+  uint32_t draw_index, first_triangle, triangle_count, slab_layers;
 };
 
 struct RsmPush {  // lighting.deferred's shadow_draw.glsl
@@ -130,9 +142,7 @@ class LpvKernel final : public NodeKernel {
       l = {glm::vec4(glm::normalize(d.direction), 0.0f), glm::vec4(e, 0.0f)};
       shadow_from_world_ = shadow_from_world(*scene_bounds_, d.direction);
     }
-    // Every surfel's blocking is at most 1 x kLobePeak (lpv_inject.comp).
-    c.scales = glm::vec4(float(scale), float(kFixedRange / (double(rsm_size) * rsm_size * kLobePeak)),
-                         light_present_ ? 1.0f : 0.0f, 0.0f);
+    c.scales = glm::vec4(float(scale), float(kOcclusionUnit), light_present_ ? 1.0f : 0.0f, 0.0f);
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       rsm_light_.emplace(ctx.gpu(), ctx.node().id + " rsm light", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -156,20 +166,24 @@ class LpvKernel final : public NodeKernel {
     };
     light_fixed_ = buffer("injected light", 48);
     occlusion_fixed_ = buffer("injected occlusion", 16);
-    light_[0] = buffer("light a", 48);
-    light_[1] = buffer("light b", 48);
     sum_ = buffer("light sum", 48);
-    occlusion_grid_ = buffer("occlusion", 16);
+    auto image = [&](const std::string& name, VkFormat format) {
+      return Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name,
+                                          .kind = ImageKind::image3d,
+                                          .format = format,
+                                          .width = uint32_t(grid_.counts.x),
+                                          .height = uint32_t(grid_.counts.y),
+                                          .depth = uint32_t(grid_.counts.z),
+                                          .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
+    };
     const char* channels[3] = {"red", "green", "blue"};
-    for (int c = 0; c < 3; ++c)
-      sum_images_[c] = Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " light sum " + channels[c],
-                                                    .kind = ImageKind::image3d,
-                                                    .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                                    .width = uint32_t(grid_.counts.x),
-                                                    .height = uint32_t(grid_.counts.y),
-                                                    .depth = uint32_t(grid_.counts.z),
-                                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
-    sum_images_new_ = true;
+    for (int c = 0; c < 3; ++c) {
+      sum_images_[c] = image(std::string("light sum ") + channels[c], VK_FORMAT_R16G16B16A16_SFLOAT);
+      light_[0][c] = image(std::string("light a ") + channels[c], VK_FORMAT_R32G32B32A32_SFLOAT);
+      light_[1][c] = image(std::string("light b ") + channels[c], VK_FORMAT_R32G32B32A32_SFLOAT);
+    }
+    occlusion_grid_ = image("occlusion", VK_FORMAT_R32G32B32A32_SFLOAT);
+    images_new_ = true;
     allocated_counts_ = grid_.counts;
   }
 
@@ -231,6 +245,11 @@ class LpvKernel final : public NodeKernel {
 
   void inject(PassContext& ctx) {
     VkCommandBuffer cmd = ctx.cmd();
+    if (images_new_)
+      for (const Image* image : {&sum_images_[0], &sum_images_[1], &sum_images_[2], &light_[0][0], &light_[0][1],
+                                 &light_[0][2], &light_[1][0], &light_[1][1], &light_[1][2], &occlusion_grid_})
+        image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    images_new_ = false;
     // Last frame's resolve read the fixed-point sums; clear them for this frame's atomics.
     memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
                    {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
@@ -244,27 +263,51 @@ class LpvKernel final : public NodeKernel {
                                       sampled_image(1, ctx.image("tmp.rsm_position").view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("tmp.rsm_normal").view(), ctx.nearest_sampler()),
                                       sampled_image(3, ctx.image("tmp.rsm_flux").view(), ctx.nearest_sampler()),
-                                      storage_buffer(4, light_fixed_.handle()),
-                                      storage_buffer(5, occlusion_fixed_.handle())};
+                                      storage_buffer(4, light_fixed_.handle())};
+    if (occlusion_) voxelize(ctx);
     if (light_present_) dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_inject.comp", inject, size, size);
     compute_to_compute_barrier(cmd);
     const DescriptorWrite resolve[] = {uniform_buffer(0, constants_->handle()),
                                        storage_buffer(1, light_fixed_.handle()),
                                        storage_buffer(2, occlusion_fixed_.handle()),
-                                       storage_buffer(3, light_[0].handle()),
-                                       storage_buffer(4, sum_.handle()),
-                                       storage_buffer(5, occlusion_grid_.handle())};
+                                       storage_image(3, light_[0][0].view()),
+                                       storage_image(4, light_[0][1].view()),
+                                       storage_image(5, light_[0][2].view()),
+                                       storage_buffer(6, sum_.handle()),
+                                       storage_image(7, occlusion_grid_.view())};
     dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_resolve.comp", resolve);
+  }
+
+  // The geometry volume from every draw's triangles (lpv_voxelize.comp).
+  void voxelize(PassContext& ctx) {
+    const SceneView& scene = ctx.scene();
+    const int slab_layers = std::max(1, kVoxelizeLoopIterations / (grid_.counts.x * grid_.counts.y));
+    const int slabs = (grid_.counts.z + slab_layers - 1) / slab_layers;
+    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
+      const GpuMesh& mesh = ctx.gpu_scene().mesh(scene.draws[i].mesh);
+      const uint32_t triangles = mesh.index_count / 3;
+      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, draws_->handle()),
+                                        storage_buffer(2, mesh.vertices.handle()),
+                                        storage_buffer(3, mesh.indices.handle()),
+                                        storage_buffer(4, occlusion_fixed_.handle())};
+      for (uint32_t first = 0; first < triangles; first += kTrianglesPerDispatch) {
+        const VoxelizePush push{i, first, std::min(triangles - first, kTrianglesPerDispatch), uint32_t(slab_layers)};
+        dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_voxelize.comp", writes, push.triangle_count, uint32_t(slabs),
+                         std::as_bytes(std::span(&push, 1)), kVoxelizeTile);
+      }
+    }
   }
 
   void propagate(PassContext& ctx) {
     for (int i = 0; i < iterations_; ++i) {
       compute_to_compute_barrier(ctx.cmd());
       const uint32_t occlude = occlusion_ && i > 0 ? 1u : 0u;
-      const DescriptorWrite writes[] = {
-          uniform_buffer(0, constants_->handle()),         storage_buffer(1, light_[i % 2].handle()),
-          storage_buffer(2, light_[(i + 1) % 2].handle()), storage_buffer(3, sum_.handle()),
-          storage_buffer(4, occlusion_grid_.handle()),     uniform_buffer(5, faces_->handle())};
+      std::array<Image, 3>&from = light_[i % 2], &to = light_[(i + 1) % 2];
+      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()),  general_sampled(ctx, 1, from[0]),
+                                        general_sampled(ctx, 2, from[1]),         general_sampled(ctx, 3, from[2]),
+                                        storage_image(4, to[0].view()),           storage_image(5, to[1].view()),
+                                        storage_image(6, to[2].view()),           storage_buffer(7, sum_.handle()),
+                                        general_sampled(ctx, 8, occlusion_grid_), uniform_buffer(9, faces_->handle())};
       dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_propagate.comp", writes, std::as_bytes(std::span(&occlude, 1)));
     }
   }
@@ -272,10 +315,6 @@ class LpvKernel final : public NodeKernel {
   // The sum into the 3D images (kept in the GENERAL layout), then per pixel.
   void lookup(PassContext& ctx) {
     VkCommandBuffer cmd = ctx.cmd();
-    if (sum_images_new_)
-      for (const Image& image : sum_images_)
-        image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-    sum_images_new_ = false;
     compute_to_compute_barrier(cmd);  // the sum's last writes; last frame's reads of the images
     const DescriptorWrite store[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, sum_.handle()),
                                      storage_image(2, sum_images_[0].view()), storage_image(3, sum_images_[1].view()),
@@ -311,6 +350,11 @@ class LpvKernel final : public NodeKernel {
                      low.desc().height, std::as_bytes(std::span(&k_, 1)));
   }
 
+  // A grid image read with texelFetch (kept in the GENERAL layout, as it is also written).
+  static DescriptorWrite general_sampled(PassContext& ctx, uint32_t binding, Image& image) {
+    return sampled_image(binding, image.view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL);
+  }
+
   // One invocation per cell: x across the grid, y down its rows of every slice (lpv_common.glsl).
   void dispatch_cells(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
                       std::span<const std::byte> push = {}) {
@@ -327,10 +371,13 @@ class LpvKernel final : public NodeKernel {
   bool light_present_ = false;
   glm::ivec3 allocated_counts_{0};  // none yet
   std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
-  Buffer light_fixed_, occlusion_fixed_, sum_, occlusion_grid_;
-  std::array<Buffer, 2> light_;
-  std::array<Image, 3> sum_images_;  // the sum per channel, filtered by the lookup
-  bool sum_images_new_ = false;      // not yet in the GENERAL layout
+  Buffer light_fixed_, occlusion_fixed_, sum_;
+  // Per channel: the light each step sends on, in turn (rgba32f, lpv_outflow's form), and the sum
+  // the lookup filters (rgba16f radiance); the occlusion.
+  std::array<std::array<Image, 3>, 2> light_;
+  std::array<Image, 3> sum_images_;
+  Image occlusion_grid_;
+  bool images_new_ = false;  // not yet in the GENERAL layout
 };
 
 }  // namespace

@@ -109,9 +109,9 @@ bool LpvVolume::inside(glm::ivec3 c) const {
 }
 
 double lpv_transmittance(const ShL1& source, const ShL1& destination, glm::dvec3 direction) {
-  ShL1 mean;
-  for (int k = 0; k < 4; ++k) mean[k] = 0.5 * (source[k] + destination[k]);
-  return 1.0 - std::clamp(sh_l1_eval(mean, -direction), 0.0, 1.0);
+  const double blocked =
+      0.5 * (sh_lobe_eval(sh_l1_lobe(source), -direction) + sh_lobe_eval(sh_l1_lobe(destination), -direction));
+  return 1.0 - std::clamp(blocked, 0.0, 1.0);
 }
 
 LpvVolume propagate_step(const LpvVolume& in, bool occlude) {

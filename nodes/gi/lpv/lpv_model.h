@@ -44,8 +44,9 @@ double sh_lobe_irradiance(const ShLobe& lobe, glm::dvec3 n);
 struct LpvVolume {
   glm::ivec3 counts{1};
   std::vector<std::array<ShL1, 3>> light;  // per cell, per channel: radiant intensity, W/sr
-  // Per cell: how much of the light crossing the cell is blocked, by direction of travel w
-  // evaluated at -w (surfels facing the light block it), clamped to [0, 1].
+  // Per cell: how much of the light crossing the cell is blocked, by direction of travel w: the
+  // coefficients read as a lobe (sh_l1_lobe) at -w (surfaces facing the light block it), clamped
+  // to [0, 1].
   std::vector<ShL1> occlusion;
 
   explicit LpvVolume(glm::ivec3 counts);
@@ -77,7 +78,9 @@ const std::array<std::array<LpvFace, kLpvFacesPerDirection>, 6>& lpv_faces();
 double sh_lobe_sampled_outflow(glm::dvec3 d);
 
 // The fraction of light travelling along `direction` that gets from a cell to its neighbour
-// through the occlusion of both (their mean, evaluated at -direction, clamped to [0, 1]).
+// through the occlusion of both (the mean of their lobes, sh_l1_lobe, at -direction, clamped to
+// [0, 1]): a surface blocks light that travels into it, not light that runs along it (the L1
+// series would block a quarter of that).
 double lpv_transmittance(const ShL1& source, const ShL1& destination, glm::dvec3 direction);
 
 // One step: the light of `in` moved to its face neighbours (only that: the caller adds the steps

@@ -39,8 +39,9 @@ ShLobe sh_l1_lobe(vec4 sh) {
   return ShLobe(max(c0 - 0.88622693 * b, 0.0) / 3.5449077, b, len > 0.0 ? band1 / len : vec3(0.0));
 }
 
-float sh_l1_lobe_eval(ShLobe l, vec3 w) {
-  return l.a + l.b * max(dot(l.d, w), 0.0);
+// The lobe packed as (a, b d): its value towards w is a + max(0, (b d) . w).
+vec4 sh_l1_lobe_packed(ShLobe l) {
+  return vec4(l.a, l.b * l.d);
 }
 
 // What a step sends out of a cell from a unit lobe max(0, d . w): its intensity towards each of
@@ -61,12 +62,13 @@ float sh_lobe_sampled_outflow(vec3 d) {
   return sum;
 }
 
-// The light a cell sends on: its lobe part scaled by pi / sh_lobe_sampled_outflow, as SH.
+// The light a cell sends on, in the form the next step reads: its lobe part scaled by
+// pi / sh_lobe_sampled_outflow (so the step keeps its power), as (a, b d): the intensity towards w
+// is a + max(0, (b d) . w). Read once per cell here rather than by each of its six neighbours.
 vec4 lpv_outflow(vec4 sh) {
   ShLobe l = sh_l1_lobe(sh);
-  if (!(l.b > 0.0)) return sh;
-  float extra = l.b * (LG_PI / sh_lobe_sampled_outflow(l.d) - 1.0);
-  return sh + extra * sh_l1_cosine_lobe(l.d);
+  if (l.b > 0.0) l.b *= LG_PI / sh_lobe_sampled_outflow(l.d);
+  return sh_l1_lobe_packed(l);
 }
 
 // The lobe's convolution with the clamped cosine about v: the integral over the sphere of

@@ -13,6 +13,7 @@
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/scene/gbuffer/shaders/draw_data.glsl"
+#include "nodes/gi/common/shaders/triangle_box.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;  // triangles x slabs (voxel_kernel.cpp)
 
@@ -36,27 +37,6 @@ vec3 vertex_position(uint v) {
 vec3 vertex_color(uint v) {
   uint o = kVertexFloats * v + kColorOffset;
   return vec3(vertices[o], vertices[o + 1u], vertices[o + 2u]);
-}
-
-// Whether the projections of the corners onto `axis` and the projection of a half-size-0.5 box at
-// the origin overlap (touching counts).
-bool overlap_on(vec3 axis, vec3 a, vec3 b, vec3 c) {
-  float pa = dot(axis, a), pb = dot(axis, b), pc = dot(axis, c);
-  float r = 0.5 * (abs(axis.x) + abs(axis.y) + abs(axis.z));
-  return min(pa, min(pb, pc)) <= r && max(pa, max(pb, pc)) >= -r;
-}
-
-// The triangle a, b, c (grid units, relative to the voxel's centre) against the voxel.
-bool overlaps_voxel(vec3 a, vec3 b, vec3 c, vec3 n) {
-  if (abs(dot(n, a)) > 0.5 * (abs(n.x) + abs(n.y) + abs(n.z))) return false;
-  vec3 edges[3] = vec3[3](b - a, c - b, a - c);
-  for (int e = 0; e < 3; ++e)
-    for (int k = 0; k < 3; ++k) {
-      vec3 unit = vec3(0.0);
-      unit[k] = 1.0;
-      if (!overlap_on(cross(unit, edges[e]), a, b, c)) return false;
-    }
-  return true;
 }
 
 void main() {
@@ -89,7 +69,7 @@ void main() {
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
         vec3 centre = vec3(x, y, z) + 0.5;
-        if (!overlaps_voxel(a - centre, b - centre, c - centre, n)) continue;
+        if (!triangle_overlaps_box(a - centre, b - centre, c - centre, n)) continue;
         uint base = LG_VOXEL_INTS * voxel_index(ivec3(x, y, z));
         atomicAdd(grid[base], albedo_fixed.r);
         atomicAdd(grid[base + 1u], albedo_fixed.g);
