@@ -44,48 +44,43 @@ float edge_term(vec3 a, vec3 b) {
   return s > 0.0f ? c.z * std::atan2(s, glm::dot(e0, e1)) / s : 0.0f;
 }
 
-// Where edge a-b crosses the plane through the origin with normal m (da, db: a's and b's
-// distances along m, of opposite signs).
+// Where edge a-b crosses the plane through the origin at signed distances da, db (a's, b's);
+// a when they do not straddle it, so that the callers' selects never see a division by zero.
 vec3 crossing(vec3 a, vec3 b, float da, float db) {
-  return a + (b - a) * (da / (da - db));
+  const float denom = da - db;
+  return a + (b - a) * (denom != 0.0f ? da / denom : 0.0f);
 }
 
 }  // namespace
 
+// The clips choose the kept part's ends by selects and take one edge term, not one per case, as
+// the shader does (a GPU, lavapipe too, runs every side of a branch its lanes disagree on).
 void ltc_add_cosine_edge(LtcCosineClip& c, vec3 a, vec3 b) {
-  if (a.z > 0.0f && b.z > 0.0f) {
-    c.sum += edge_term(a, b);
-  } else if (a.z > 0.0f) {
-    c.exit = crossing(a, b, a.z, b.z);
-    c.exited = true;
-    c.sum += edge_term(a, c.exit);
-  } else if (b.z > 0.0f) {
-    c.entry = crossing(a, b, a.z, b.z);
-    c.entered = true;
-    c.sum += edge_term(c.entry, b);
-  }
+  const bool a_in = a.z > 0.0f, b_in = b.z > 0.0f;
+  const vec3 x = crossing(a, b, a.z, b.z);
+  if (a_in && !b_in) c.exit = x, c.exited = true;
+  if (b_in && !a_in) c.entry = x, c.entered = true;
+  const float term = edge_term(a_in ? a : x, b_in ? b : x);
+  c.sum += a_in || b_in ? term : 0.0f;
 }
 
 void ltc_add_edge(LtcPolygon& poly, vec3 a, vec3 b) {
   const float da = glm::dot(poly.n, a), db = glm::dot(poly.n, b);
-  if (da > 0.0f && db > 0.0f) {
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
-  } else if (da > 0.0f) {
-    poly.exit = crossing(a, b, da, db);
-    poly.exited = true;
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit);
-  } else if (db > 0.0f) {
-    poly.entry = crossing(a, b, da, db);
-    poly.entered = true;
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
-  }
+  const bool a_in = da > 0.0f, b_in = db > 0.0f;
+  const vec3 x = crossing(a, b, da, db);
+  if (a_in && !b_in) poly.exit = x, poly.exited = true;
+  if (b_in && !a_in) poly.entry = x, poly.entered = true;
+  // An edge wholly below the horizon becomes the point x, which adds nothing.
+  ltc_add_cosine_edge(poly.cosine, poly.to_cosine * (a_in ? a : x), poly.to_cosine * (b_in ? b : x));
 }
 
 float ltc_finish(LtcPolygon& poly) {
-  if (poly.exited && poly.entered)
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit, poly.to_cosine * poly.entry);
+  // The horizon's chord where the surface clip cut the polygon (a point, adding nothing, where not).
+  const bool cut = poly.exited && poly.entered;
+  ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit, poly.to_cosine * (cut ? poly.entry : poly.exit));
   LtcCosineClip& c = poly.cosine;
-  if (c.exited && c.entered) c.sum += edge_term(c.exit, c.entry);
+  const float chord = edge_term(c.exit, c.entry);
+  c.sum += c.exited && c.entered ? chord : 0.0f;
   return std::fabs(c.sum) / (2.0f * kAreaLightPi);
 }
 

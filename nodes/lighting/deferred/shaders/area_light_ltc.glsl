@@ -34,8 +34,11 @@ float ltc_edge_term(vec3 a, vec3 b) {
   return s > 0.0 ? c.z * atan(s, dot(e0, e1)) / s : 0.0;
 }
 
+// Where edge a-b crosses the plane through the origin at signed distances da, db (a's, b's);
+// a when they do not straddle it, so that the caller's selects never see a division by zero.
 vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
-  return a + (b - a) * (da / (da - db));
+  float denom = da - db;
+  return a + (b - a) * (denom != 0.0 ? da / denom : 0.0);
 }
 
 struct LtcCosineClip {
@@ -61,39 +64,47 @@ LtcPolygon ltc_polygon(vec3 n, vec3 v, vec4 entry) {
   return LtcPolygon(normalize(n), ltc_to_cosine(n, v, entry), vec3(0.0), vec3(0.0), false, false, c);
 }
 
+// The clips choose the kept part's ends by selects and take one edge term, not one per case:
+// lavapipe runs every side of a branch its lanes disagree on (as GPUs do), and the edge term
+// (normalize, cross, atan) is the costly part.
 void ltc_add_cosine_edge(inout LtcCosineClip c, vec3 a, vec3 b) {
-  if (a.z > 0.0 && b.z > 0.0) {
-    c.sum += ltc_edge_term(a, b);
-  } else if (a.z > 0.0) {
-    c.exit_ = ltc_crossing(a, b, a.z, b.z);
+  bool a_in = a.z > 0.0, b_in = b.z > 0.0;
+  vec3 x = ltc_crossing(a, b, a.z, b.z);
+  if (a_in && !b_in) {
+    c.exit_ = x;
     c.exited = true;
-    c.sum += ltc_edge_term(a, c.exit_);
-  } else if (b.z > 0.0) {
-    c.entry = ltc_crossing(a, b, a.z, b.z);
-    c.entered = true;
-    c.sum += ltc_edge_term(c.entry, b);
   }
+  if (b_in && !a_in) {
+    c.entry = x;
+    c.entered = true;
+  }
+  float term = ltc_edge_term(a_in ? a : x, b_in ? b : x);
+  c.sum += a_in || b_in ? term : 0.0;
 }
 
 void ltc_add_edge(inout LtcPolygon poly, vec3 a, vec3 b) {
   float da = dot(poly.n, a), db = dot(poly.n, b);
-  if (da > 0.0 && db > 0.0) {
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
-  } else if (da > 0.0) {
-    poly.exit_ = ltc_crossing(a, b, da, db);
+  bool a_in = da > 0.0, b_in = db > 0.0;
+  vec3 x = ltc_crossing(a, b, da, db);
+  if (a_in && !b_in) {
+    poly.exit_ = x;
     poly.exited = true;
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit_);
-  } else if (db > 0.0) {
-    poly.entry = ltc_crossing(a, b, da, db);
-    poly.entered = true;
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
   }
+  if (b_in && !a_in) {
+    poly.entry = x;
+    poly.entered = true;
+  }
+  // An edge wholly below the horizon becomes the point x, which adds nothing.
+  ltc_add_cosine_edge(poly.cosine, poly.to_cosine * (a_in ? a : x), poly.to_cosine * (b_in ? b : x));
 }
 
 float ltc_finish(inout LtcPolygon poly) {
-  if (poly.exited && poly.entered)
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * poly.entry);
-  if (poly.cosine.exited && poly.cosine.entered) poly.cosine.sum += ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  // The horizon's chord where the surface clip cut the polygon (a point, adding nothing, where not).
+  bool cut = poly.exited && poly.entered;
+  ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * (cut ? poly.entry : poly.exit_));
+  bool cosine_cut = poly.cosine.exited && poly.cosine.entered;
+  float chord = ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  poly.cosine.sum += cosine_cut ? chord : 0.0;
   return abs(poly.cosine.sum) / (2.0 * LG_PI);
 }
 
