@@ -121,7 +121,16 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
     const vec3 in_plane = n - u * glm::dot(n, u);
     o.along = glm::length(in_plane) > 1e-6f ? glm::normalize(in_plane) : any_perpendicular(u);
   }
-  o.side = glm::cross(u, o.along);
+  // Each end's half circle lies across the ray to that end (the cross-section of its sphere's
+  // cone), not in the plane facing the centre: seen obliquely and near, the flat outline read a
+  // capsule up to 18% low.
+  for (int k = 0; k < 2; ++k) {
+    const vec3 w = glm::normalize(o.ends[k]);
+    const vec3 across = o.along - w * glm::dot(o.along, w);
+    const float across_len = glm::length(across);
+    o.axes[k] = across_len > 1e-6f ? across / across_len : o.along;
+    o.sides[k] = glm::normalize(glm::cross(w, o.axes[k]));
+  }
   return true;
 }
 
@@ -130,7 +139,7 @@ vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
   const int half = j / (kLtcArcSegments + 1);
   const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
   const float angle = start + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);
-  return o.ends[half] + o.radii[half] * (std::cos(angle) * o.along + std::sin(angle) * o.side);
+  return o.ends[half] + o.radii[half] * (std::cos(angle) * o.axes[half] + std::sin(angle) * o.sides[half]);
 }
 
 namespace {

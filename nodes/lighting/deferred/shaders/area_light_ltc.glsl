@@ -114,11 +114,24 @@ struct LtcOutline {
   float radius0;
   float radius1;
   vec3 along;
-  vec3 side;
+  vec3 axis0;
+  vec3 axis1;
+  vec3 side0;
+  vec3 side1;
 };
 
+// End k's half circle across the ray to it (w): the outline's along direction made perpendicular
+// to w, and the side direction.
+void ltc_end_frame(vec3 end_, vec3 along, out vec3 axis, out vec3 side) {
+  vec3 w = normalize(end_);
+  vec3 across = along - w * dot(along, w);
+  float across_len = length(across);
+  axis = across_len > 1e-6 ? across / across_len : along;
+  side = normalize(cross(w, axis));
+}
+
 bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o) {
-  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0));
+  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
   vec3 c = 0.5 * (a + b);
   float dc = length(c);
   if (!(dc > 0.0) || !(radius > 0.0)) return false;
@@ -143,7 +156,8 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
     vec3 in_plane = n - u * dot(n, u);
     o.along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
   }
-  o.side = cross(u, o.along);
+  ltc_end_frame(o.end0, o.along, o.axis0, o.side0);
+  ltc_end_frame(o.end1, o.along, o.axis1, o.side1);
   return true;
 }
 
@@ -151,8 +165,8 @@ vec3 ltc_outline_vertex(LtcOutline o, int j) {
   int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
   float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
   float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
-  vec3 offset = cos(angle) * o.along + sin(angle) * o.side;
-  return half_ == 0 ? o.end0 + o.radius0 * offset : o.end1 + o.radius1 * offset;
+  return half_ == 0 ? o.end0 + o.radius0 * (cos(angle) * o.axis0 + sin(angle) * o.side0)
+                    : o.end1 + o.radius1 * (cos(angle) * o.axis1 + sin(angle) * o.side1);
 }
 
 float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
