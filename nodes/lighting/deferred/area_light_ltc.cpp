@@ -113,13 +113,21 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
   }
   const vec3 axis = o.ends[1] - o.ends[0];
   const float len = glm::length(axis);
-  if (len > 1e-6f * dc) {
+  o.round = !(len > 1e-6f * dc);
+  if (!o.round) {
     o.along = axis / len;
   } else {
     // A sphere, or a capsule seen end on: its outline is round; one half polygon's edge lies
     // along the horizon's trace for symmetry.
     const vec3 in_plane = n - u * glm::dot(n, u);
     o.along = glm::length(in_plane) > 1e-6f ? glm::normalize(in_plane) : any_perpendicular(u);
+    // Drawn whole as one polygon of kLtcOutlineVertices sides, none wasted on the two zero-length
+    // edges where the half polygons would meet (a sphere at roughness 0.15 that gathers 0.64 of
+    // the lobe read 4.4% high as an 8-gon); the same area: R^2 N sin(2 pi / N) / 2 = pi r^2.
+    const float sides = float(kLtcOutlineVertices), segments = float(kLtcArcSegments);
+    const float regrow = std::sqrt(2.0f * kAreaLightPi / (sides * std::sin(2.0f * kAreaLightPi / sides))) /
+                         std::sqrt(kAreaLightPi / (segments * std::sin(kAreaLightPi / segments)));
+    o.radii[0] = o.radii[1] = std::max(o.radii[0], o.radii[1]) * regrow;
   }
   // Each end's half circle lies across the ray to that end (the cross-section of its sphere's
   // cone), not in the plane facing the centre: seen obliquely and near, the flat outline read a
@@ -136,6 +144,10 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
 
 vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
   // End 0's half circle faces away from end 1 (through -along), end 1's through +along.
+  if (o.round) {
+    const float angle = 0.5f * kAreaLightPi + 2.0f * kAreaLightPi * float(j) / float(kLtcOutlineVertices);
+    return o.ends[0] + o.radii[0] * (std::cos(angle) * o.axes[0] + std::sin(angle) * o.sides[0]);
+  }
   const int half = j / (kLtcArcSegments + 1);
   const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
   const float angle = start + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);

@@ -60,6 +60,7 @@ struct LtcOutline {
   glm::vec3 along;     // end 0 to end 1 in the plane facing the centre (round: see the .cpp)
   glm::vec3 axes[2];   // each end's half circle: along, and sides, across the ray to that end
   glm::vec3 sides[2];
+  bool round;  // a sphere, or a capsule seen end on: one polygon around ends[0]
 };
 bool ltc_capsule_outline(glm::vec3 a, glm::vec3 b, float radius, glm::vec3 n, LtcOutline& outline);
 glm::vec3 ltc_outline_vertex(const LtcOutline& outline, int j);

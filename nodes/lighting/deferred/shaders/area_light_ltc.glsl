@@ -118,6 +118,7 @@ struct LtcOutline {
   vec3 axis1;
   vec3 side0;
   vec3 side1;
+  bool round_;
 };
 
 // End k's half circle across the ray to it (w): the outline's along direction made perpendicular
@@ -131,7 +132,7 @@ void ltc_end_frame(vec3 end_, vec3 along, out vec3 axis, out vec3 side) {
 }
 
 bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o) {
-  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), false);
   vec3 c = 0.5 * (a + b);
   float dc = length(c);
   if (!(dc > 0.0) || !(radius > 0.0)) return false;
@@ -150,11 +151,16 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
   o.radius1 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
   vec3 axis = o.end1 - o.end0;
   float len = length(axis);
-  if (len > 1e-6 * dc) {
+  o.round_ = !(len > 1e-6 * dc);
+  if (!o.round_) {
     o.along = axis / len;
   } else {
     vec3 in_plane = n - u * dot(n, u);
     o.along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
+    float sides = float(LG_LTC_OUTLINE_VERTICES);
+    float regrow = sqrt(2.0 * LG_PI / (sides * sin(2.0 * LG_PI / sides))) / grow;
+    o.radius0 = max(o.radius0, o.radius1) * regrow;
+    o.radius1 = o.radius0;
   }
   ltc_end_frame(o.end0, o.along, o.axis0, o.side0);
   ltc_end_frame(o.end1, o.along, o.axis1, o.side1);
@@ -165,6 +171,9 @@ vec3 ltc_outline_vertex(LtcOutline o, int j) {
   int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
   float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
   float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
+  // A round outline is one polygon around end 0.
+  angle = o.round_ ? 0.5 * LG_PI + 2.0 * LG_PI * float(j) / float(LG_LTC_OUTLINE_VERTICES) : angle;
+  half_ = o.round_ ? 0 : half_;
   return half_ == 0 ? o.end0 + o.radius0 * (cos(angle) * o.axis0 + sin(angle) * o.side0)
                     : o.end1 + o.radius1 * (cos(angle) * o.axis1 + sin(angle) * o.side1);
 }
