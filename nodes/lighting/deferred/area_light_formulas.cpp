@@ -133,17 +133,15 @@ void walk_arc(HorizonWalk& walk, const CircleArc& arc) {
   float B = arc.sin_a * glm::dot(walk.n, arc.e1);
   float C = arc.sin_a * glm::dot(walk.n, arc.e2);
   float R = std::sqrt(B * B + C * C);
-  if (A >= R) {
-    walk_arc_part(walk, arc, 0.0f, arc.psi_end);
-    return;
-  }
-  if (A <= -R) return;
+  // All above the horizon (the whole arc is the first part) or all below (no part). Two parts,
+  // not a third for the whole arc: a GPU (lavapipe too) runs every part its lanes disagree on.
+  bool whole = A >= R, none = A <= -R;
   float mid = std::atan2(C, B);
   float half = std::acos(std::fmin(std::fmax(-A / R, -1.0f), 1.0f));
   for (int k = 0; k < 2; ++k) {
-    float lo = std::fmax(mid - half + 2.0f * kAreaLightPi * float(k), 0.0f);
-    float hi = std::fmin(mid + half + 2.0f * kAreaLightPi * float(k), arc.psi_end);
-    if (lo < hi) walk_arc_part(walk, arc, lo, hi);
+    float lo = whole ? 0.0f : std::fmax(mid - half + 2.0f * kAreaLightPi * float(k), 0.0f);
+    float hi = whole ? arc.psi_end : std::fmin(mid + half + 2.0f * kAreaLightPi * float(k), arc.psi_end);
+    if (!none && (whole ? k == 0 : lo < hi)) walk_arc_part(walk, arc, lo, hi);
   }
 }
 

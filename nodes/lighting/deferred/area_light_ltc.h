@@ -50,14 +50,18 @@ void ltc_add_edge(LtcPolygon& poly, glm::vec3 a, glm::vec3 b);
 float ltc_finish(LtcPolygon& poly);
 
 // The outline of a capsule with ends a and b (relative to the shaded point; a = b for a sphere)
-// as it is seen, laid in the plane through its centre facing the point: each end's sphere as the
-// disk there that subtends its cone, the ends' disks joined by their tangent lines; a half circle
-// is a half polygon of kLtcArcSegments segments of the same area. False for no outline (zero
-// radius, or the point at the centre).
+// as it is seen: each end carried along its ray onto the plane through the centre facing the
+// point, its sphere as the disk across that ray that subtends the sphere's cone, the ends' disks
+// joined by their tangent lines; a half circle is a half polygon of kLtcArcSegments segments of
+// the same area. A sphere (or a capsule seen end on) is one polygon of kLtcOutlineVertices sides
+// of the disk's area. False for no outline (zero radius, or the point at the centre).
 struct LtcOutline {
   glm::vec3 ends[2];
-  float radii[2];  // of the half polygons' corners
-  glm::vec3 along, side;
+  float radii[2];      // of the polygons' corners
+  glm::vec3 along;     // end 0 to end 1 in the plane facing the centre
+  glm::vec3 axes[2];   // each end's half circle: along, and sides, across the ray to that end
+  glm::vec3 sides[2];
+  bool round;          // one polygon around ends[0]
 };
 bool ltc_capsule_outline(glm::vec3 a, glm::vec3 b, float radius, glm::vec3 n, LtcOutline& outline);
 glm::vec3 ltc_outline_vertex(const LtcOutline& outline, int j);

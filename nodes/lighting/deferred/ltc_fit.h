@@ -11,7 +11,8 @@ namespace lg {
 struct LtcFit {
   glm::dmat3 m;        // the transform M of the cosine lobe (its inverse is what shaders use)
   glm::dvec4 entry;    // M^-1 scaled to a middle element of 1, as the table stores it
-  double error = 0.0;  // the fit's objective at M (below)
+  double error = 0.0;      // the first stage's objective (below)
+  double cap_error = 0.0;  // the second stage's: mean squared error of the caps' integrals
   int evaluations = 0;
 };
 
@@ -27,7 +28,13 @@ struct LtcFit {
 // heuristic. Heitz et al. fit |lobe - LTC|^3, which favours the peak; the first power weighs the
 // lobe's tails, where most shading points see a light, as much: on 120 random lights and views
 // (roughness 0.25 to 1) the specular's relative RMS fell from 24% (cube) and 19% (square) to
-// 14%; a power of 1.5 gave 15%, of 0.5 92%. Deterministic: the same inputs give the same fit.
+// 14%; a power of 1.5 gave 15%, of 0.5 92%. That is the first stage. The second starts there and
+// fits the integrals the area lights use: the LTC's integral over about 180 cones of directions
+// (half-angles 3 to 40 degrees over the hemisphere and across its horizon, and the lobe's width
+// around its peak; clipped to the horizon as the shaders clip) against the lobe's, in least
+// squares. On the benchmark's 1200 points it took LTC's relative RMS from 0.20 to 0.16, across
+// the horizon for rectangles from 0.44 to 0.34 (README.md). Deterministic: the same inputs give
+// the same fit.
 LtcFit fit_ltc(double n_dot_v, double roughness);
 
 // The density of the LTC with inverse transform m_inv at unit direction l (zero below its

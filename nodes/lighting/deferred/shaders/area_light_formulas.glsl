@@ -106,17 +106,13 @@ void walk_arc(inout HorizonWalk walk, CircleArc arc) {
   float B = arc.sin_a * dot(walk.n, arc.e1);
   float C = arc.sin_a * dot(walk.n, arc.e2);
   float R = sqrt(B * B + C * C);
-  if (A >= R) {
-    walk_arc_part(walk, arc, 0.0, arc.psi_end);
-    return;
-  }
-  if (A <= -R) return;
+  bool whole = A >= R, none = A <= -R;
   float mid = atan(C, B);
   float half_width = acos(clamp(-A / R, -1.0, 1.0));
   for (int k = 0; k < 2; ++k) {
-    float lo = max(mid - half_width + 2.0 * LG_PI * float(k), 0.0);
-    float hi = min(mid + half_width + 2.0 * LG_PI * float(k), arc.psi_end);
-    if (lo < hi) walk_arc_part(walk, arc, lo, hi);
+    float lo = whole ? 0.0 : max(mid - half_width + 2.0 * LG_PI * float(k), 0.0);
+    float hi = whole ? arc.psi_end : min(mid + half_width + 2.0 * LG_PI * float(k), arc.psi_end);
+    if (!none && (whole ? k == 0 : lo < hi)) walk_arc_part(walk, arc, lo, hi);
   }
 }
 

@@ -34,8 +34,11 @@ float ltc_edge_term(vec3 a, vec3 b) {
   return s > 0.0 ? c.z * atan(s, dot(e0, e1)) / s : 0.0;
 }
 
+// Where edge a-b crosses the plane through the origin at signed distances da, db (a's, b's);
+// a when they do not straddle it, so that the caller's selects never see a division by zero.
 vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
-  return a + (b - a) * (da / (da - db));
+  float denom = da - db;
+  return a + (b - a) * (denom != 0.0 ? da / denom : 0.0);
 }
 
 struct LtcCosineClip {
@@ -61,39 +64,47 @@ LtcPolygon ltc_polygon(vec3 n, vec3 v, vec4 entry) {
   return LtcPolygon(normalize(n), ltc_to_cosine(n, v, entry), vec3(0.0), vec3(0.0), false, false, c);
 }
 
+// The clips choose the kept part's ends by selects and take one edge term, not one per case:
+// lavapipe runs every side of a branch its lanes disagree on (as GPUs do), and the edge term
+// (normalize, cross, atan) is the costly part.
 void ltc_add_cosine_edge(inout LtcCosineClip c, vec3 a, vec3 b) {
-  if (a.z > 0.0 && b.z > 0.0) {
-    c.sum += ltc_edge_term(a, b);
-  } else if (a.z > 0.0) {
-    c.exit_ = ltc_crossing(a, b, a.z, b.z);
+  bool a_in = a.z > 0.0, b_in = b.z > 0.0;
+  vec3 x = ltc_crossing(a, b, a.z, b.z);
+  if (a_in && !b_in) {
+    c.exit_ = x;
     c.exited = true;
-    c.sum += ltc_edge_term(a, c.exit_);
-  } else if (b.z > 0.0) {
-    c.entry = ltc_crossing(a, b, a.z, b.z);
-    c.entered = true;
-    c.sum += ltc_edge_term(c.entry, b);
   }
+  if (b_in && !a_in) {
+    c.entry = x;
+    c.entered = true;
+  }
+  float term = ltc_edge_term(a_in ? a : x, b_in ? b : x);
+  c.sum += a_in || b_in ? term : 0.0;
 }
 
 void ltc_add_edge(inout LtcPolygon poly, vec3 a, vec3 b) {
   float da = dot(poly.n, a), db = dot(poly.n, b);
-  if (da > 0.0 && db > 0.0) {
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * b);
-  } else if (da > 0.0) {
-    poly.exit_ = ltc_crossing(a, b, da, db);
+  bool a_in = da > 0.0, b_in = db > 0.0;
+  vec3 x = ltc_crossing(a, b, da, db);
+  if (a_in && !b_in) {
+    poly.exit_ = x;
     poly.exited = true;
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * a, poly.to_cosine * poly.exit_);
-  } else if (db > 0.0) {
-    poly.entry = ltc_crossing(a, b, da, db);
-    poly.entered = true;
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.entry, poly.to_cosine * b);
   }
+  if (b_in && !a_in) {
+    poly.entry = x;
+    poly.entered = true;
+  }
+  // An edge wholly below the horizon becomes the point x, which adds nothing.
+  ltc_add_cosine_edge(poly.cosine, poly.to_cosine * (a_in ? a : x), poly.to_cosine * (b_in ? b : x));
 }
 
 float ltc_finish(inout LtcPolygon poly) {
-  if (poly.exited && poly.entered)
-    ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * poly.entry);
-  if (poly.cosine.exited && poly.cosine.entered) poly.cosine.sum += ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  // The horizon's chord where the surface clip cut the polygon (a point, adding nothing, where not).
+  bool cut = poly.exited && poly.entered;
+  ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * (cut ? poly.entry : poly.exit_));
+  bool cosine_cut = poly.cosine.exited && poly.cosine.entered;
+  float chord = ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  poly.cosine.sum += cosine_cut ? chord : 0.0;
   return abs(poly.cosine.sum) / (2.0 * LG_PI);
 }
 
@@ -103,11 +114,25 @@ struct LtcOutline {
   float radius0;
   float radius1;
   vec3 along;
-  vec3 side;
+  vec3 axis0;
+  vec3 axis1;
+  vec3 side0;
+  vec3 side1;
+  bool round_;
 };
 
+// End k's half circle across the ray to it (w): the outline's along direction made perpendicular
+// to w, and the side direction.
+void ltc_end_frame(vec3 end_, vec3 along, out vec3 axis, out vec3 side) {
+  vec3 w = normalize(end_);
+  vec3 across = along - w * dot(along, w);
+  float across_len = length(across);
+  axis = across_len > 1e-6 ? across / across_len : along;
+  side = normalize(cross(w, axis));
+}
+
 bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o) {
-  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0));
+  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), false);
   vec3 c = 0.5 * (a + b);
   float dc = length(c);
   if (!(dc > 0.0) || !(radius > 0.0)) return false;
@@ -126,13 +151,19 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
   o.radius1 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
   vec3 axis = o.end1 - o.end0;
   float len = length(axis);
-  if (len > 1e-6 * dc) {
+  o.round_ = !(len > 1e-6 * dc);
+  if (!o.round_) {
     o.along = axis / len;
   } else {
     vec3 in_plane = n - u * dot(n, u);
     o.along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
+    float sides = float(LG_LTC_OUTLINE_VERTICES);
+    float regrow = sqrt(2.0 * LG_PI / (sides * sin(2.0 * LG_PI / sides))) / grow;
+    o.radius0 = max(o.radius0, o.radius1) * regrow;
+    o.radius1 = o.radius0;
   }
-  o.side = cross(u, o.along);
+  ltc_end_frame(o.end0, o.along, o.axis0, o.side0);
+  ltc_end_frame(o.end1, o.along, o.axis1, o.side1);
   return true;
 }
 
@@ -140,8 +171,11 @@ vec3 ltc_outline_vertex(LtcOutline o, int j) {
   int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
   float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
   float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
-  vec3 offset = cos(angle) * o.along + sin(angle) * o.side;
-  return half_ == 0 ? o.end0 + o.radius0 * offset : o.end1 + o.radius1 * offset;
+  // A round outline is one polygon around end 0.
+  angle = o.round_ ? 0.5 * LG_PI + 2.0 * LG_PI * float(j) / float(LG_LTC_OUTLINE_VERTICES) : angle;
+  half_ = o.round_ ? 0 : half_;
+  return half_ == 0 ? o.end0 + o.radius0 * (cos(angle) * o.axis0 + sin(angle) * o.side0)
+                    : o.end1 + o.radius1 * (cos(angle) * o.axis1 + sin(angle) * o.side1);
 }
 
 float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {

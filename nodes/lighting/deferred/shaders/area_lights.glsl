@@ -25,6 +25,14 @@ layout(std430, binding = 22) readonly buffer Ltc { vec4 ltc_table[]; };
 // compiler drops the other); scene.forward_transparent keeps the default.
 layout(constant_id = 1) const bool area_specular_ltc = true;
 
+// True where every point of the light's bounding sphere (centre c, radius `bound`) lies below the
+// surface's horizon: neither its diffuse nor its specular (the GGX lobe is clipped there) can
+// reach the point, so the light is skipped (exact; whole tiles of a wall or of a sphere's far
+// side skip its cost).
+bool below_horizon(Surface s, vec3 c, float bound) {
+  return dot(s.normal, c - s.position) < -bound;
+}
+
 vec3 reflection_dir(Surface s) {
   return reflect(-s.view, s.normal);
 }
@@ -48,6 +56,7 @@ vec3 area_radiance(Surface s) {
     SphereLight l = spheres[i];
     vec3 c = l.center_radius.xyz;
     float radius = l.center_radius.w;
+    if (below_horizon(s, c, radius)) continue;
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, sphere_extent(radius, normalize(s.position - c)));
     added += diffuse_brdf * radiance * sphere_irradiance(c, radius, s.position, s.normal);
     if (area_specular_ltc) {
@@ -62,6 +71,7 @@ vec3 area_radiance(Surface s) {
     vec3 a = l.end0_radius.xyz, b = l.end1.xyz;
     float radius = l.end0_radius.w;
     vec3 c = 0.5 * (a + b);
+    if (below_horizon(s, c, 0.5 * length(b - a) + radius)) continue;
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.end1.w, c, tube_extent(a, b, radius, normalize(s.position - c)));
     added += diffuse_brdf * radiance * tube_irradiance(a, b, radius, s.position, s.normal);
     if (area_specular_ltc) {
@@ -79,6 +89,7 @@ vec3 area_radiance(Surface s) {
     RectLight l = rects[i];
     vec3 c = l.center_two_sided.xyz, hx = l.half_x.xyz, hy = l.half_y.xyz;
     bool two_sided = l.center_two_sided.w > 0.0;
+    if (below_horizon(s, c, length(hx + hy))) continue;
     vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, rect_extent(hx, hy, normalize(s.position - c)));
     added += diffuse_brdf * radiance * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
     if (area_specular_ltc) {
