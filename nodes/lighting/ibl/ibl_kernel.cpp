@@ -1,5 +1,6 @@
 #include "nodes/lighting/ibl/ibl_kernel.h"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 
@@ -7,6 +8,7 @@
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/env/common/sh_basis.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/host_buffer.h"
@@ -19,7 +21,6 @@ namespace lg {
 namespace {
 
 struct Push {  // nodes/lighting/ibl/shaders/ibl.comp
-  uint32_t flags;
   float intensity;
 };
 
@@ -147,10 +148,13 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
     bindings.push_back({b, b == 6 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   bindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   for (uint32_t b = 13; b <= 15; ++b) bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-  const Pipeline& pipeline =
-      pipelines.compute({name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"), std::move(bindings), sizeof(Push)});
+  // The shader's specialization constants: the flags, and the SH coefficients the buffer holds.
+  const uint32_t coefficients =
+      uint32_t(std::min<uint64_t>(sh.size() / (4 * sizeof(float)), uint64_t(sh_count(kMaxShOrder))));
+  const Pipeline& pipeline = pipelines.compute({name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"),
+                                                std::move(bindings), sizeof(Push), {flags, coefficients}});
   bind_pipeline(gpu, cmd, pipeline, writes);
-  push_constants(cmd, pipeline, Push{flags, settings.intensity});
+  push_constants(cmd, pipeline, Push{settings.intensity});
   dispatch_texels(cmd, in.color->desc().width, in.color->desc().height);
 }
 
