@@ -21,6 +21,19 @@
 // confidence), that is mixed toward theirs by the confidence (SSR wins where it is sure), before
 // the split sum and specular occlusion.
 // Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
+
+// The features a plan uses and the SH coefficient count are specialization constants
+// (record_ibl): lavapipe runs both sides of a branch on a uniform value, masked, so every unused
+// input's fetch and filter cost time until the compiler could drop them, and a constant count
+// unrolls the SH sums into registers and sizes the SH's uniform block (ibl_environment.glsl;
+// nodes/lighting/ibl/README.md has the times).
+// Flags: 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular
+// occlusion, 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections, 256
+// reflection probes.
+layout(constant_id = 0) const uint flags = 0u;
+layout(constant_id = 1) const int sh_count = 9;  // coefficients in `sh`, 1 to LG_SH_MAX_COUNT
+#define LG_IBL_SH_UNIFORM_COUNT sh_count
+
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
@@ -41,15 +54,6 @@ layout(binding = 12, rgba16f) uniform writeonly image2D color;
 layout(binding = 13) uniform sampler2D volume_tex;  // rgb irradiance (W/m^2), a coverage
 layout(binding = 14) uniform sampler2D ssr_tex;     // rgb reflected radiance, a confidence
 layout(binding = 15) uniform sampler2D probes_tex;  // rgb reflected radiance, a coverage
-// The features a plan uses and the SH coefficient count are specialization constants
-// (record_ibl): lavapipe runs both sides of a branch on a uniform value, masked, so every unused
-// input's fetch and filter cost time until the compiler could drop them, and a constant count
-// unrolls the SH sums into registers (nodes/lighting/ibl/README.md has the times).
-// Flags: 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular
-// occlusion, 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections, 256
-// reflection probes.
-layout(constant_id = 0) const uint flags = 0u;
-layout(constant_id = 1) const int sh_count = 9;  // coefficients in `sh`, at most LG_SH_MAX_COUNT
 layout(push_constant) uniform Push { float intensity; };
 
 // Irradiance through the visibility cone about `bent` per unit visibility (ibl_occlusion.glsl):
