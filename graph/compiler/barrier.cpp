@@ -23,10 +23,10 @@ std::string stage_names(uint32_t stages) {
 }
 
 std::string access_names(uint32_t access) {
-  static constexpr std::array<std::string_view, 7> names = {
+  static constexpr std::array<std::string_view, 8> names = {
       "SHADER_SAMPLED_READ",     "SHADER_STORAGE_READ",           "SHADER_STORAGE_WRITE",
       "COLOR_ATTACHMENT_READ",   "COLOR_ATTACHMENT_WRITE",        "DEPTH_STENCIL_ATTACHMENT_READ",
-      "DEPTH_STENCIL_ATTACHMENT_WRITE"};
+      "DEPTH_STENCIL_ATTACHMENT_WRITE", "UNIFORM_READ"};
   return flag_names(access, names);
 }
 

@@ -25,6 +25,7 @@ enum Access : uint32_t {
   access_color_attachment_write = 1u << 4,
   access_depth_stencil_attachment_read = 1u << 5,
   access_depth_stencil_attachment_write = 1u << 6,
+  access_uniform_read = 1u << 7,
 };
 inline constexpr uint32_t access_write_mask =
     access_shader_storage_write | access_color_attachment_write | access_depth_stencil_attachment_write;

@@ -62,8 +62,8 @@ constexpr AccessInfo describe_access(Usage usage, Queue queue, bool buffer, bool
       if (depth) return {depth_stages, depth_access, Layout::attachment, true};
       return {stage_color_attachment_output, access_color_attachment_read | access_color_attachment_write,
               Layout::attachment, true};
-    case Usage::buffer_read:
-      return {shader, access_shader_storage_read, Layout::none, false};
+    case Usage::buffer_read:  // bound as a storage or a uniform buffer (lighting.ibl's SH)
+      return {shader, access_shader_storage_read | access_uniform_read, Layout::none, false};
     case Usage::buffer_write:
       return {shader, access_shader_storage_write, Layout::none, true};
   }

@@ -25,6 +25,7 @@ VkAccessFlags2 vk_access(uint32_t access) {
   if (access & access_color_attachment_write) out |= VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
   if (access & access_depth_stencil_attachment_read) out |= VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
   if (access & access_depth_stencil_attachment_write) out |= VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  if (access & access_uniform_read) out |= VK_ACCESS_2_UNIFORM_READ_BIT;
   return out;
 }
 

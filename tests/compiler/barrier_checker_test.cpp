@@ -45,7 +45,7 @@ Use rule(Usage u, Queue q, const LoweredResource& r) {
                  : Use{-1, stage_color_attachment_output, access_color_attachment_read | access_color_attachment_write,
                        true, Layout::attachment};
     case Usage::buffer_read:
-      return {-1, shader, access_shader_storage_read, false, Layout::none};
+      return {-1, shader, access_shader_storage_read | access_uniform_read, false, Layout::none};
     case Usage::buffer_write:
       return {-1, shader, access_shader_storage_write, true, Layout::none};
   }

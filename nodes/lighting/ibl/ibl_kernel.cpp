@@ -1,5 +1,6 @@
 #include "nodes/lighting/ibl/ibl_kernel.h"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 
@@ -7,6 +8,7 @@
 #include "nodes/common/compute.h"
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
+#include "nodes/env/common/sh_basis.h"
 #include "runtime/gpu/descriptors.h"
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/host_buffer.h"
@@ -19,7 +21,6 @@ namespace lg {
 namespace {
 
 struct Push {  // nodes/lighting/ibl/shaders/ibl.comp
-  uint32_t flags;
   float intensity;
 };
 
@@ -98,7 +99,7 @@ void IblFallbacks::prepare(VkCommandBuffer cmd) {
   vkCmdFillBuffer(cmd, sh.handle(), 0, VK_WHOLE_SIZE, 0);
   auto b = vk_struct<VkBufferMemoryBarrier2>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2);
   b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  b.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, b.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+  b.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, b.dstAccessMask = VK_ACCESS_2_UNIFORM_READ_BIT;
   b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.buffer = sh.handle();
   b.size = VK_WHOLE_SIZE;
@@ -131,7 +132,7 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
       sampled_image(3, in.albedo->view(), nearest),
       sampled_image(4, in.material->view(), nearest),
       sampled_image(5, (in.direct ? in.direct : &fallbacks.direct)->view(), nearest),
-      storage_buffer(6, sh.handle()),
+      uniform_buffer(6, sh.handle()),  // ibl_environment.glsl: a uniform block in this pass
       sampled_image(7, (in.irradiance ? in.irradiance : &fallbacks.irradiance)->view(), linear),
       sampled_image(8, in.specular->view(), linear),
       sampled_image(9, in.brdf_lut->view(), linear),
@@ -144,13 +145,16 @@ void record_ibl(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, con
   };
   std::vector<DescriptorBinding> bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
   for (uint32_t b = 1; b <= 11; ++b)
-    bindings.push_back({b, b == 6 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    bindings.push_back({b, b == 6 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   bindings.push_back({12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
   for (uint32_t b = 13; b <= 15; ++b) bindings.push_back({b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-  const Pipeline& pipeline =
-      pipelines.compute({name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"), std::move(bindings), sizeof(Push)});
+  // The shader's specialization constants: the flags, and the SH coefficients the buffer holds.
+  const uint32_t coefficients =
+      uint32_t(std::min<uint64_t>(sh.size() / (4 * sizeof(float)), uint64_t(sh_count(kMaxShOrder))));
+  const Pipeline& pipeline = pipelines.compute({name, node_shader("nodes/lighting/ibl/shaders/ibl.comp"),
+                                                std::move(bindings), sizeof(Push), {flags, coefficients}});
   bind_pipeline(gpu, cmd, pipeline, writes);
-  push_constants(cmd, pipeline, Push{flags, settings.intensity});
+  push_constants(cmd, pipeline, Push{settings.intensity});
   dispatch_texels(cmd, in.color->desc().width, in.color->desc().height);
 }
 

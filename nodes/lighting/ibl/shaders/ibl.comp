@@ -21,6 +21,19 @@
 // confidence), that is mixed toward theirs by the confidence (SSR wins where it is sure), before
 // the split sum and specular occlusion.
 // Pixels with no surface (depth 0) show the prefiltered mip 0 along the view ray.
+
+// The features a plan uses and the SH coefficient count are specialization constants
+// (record_ibl): lavapipe runs both sides of a branch on a uniform value, masked, so every unused
+// input's fetch and filter cost time until the compiler could drop them, and a constant count
+// unrolls the SH sums into registers and sizes the SH's uniform block (ibl_environment.glsl;
+// nodes/lighting/ibl/README.md has the times).
+// Flags: 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular
+// occlusion, 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections, 256
+// reflection probes.
+layout(constant_id = 0) const uint flags = 0u;
+layout(constant_id = 1) const int sh_count = 9;  // coefficients in `sh`, 1 to LG_SH_MAX_COUNT
+#define LG_IBL_SH_UNIFORM_COUNT sh_count
+
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/env/common/shaders/sh_basis.glsl"
@@ -41,27 +54,20 @@ layout(binding = 12, rgba16f) uniform writeonly image2D color;
 layout(binding = 13) uniform sampler2D volume_tex;  // rgb irradiance (W/m^2), a coverage
 layout(binding = 14) uniform sampler2D ssr_tex;     // rgb reflected radiance, a confidence
 layout(binding = 15) uniform sampler2D probes_tex;  // rgb reflected radiance, a coverage
-layout(push_constant) uniform Push {
-  // 1 diffuse from SH (else the map), 2 direct, 4 ao, 8 bent normals, 16 specular occlusion,
-  // 32 multi-bounce occlusion, 64 irradiance volume, 128 screen-space reflections, 256 reflection
-  // probes
-  uint flags;
-  float intensity;
-};
+layout(push_constant) uniform Push { float intensity; };
 
 // Irradiance through the visibility cone about `bent` per unit visibility (ibl_occlusion.glsl):
 // bands 0 to 2 by the cone's moments, band 4 by its zonal factor about the bent normal.
 vec3 sh_cone_irradiance(vec3 n, vec3 bent, float cone_cos) {
   float w[9];
   cone_lobe_weights(n, bent, cone_cos, w);
-  int count = min(int(sh.length()), LG_SH_MAX_COUNT);
   vec3 e = vec3(0.0);
-  for (int k = 0; k < min(count, 9); ++k) e += sh[k].rgb * w[k];
-  if (count > 16) {
+  for (int k = 0; k < min(sh_count, 9); ++k) e += sh[k].rgb * w[k];
+  if (sh_count > 16) {
     float y[LG_SH_MAX_COUNT];
     sh_evaluate(bent, y);
     float band4 = cone_band4_ratio(cone_cos);
-    for (int k = 16; k < count; ++k) e += band4 * sh[k].rgb * y[k];
+    for (int k = 16; k < sh_count; ++k) e += band4 * sh[k].rgb * y[k];
   }
   return max(e, vec3(0.0));
 }
@@ -72,12 +78,10 @@ void main() {
   vec3 direct = (flags & 2u) != 0u ? texelFetch(direct_tex, texel, 0).rgb : vec3(0.0);
   float depth = texelFetch(depth_tex, texel, 0).r;
   vec3 eye = camera.position.xyz;
-  if (depth <= 0.0) {
-    vec3 ray = normalize(world_position(camera, texel, 1.0) - eye);
-    imageStore(color, texel, vec4(direct + intensity * textureLod(specular_map, ray, 0.0).rgb, 1.0));
-    return;
-  }
-  vec3 p = world_position(camera, texel, depth);
+  // A sky pixel (no surface) looks up the prefiltered map along the view ray in the same fetch a
+  // surface's reflection uses: lavapipe runs both sides of the branch, so two lookups cost two.
+  bool sky = depth <= 0.0;
+  vec3 p = world_position(camera, texel, sky ? 1.0 : depth);
   vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
   vec3 v = normalize(eye - p);
   vec4 albedo_occlusion = texelFetch(albedo_tex, texel, 0);
@@ -120,7 +124,12 @@ void main() {
   vec3 diffuse = image_based_diffuse(diffuse_color, f0, scale_bias, irradiance_over_pi, occlusion);
 
   vec3 r = reflect(-v, n);
-  vec3 reflected = intensity * prefiltered_radiance(r, roughness);
+  float mips = float(textureQueryLevels(specular_map));
+  vec3 reflected = intensity * textureLod(specular_map, sky ? -v : r, sky ? 0.0 : roughness * (mips - 1.0)).rgb;
+  if (sky) {
+    imageStore(color, texel, vec4(direct + reflected, 1.0));
+    return;
+  }
   if ((flags & 256u) != 0u) {
     vec4 probes = texelFetch(probes_tex, texel, 0);
     reflected = mix(reflected, probes.rgb, clamp(probes.a, 0.0, 1.0));

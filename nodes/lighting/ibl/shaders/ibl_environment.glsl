@@ -8,7 +8,15 @@
 #include "nodes/env/common/shaders/sh_basis.glsl"
 #include "nodes/lighting/ibl/shaders/ibl_shading.glsl"
 
+// The SH coefficients: a storage buffer, or where the includer defines LG_IBL_SH_UNIFORM_COUNT
+// (lighting.ibl), the same buffer as a uniform block of that many. lavapipe (Mesa 22.3) loads
+// from a storage buffer one pixel at a time even where every pixel reads the same element, and
+// from a uniform block once for all.
+#ifdef LG_IBL_SH_UNIFORM_COUNT
+layout(std140, binding = 6) uniform Sh { vec4 sh[LG_IBL_SH_UNIFORM_COUNT]; };
+#else
 layout(std430, binding = 6) readonly buffer Sh { vec4 sh[]; };
+#endif
 layout(binding = 7) uniform samplerCube irradiance_map;
 layout(binding = 8) uniform samplerCube specular_map;
 layout(binding = 9) uniform sampler2D dfg_lut;
