@@ -263,6 +263,7 @@ class VoxelKernel final : public NodeKernel {
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
     Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
+    Image& specular = ctx.image(k_ == 1 ? "out.specular" : "tmp.specular_lowres");
     std::vector<DescriptorWrite> writes = {
         uniform_buffer(0, constants_->handle()),
         uniform_buffer(1, camera_->handle()),
@@ -273,20 +274,24 @@ class VoxelKernel final : public NodeKernel {
         storage_image(6, ao.view()),
         sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(9, facing_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
+        sampled_image(9, facing_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(10, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
+        storage_image(11, specular.view())};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)));
   }
 
   // At resolution_scale below 1, the cones' smaller images to full resolution, guided by depth
-  // and normals (gi.irradiance_volume's upsample); at 1 the cones wrote the outputs themselves.
+  // and normals (gi.irradiance_volume's upsample, the specular cone's too); at 1 the cones wrote
+  // the outputs themselves.
   void upsample(PassContext& ctx) {
     if (k_ == 1) return;
     const std::pair<const char*, const char*> images[] = {
         {"tmp.lowres", "nodes/gi/irradiance_volume/shaders/upsample.comp"},
-        {"tmp.ao_lowres", "nodes/gi/voxel/shaders/voxel_ao_upsample.comp"}};
-    const char* outputs[] = {"out.irradiance", "out.ao"};
-    for (int i = 0; i < 2; ++i) {
+        {"tmp.ao_lowres", "nodes/gi/voxel/shaders/voxel_ao_upsample.comp"},
+        {"tmp.specular_lowres", "nodes/gi/irradiance_volume/shaders/upsample.comp"}};
+    const char* outputs[] = {"out.irradiance", "out.ao", "out.specular"};
+    for (int i = 0; i < 3; ++i) {
       Image& low = ctx.image(images[i].first);
       const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
                                         sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
