@@ -281,25 +281,21 @@ class VoxelKernel final : public NodeKernel {
                      std::as_bytes(std::span(&k_, 1)));
   }
 
-  // At resolution_scale below 1, the cones' smaller images to full resolution, guided by depth
-  // and normals (gi.irradiance_volume's upsample, the specular cone's too); at 1 the cones wrote
-  // the outputs themselves.
+  // At resolution_scale below 1, the cones' three smaller images to full resolution in one pass,
+  // guided by depth and normals; at 1 the cones wrote the outputs themselves.
   void upsample(PassContext& ctx) {
     if (k_ == 1) return;
-    const std::pair<const char*, const char*> images[] = {
-        {"tmp.lowres", "nodes/gi/irradiance_volume/shaders/upsample.comp"},
-        {"tmp.ao_lowres", "nodes/gi/voxel/shaders/voxel_ao_upsample.comp"},
-        {"tmp.specular_lowres", "nodes/gi/irradiance_volume/shaders/upsample.comp"}};
-    const char* outputs[] = {"out.irradiance", "out.ao", "out.specular"};
-    for (int i = 0; i < 3; ++i) {
-      Image& low = ctx.image(images[i].first);
-      const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
-                                        sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
-                                        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-                                        storage_image(3, ctx.image(outputs[i]).view())};
-      dispatch_compute(ctx, images[i].second, writes, low.desc().width, low.desc().height,
-                       std::as_bytes(std::span(&k_, 1)));
-    }
+    Image& low = ctx.image("tmp.lowres");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(3, ctx.image("out.irradiance").view()),
+                                      sampled_image(4, ctx.image("tmp.ao_lowres").view(), ctx.nearest_sampler()),
+                                      storage_image(5, ctx.image("out.ao").view()),
+                                      sampled_image(6, ctx.image("tmp.specular_lowres").view(), ctx.nearest_sampler()),
+                                      storage_image(7, ctx.image("out.specular").view())};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_upsample.comp", writes, low.desc().width, low.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
   }
 
   const int resolution_;
