@@ -78,11 +78,12 @@ std::vector<std::string> split_commas(const std::string& text) {
 struct Quality {
   std::string method;  // the node's id in the graph, and its passes' prefix
   int grid, iterations;
-  int scale_divisor = 2;  // gi.voxel's resolution_scale is 1 / this (its default 0.5)
+  int scale_divisor = 2;  // gi.voxel's resolution_scale is 1 / this (its default is 1/4, which is measured too)
 };
 
 // gi.lpv's grid and iterations ("32/8"); gi.voxel's resolution, and its resolution_scale where it
-// is not the default ("64 1/4").
+// is not 1/2 ("64 1/4"; 1/2 was the node's default before the specular cone's stop, and the
+// earlier runs' labels keep that meaning).
 std::string quality_name(const Quality& q) {
   if (q.method == "lpv") return std::to_string(q.grid) + "/" + std::to_string(q.iterations);
   return std::to_string(q.grid) + (q.scale_divisor == 2 ? "" : " 1/" + std::to_string(q.scale_divisor));
