@@ -132,16 +132,17 @@ Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle) {
 // tan^2 theta_h = (sqrt 2 - 1) alpha^2 / (1 - sqrt 2 alpha^2), i.e. tan theta_h = 0.6436 alpha for
 // small alpha (the form used here, finite for every alpha); the reflection turns twice as far as
 // the half vector, so theta = 2 atan(0.6436 alpha): 0 at r = 0 (a mirror: one voxel wide, the
-// finest level), 3 degrees at r = 0.2, 15 at 0.5, 65.5 at 1.
+// finest level), 3 degrees at r = 0.2, 18 at 0.5, 65.5 at 1.
 float voxel_specular_half_angle_tan(float roughness) {
   float x = 0.64359425 * roughness * roughness;  // sqrt(sqrt 2 - 1) alpha
   return 2.0 * x / (1.0 - x * x);                // tan(2 atan x), x <= 0.644
 }
 
 // The specular cone from `origin` (one voxel out along the unit normal n of the surface at p):
-// along the view's reflection, pulled up into the tangent plane when a bent normal puts it below,
-// its aperture from the roughness. rgb: the radiance it met (W/m^2/sr, before the BRDF), a: its
-// opacity, the share of the lobe that met lit voxels rather than leaving the grid.
+// along the view's reflection, pulled up into the tangent plane when the shading normal puts it
+// below, its aperture from the roughness. rgb: the radiance it met (W/m^2/sr, before the BRDF),
+// a: its opacity, the share of the lobe that met surfaces facing it (lit or dark) rather than
+// leaving the grid.
 vec4 specular_cone(vec3 origin, vec3 p, vec3 n, float roughness) {
   vec3 v = camera.position.xyz - p;
   float v_len = length(v);
