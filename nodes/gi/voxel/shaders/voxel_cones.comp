@@ -6,7 +6,7 @@
 // starts one voxel out along the normal and marches front to back through the anisotropic chain
 // (voxel_common.glsl; the three directions facing the ray, weighted by the squares of its
 // components). A sample's radiance is the colour of the surfaces facing the ray over how much
-// faces it (the facing image), so a floor seen obliquely keeps its whole radiance though only
+// faces it (the chain's alpha), so a floor seen obliquely keeps its whole radiance though only
 // the chain's vertical direction shows it, and what faces away from the ray (a sunlit roof seen
 // from the room below it) adds nothing. A sample at distance t reads, trilinearly within one level, the level whose
 // voxels are as wide as the cone there (2 t tan 30, rounded down to a level), but never wider
@@ -42,7 +42,7 @@ layout(binding = 3) uniform sampler2D normal_tex;
 layout(binding = 4) uniform sampler3D seen_x;
 layout(binding = 7) uniform sampler3D seen_y;
 layout(binding = 8) uniform sampler3D seen_z;
-layout(binding = 9) uniform sampler3D facing_image;
+layout(binding = 9) uniform sampler3D opacity_image;
 layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
 layout(binding = 6, r8) uniform writeonly image2D ao;
 layout(binding = 10) uniform sampler2D material_tex;  // r: perceptual roughness
@@ -79,12 +79,13 @@ struct Sample {
 Sample sample_chain(vec3 uvw, int level, vec3 d) {
   vec3 w = d * d;
   bvec3 negative = lessThan(d, vec3(0.0));
-  vec4 colour = w.x * seen(seen_x, uvw, level, int(negative.x)) + w.y * seen(seen_y, uvw, level, int(negative.y)) +
-                w.z * seen(seen_z, uvw, level, int(negative.z));
-  vec3 facing = mix(seen(facing_image, uvw, level, 0).rgb, seen(facing_image, uvw, level, 1).rgb, negative);
+  vec4 x = seen(seen_x, uvw, level, int(negative.x)), y = seen(seen_y, uvw, level, int(negative.y)),
+       z = seen(seen_z, uvw, level, int(negative.z));
+  vec3 colour = w.x * x.rgb + w.y * y.rgb + w.z * z.rgb, facing = vec3(x.a, y.a, z.a);
   vec3 in_front = min(vec3(1.0), kCrossing * w) * facing;
+  float opaque = dot(w, seen(opacity_image, uvw, level, 0).rgb);
   // Below 1e-3 of a voxel facing the ray, the colour (at most as large) is negligible.
-  return Sample(colour.rgb / max(dot(w, facing), 1e-3), colour.a, max(in_front.x, max(in_front.y, in_front.z)));
+  return Sample(colour / max(dot(w, facing), 1e-3), opaque, max(in_front.x, max(in_front.y, in_front.z)));
 }
 
 struct Cone {
