@@ -53,12 +53,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// gi.lpv's default resolution_scale (schema.json), as 1 / this.
+// gi.lpv's and gi.voxel's default resolution_scale (their schema.json), as 1 / this.
 constexpr int kLpvDefaultDivisor = 4;
+constexpr int kVoxelDefaultDivisor = 4;
 
 // The resolution_scale each node has by default, as 1 / this.
 int default_divisor(const std::string& method) {
-  return method == "lpv" ? kLpvDefaultDivisor : 2;
+  return method == "lpv" ? kLpvDefaultDivisor : kVoxelDefaultDivisor;
 }
 
 // One setting of one node: gi.lpv's grid and iterations, or gi.voxel's resolution (and its six
@@ -245,7 +246,10 @@ int run(const Options& o) {
   if (o.methods.find("lpv") != std::string::npos) qualities = o.lpv;
   if (o.methods.find("voxel") != std::string::npos)
     qualities.insert(qualities.end(),
-                     {{"voxel", 32, 6, 2}, {"voxel", 64, 6, 2}, {"voxel", 128, 6, 2}, {"voxel", 64, 6, 4}});
+                     {{"voxel", 32, 6, kVoxelDefaultDivisor},
+                      {"voxel", 64, 6, kVoxelDefaultDivisor},
+                      {"voxel", 128, 6, kVoxelDefaultDivisor},
+                      {"voxel", 64, 6, 2}});
   for (const std::string& name : split_commas(o.worlds)) {
     const World world = load_world(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json");
     SceneView view = make_scene_view(world, float(o.width) / o.height);

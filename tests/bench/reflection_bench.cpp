@@ -11,7 +11,8 @@
 //   taken out (debiased_specular_error: the reference is traced as two halves with independent
 //   seeds, whose mean is the reference of the first error); both also over the floor's pixels
 //   that reflect only what the probes capture (captured_reflection_mask.h);
-// - its time: the GPU time of the reflection passes (probes/*, planar/*, ssr/*) at --time-size,
+// - its time: the GPU time of the reflection passes (probes/*, planar/*, ssr/*, voxel/*: all of
+//   gi.voxel's, its diffuse cones too) at --time-size,
 //   median and fastest of the frames after the first; the CPU time of a frame after the first (lavapipe's
 //   work is CPU work) less the environment-only configuration's, which a loaded machine disturbs
 //   far less than the timestamps; and the first frame's extra host time over the later ones'
@@ -51,6 +52,7 @@ struct Options {
   int frames = 8, time_frames = 4;
   uint32_t paths = 1024;
   std::vector<double> faces{16, 32, 64, 128}, steps{8, 16, 32, 64, 128}, scales{1}, planar_scales{1, 0.5, 0.25};
+  std::vector<double> voxel_scales{0.5, 0.25};
   std::string worlds = "room,gallery";
   std::string only;  // measure only the configurations whose label contains this
   std::string probe_params;
@@ -138,7 +140,7 @@ class Measurer {
   void measure(ReflectionConfig config) {
     config.probe_params = o_.probe_params;
     const std::string label = test::config_label(config);
-    if (label.find(o_.only) == std::string::npos) return;
+    if (!label_selected(label)) return;
     const Graph graph = test::reflection_graph(config);
     const test::ReflectionFrame e = test::render_reflections(w_.world, o_.width, o_.height, graph, o_.frames, false);
     Point p;
@@ -164,6 +166,14 @@ class Measurer {
   std::vector<Point> points;
 
  private:
+  // Whether --only (texts separated by '|') selects the label: one of them is in it.
+  bool label_selected(const std::string& label) const {
+    std::stringstream texts(o_.only);
+    for (std::string text; std::getline(texts, text, '|');)
+      if (label.find(text) != std::string::npos) return true;
+    return o_.only.empty();
+  }
+
   // The reflection passes' and the frame's times at --time-size.
   void time(const Graph& graph, Point& p) {
     const test::ReflectionFrame t =
@@ -213,6 +223,12 @@ class Measurer {
 bool has_planar_reflector(const World& world) {
   bool found = false;
   world.each<MeshRenderer>([&](Entity, const MeshRenderer& r) { found = found || r.reflector_plane.has_value(); });
+  return found;
+}
+
+bool has_directional_light(const World& world) {
+  bool found = false;
+  world.each<DirectionalLight>([&](Entity, const DirectionalLight&) { found = true; });
   return found;
 }
 
@@ -274,6 +290,9 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
     for (const ReflectionSource source :
          {ReflectionSource::planar, ReflectionSource::planar_with_probes, ReflectionSource::planar_with_ssr})
       for (const double scale : o.planar_scales) m.measure({.source = source, .planar_scale = scale});
+  // gi.voxel carries the main directional light's bounce; elsewhere it is bypassed.
+  if (has_directional_light(w.world))
+    for (const double scale : o.voxel_scales) m.measure({.source = ReflectionSource::voxel, .voxel_scale = scale});
   std::printf("\n");
   points.insert(points.end(), m.points.begin(), m.points.end());
 }
@@ -283,7 +302,7 @@ void write_points(const Options& o, const std::vector<Point>& points) {
   csv << "world,source,parallax,face_size,max_steps,ssr_scale,median_ms,min_ms,frame_ms,first_frame_extra_ms,"
          "error_metal,error_floor,error_ball,pixels_floor,pixels_ball,noise_metal,label,cpu_ms,planar_scale,"
          "rms_floor,rms_ball,plain_rms_floor,plain_rms_ball,error_floor_captured,rms_floor_captured,"
-         "pixels_floor_captured\n";
+         "pixels_floor_captured,voxel_scale\n";
   for (const Point& p : points) {
     const ReflectionConfig& c = p.config;
     csv << p.world << ',' << test::reflection_source_name(c.source) << ',' << c.parallax << ',' << c.face_size << ','
@@ -293,7 +312,7 @@ void write_points(const Options& o, const std::vector<Point>& points) {
         << test::config_label(c) << ',' << p.cpu_ms << ',' << (c.planar_scale > 0 ? c.planar_scale : 0.0) << ','
         << p.floor_rms.rms << ',' << p.ball_rms.rms << ',' << p.floor_rms.plain_rms << ',' << p.ball_rms.plain_rms
         << ',' << p.floor_captured.relative << ',' << p.floor_captured_rms.rms << ',' << p.floor_captured.pixels
-        << '\n';
+        << ',' << (c.voxel_scale > 0 ? c.voxel_scale : 0.0) << '\n';
   }
 }
 
@@ -301,7 +320,7 @@ const char* const usage =
     "usage: lumagraph-bench-reflections [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--time-size WxH]\n"
     "                                   [--frames N] [--time-frames N] [--paths N] [--faces A,B] [--steps A,B]\n"
     "                                   [--scales A,B] [--planar-scales A,B] [--worlds room,gallery] [--only TEXT]\n"
-    "                                   [--probe-params JSON] [--maps DIR] [--errors-only]\n"
+    "                                   [--voxel-scales A,B] [--probe-params JSON] [--maps DIR] [--errors-only]\n"
     "  --results-dir DIR   where the CSV files go (default bench-results)\n"
     "  --cache-dir DIR     where the references are kept (default BUILD/reflection-reference-cache)\n"
     "  --size WxH          size the error is measured at (default 320x180)\n"
@@ -315,8 +334,12 @@ const char* const usage =
     "  --scales LIST       lighting.ssr resolution_scale values (default 1)\n"
     "  --planar-scales LIST gi.planar_reflection resolution_scale values, on worlds with planar reflectors\n"
     "                      (default 1,0.5,0.25)\n"
-    "  --worlds LIST       room, gallery or both (default)\n"
-    "  --only TEXT         only configurations whose label (\"ssr+probes face=64\") contains TEXT\n"
+    "  --voxel-scales LIST gi.voxel resolution_scale values, on worlds with a directional light\n"
+    "                      (default 0.5,0.25)\n"
+    "  --worlds LIST       room, gallery, cornell (the Cornell box, floor and tall block metal)\n"
+    "                      (default room,gallery)\n"
+    "  --only TEXT         only configurations whose label (\"ssr+probes face=64\") contains TEXT, or one\n"
+    "                      of several separated by '|' (\"environment|voxel\")\n"
     "  --probe-params JSON more gi.reflection_capture params as JSON members, e.g. '\"samples\": 64'\n"
     "  --maps DIR          also write each configuration's error picture there: its specular term, the\n"
     "                      reference's and the signed difference (red too bright, blue too dark)\n"
@@ -336,6 +359,7 @@ int run(int argc, char** argv) {
   flags.numbers("--steps", o.steps);
   flags.numbers("--scales", o.scales);
   flags.numbers("--planar-scales", o.planar_scales);
+  flags.numbers("--voxel-scales", o.voxel_scales);
   flags.text("--worlds", o.worlds);
   flags.text("--only", o.only);
   flags.text("--probe-params", o.probe_params);
@@ -356,6 +380,8 @@ int run(int argc, char** argv) {
     measure_world(o, test::reflection_room(), "reflection-room.json", points, references);
   if (o.worlds.find("gallery") != std::string::npos)
     measure_world(o, test::polished_gallery(), "gallery.json", points, references);
+  if (o.worlds.find("cornell") != std::string::npos)
+    measure_world(o, test::polished_cornell_box(), "cornell-box.json", points, references);
   write_points(o, points);
   return 0;
 }

@@ -2,6 +2,8 @@
 // - a floor beside a wall: with the wall's face lit, the floor beside it gets what the face gives
 //   it (an integral over the face), the open floor next to nothing and no occlusion, the corner
 //   some; with the face dark, next to nothing; with the sun at zero, exactly zero;
+// - the specular cone: a near-mirror floor mirrors the wall's lit face where its mirror rays meet
+//   it, and nothing where they rise away; finite at roughness 0 and 1 and at grazing angles;
 // - a closed room lit from outside: the known leak through its ceiling stays below its bound;
 // - the frame after the sun turns and the wall moves equals a fresh renderer's, and so does the
 //   frame after a draw changes only its mesh;
@@ -44,7 +46,7 @@ Graph voxel_graph(int resolution, double resolution_scale) {
           std::to_string(resolution) + R"(, "resolution_scale": )" + std::to_string(resolution_scale) +
           R"(, "shadow_size": 256 } } ],
     "links": [ { "from": "gbuf.gbuffer", "to": "voxel.gbuffer" } ],
-    "outputs": [ "voxel.irradiance", "voxel.ao" ] })",
+    "outputs": [ "voxel.irradiance", "voxel.ao", "voxel.specular" ] })",
       d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
@@ -66,14 +68,17 @@ void add_camera_and_sun(World& world, glm::vec3 eye, glm::vec3 look, glm::vec3 s
 constexpr glm::vec3 kSunFromTheEast{-0.6f, -1.0f, -0.2f}, kSunFromTheWest{0.6f, -1.0f, -0.2f};
 constexpr float kWhite = 0.8f, kWallFace = -2.0f, kWallHeight = 2.0f, kWallHalfLength = 2.0f;
 
-// A white 4 m floor and, standing on it along its west edge, a white wall 2 m high facing east.
-World floor_and_wall(glm::vec3 sun_direction, float sun_intensity) {
+// A white 4 m floor of perceptual roughness `floor_roughness` and, standing on it along its west
+// edge, a white wall 2 m high facing east.
+World floor_and_wall(glm::vec3 sun_direction, float sun_intensity, float floor_roughness = 0.5f) {
   World world;
   PbrMaterial white;
   white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
   const int material = world.add_material(white);
+  PbrMaterial floor_material = white;
+  floor_material.roughness = floor_roughness;
   Entity floor = world.create("floor");
-  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), material});
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(floor_material)});
   world.add(floor, Transform{});
   Entity wall = world.create("wall");
   world.add(wall, MeshRenderer{world.add_mesh(make_box({0.2f, kWallHeight, 2.0f * kWallHalfLength})), material});
@@ -183,6 +188,106 @@ TEST(Voxel, LightsTheFloorBesideALitWallAndNothingWithoutLight) {
       EXPECT_EQ(none[i], 0.0f) << "value " << i;
   }
   EXPECT_GT(covered, size_t(kFrame.width) * kFrame.height / 2);
+  expect_no_validation_messages(renderer->context());
+}
+
+// The specular cone on floor_and_wall() with a near-mirror floor (roughness 0.1: a cone of 0.7
+// degrees), seen from low over the floor's east half so that the floor beside the wall mirrors the
+// wall's lit face. Each floor pixel's mirror ray is traced on the CPU: where it meets the face at
+// least 0.3 m inside its edges, the specular output must hold the face's radiance (within 10% of
+// L = 0.8 E cos / pi, measured 1.2902 against 1.2913: the radiance is the gathered light over the
+// opacity, so the cone's level-0 samples blending the wall with the empty voxels in front of it
+// change the opacity but not the radiance; 10% leaves room for half floats and the shadow map's
+// filter at the face's edges) and be covered (a > 0.9, measured 0.933); where it rises away from the
+// wall (going east, from the floor's east half), there is nothing for it to meet: the light it
+// reports, rgb times a, below 2% of L, and a below 0.05 (measured 0 and 0). With the face dark
+// (the sun from the west) the wall pixels' light falls below 10% of the lit case (measured 0.02%).
+TEST(Voxel, SpecularConeMirrorsTheLitWallAndNothingElse) {
+  auto renderer = make_renderer(voxel_graph(32, 1.0));
+  auto render = [&](glm::vec3 sun) {
+    World world = floor_and_wall(sun, 10.0f, 0.1f);
+    world.each<Camera, Transform>([](Entity, Camera&, Transform& t) {
+      t.position = {0.3f, 1.0f, 3.5f};
+      t.rotation = look_rotation({-0.3f, -0.45f, -1.0f});
+    });
+    renderer->render(world, kFrame);
+    return std::pair{std::move(world), renderer->executor().read_image("voxel.specular")};
+  };
+  const auto [world, specular] = render(kSunFromTheEast);
+  const double wall_radiance = kWhite * 10.0 * -kSunFromTheEast.x / glm::length(kSunFromTheEast) / kPi;
+
+  const SceneView view = make_scene_view(world, float(kFrame.width) / kFrame.height);
+  const PathScene scene(view, PathEnvironment::none());
+  const PathTransport transport(scene, 1);
+  const CameraPixels camera(view.camera, kFrame.width, kFrame.height);
+  std::vector<size_t> on_wall, away;  // RGBA offsets
+  for (uint32_t y = 0; y < kFrame.height; ++y)
+    for (uint32_t x = 0; x < kFrame.width; ++x) {
+      const glm::dvec3 d = camera.ray_direction(x, y);
+      const auto s = transport.visible_surface(camera.eye(), d, true);
+      if (!s || s->normal.y < 0.9 || s->position.y > 0.01) continue;
+      const glm::dvec3 mirror{d.x, -d.y, d.z}, p = s->position;
+      const size_t i = 4 * (size_t(y) * kFrame.width + x);
+      if (mirror.x < 0.0) {
+        const glm::dvec3 hit = p + mirror * ((kWallFace - p.x) / mirror.x);
+        if (hit.y > 0.3 && hit.y < kWallHeight - 0.3 && std::abs(hit.z) < kWallHalfLength - 0.3) on_wall.push_back(i);
+      } else if (p.x > 0.5) {
+        away.push_back(i);
+      }
+    }
+  ASSERT_GT(on_wall.size(), 20u);
+  ASSERT_GT(away.size(), 20u);
+  auto mean = [&](const std::vector<float>& image, const std::vector<size_t>& pixels, bool light) {
+    double sum = 0;
+    for (size_t i : pixels) sum += light ? double(image[i + 1]) * image[i + 3] : image[i + 3];
+    return sum / double(pixels.size());
+  };
+  auto mean_radiance = [&](const std::vector<size_t>& pixels) {
+    double sum = 0;
+    for (size_t i : pixels) sum += specular[i + 1];
+    return sum / double(pixels.size());
+  };
+  std::printf(
+      "specular: %zu pixels mirror the wall: L %.4f (the face's %.4f), a %.3f; %zu mirror nothing: light %.5f, a "
+      "%.4f\n",
+      on_wall.size(), mean_radiance(on_wall), wall_radiance, mean(specular, on_wall, false), away.size(),
+      mean(specular, away, true), mean(specular, away, false));
+  EXPECT_NEAR(mean_radiance(on_wall), wall_radiance, 0.1 * wall_radiance);
+  EXPECT_GT(mean(specular, on_wall, false), 0.9);
+  EXPECT_LT(mean(specular, away, true), 0.02 * wall_radiance);
+  EXPECT_LT(mean(specular, away, false), 0.05);
+
+  const std::vector<float> dark = render(kSunFromTheWest).second;
+  std::printf("specular with the face dark: light %.5f\n", mean(dark, on_wall, true));
+  EXPECT_LT(mean(dark, on_wall, true), 0.1 * mean(specular, on_wall, true));
+  expect_no_validation_messages(renderer->context());
+}
+
+// The specular cone at the ends of its range: floor_and_wall() with the floor a mirror (roughness
+// 0: a cone of no width, one voxel a step) and fully rough (1: 65.5 degrees), seen from 2 cm
+// above the floor looking along it (reflections at grazing angles, pulled into the tangent plane
+// where a normal would put them below), at resolution_scale 0.5 (the upsample too): every value
+// finite, the coverage within [0, 1].
+TEST(Voxel, SpecularConeStaysFiniteAtTheEndsOfRoughnessAndAtGrazingAngles) {
+  auto renderer = make_renderer(voxel_graph(32, 0.5));
+  for (const float roughness : {0.0f, 1.0f}) {
+    World world = floor_and_wall(kSunFromTheEast, 10.0f, roughness);
+    world.each<Camera, Transform>([](Entity, Camera&, Transform& t) {
+      t.position = {1.5f, 0.02f, 1.5f};
+      t.rotation = look_rotation({-1.0f, -0.01f, -1.0f});
+    });
+    renderer->render(world, kFrame);
+    const std::vector<float> specular = renderer->executor().read_image("voxel.specular");
+    size_t bad = 0, covered = 0;
+    for (size_t i = 0; i < specular.size(); ++i) {
+      bad += !std::isfinite(specular[i]) || (i % 4 == 3 && (specular[i] < 0.0f || specular[i] > 1.0f));
+      covered += i % 4 == 3 && specular[i] > 0.5f;
+    }
+    std::printf("roughness %.0f at grazing angles: %zu of %zu pixels covered\n", roughness, covered,
+                specular.size() / 4);
+    EXPECT_EQ(bad, 0u) << "roughness " << roughness;
+    EXPECT_GT(covered, 0u) << "roughness " << roughness;  // the wall ahead is met
+  }
   expect_no_validation_messages(renderer->context());
 }
 
@@ -372,17 +477,18 @@ TEST(Voxel, ALargeSlantedTriangleMarksAllItsVoxels) {
   EXPECT_NEAR(whole, tiled, 0.01);
 }
 
-// degenerate_world() at resolution_scale 0.5 (the upsample too): both outputs finite, validation
-// clean.
+// degenerate_world() at resolution_scale 0.5 (the upsample too): all three outputs finite,
+// validation clean.
 TEST(Voxel, StaysFiniteOnDegenerateInput) {
   World world = degenerate_world();
   auto renderer = make_renderer(voxel_graph(16, 0.5));
   renderer->render(world, kFrame);
   const std::vector<float> e = renderer->executor().read_image("voxel.irradiance");
   const std::vector<float> ao = renderer->executor().read_image("voxel.ao");
+  const std::vector<float> specular = renderer->executor().read_image("voxel.specular");
   size_t bad = 0, covered = 0;
   for (size_t i = 0; i < e.size(); ++i) {
-    bad += !std::isfinite(e[i]) + !std::isfinite(ao[i]);
+    bad += !std::isfinite(e[i]) + !std::isfinite(ao[i]) + !std::isfinite(specular[i]);
     covered += i % 4 == 3 && e[i] > 0.5f;
   }
   EXPECT_EQ(bad, 0u);

@@ -70,6 +70,8 @@ const char* reflection_source_name(ReflectionSource source) {
       return "planar+probes";
     case ReflectionSource::planar_with_ssr:
       return "planar+ssr";
+    case ReflectionSource::voxel:
+      return "voxel";
   }
   return "?";
 }
@@ -85,6 +87,8 @@ std::string config_label(const ReflectionConfig& c) {
     if (c.ssr_scale > 0 && c.ssr_scale < 1) label += " scale=" + std::to_string(c.ssr_scale).substr(0, 4);
   }
   if (uses_planar(c.source) && c.planar_scale > 0) label += " planar=" + std::to_string(c.planar_scale).substr(0, 4);
+  if (c.source == ReflectionSource::voxel && c.voxel_scale > 0)
+    label += " scale=" + std::to_string(c.voxel_scale).substr(0, 4);
   return label;
 }
 
@@ -109,6 +113,19 @@ Graph reflection_graph(const ReflectionConfig& c) {
   if (c.max_steps > 0) ssr.set("max_steps", c.max_steps);
   if (c.ssr_scale > 0) ssr.set("resolution_scale", c.ssr_scale);
   set_params(ssr, c.ssr_params, "ssr params");
+  if (c.source == ReflectionSource::voxel) {
+    GraphNode& voxel = graph.nodes.emplace_back();
+    voxel.id = "voxel";
+    voxel.type = "gi.voxel";
+    if (c.voxel_scale > 0) voxel.params.set("resolution_scale", c.voxel_scale);
+    auto link = [&graph](PortRef from, PortRef to) {
+      GraphLink& l = graph.links.emplace_back();
+      l.from = std::move(from);
+      l.to = std::move(to);
+    };
+    link({"gbuf", "gbuffer"}, {"voxel", "gbuffer"});
+    link({"voxel", "specular"}, {"ibl", "reflection_probes"});
+  }
   return graph;
 }
 
@@ -129,7 +146,8 @@ ReflectionFrame render_reflections(const World& world, uint32_t width, uint32_t 
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     double ms = 0;
     for (const PassStats& pass : stats.passes)
-      if (pass.name.rfind("probes/", 0) == 0 || pass.name.rfind("planar/", 0) == 0 || pass.name.rfind("ssr/", 0) == 0)
+      if (pass.name.rfind("probes/", 0) == 0 || pass.name.rfind("planar/", 0) == 0 || pass.name.rfind("ssr/", 0) == 0 ||
+          pass.name.rfind("voxel/", 0) == 0)
         ms += pass.gpu_ms;
     out.reflection_gpu_ms.push_back(ms);
     out.frame_gpu_ms.push_back(stats.gpu_ms);

@@ -19,8 +19,19 @@ namespace lg::test {
 
 // Where lighting.ibl's specular radiance comes from.
 // The planar ones (gi.planar_reflection) take the world's planar reflectors and, elsewhere, the
-// environment (planar_with_ssr: SSR wins where it is confident) or the probes.
-enum class ReflectionSource { environment, probes, ssr, ssr_with_probes, planar, planar_with_probes, planar_with_ssr };
+// environment (planar_with_ssr: SSR wins where it is confident) or the probes. voxel: gi.voxel's
+// specular cone (one bounce of the main directional light) over the environment, through
+// lighting.ibl's reflection_probes input.
+enum class ReflectionSource {
+  environment,
+  probes,
+  ssr,
+  ssr_with_probes,
+  planar,
+  planar_with_probes,
+  planar_with_ssr,
+  voxel
+};
 const char* reflection_source_name(ReflectionSource source);
 
 struct ReflectionConfig {
@@ -30,6 +41,7 @@ struct ReflectionConfig {
   int max_steps = 0;           // lighting.ssr's max_steps; 0: the example's
   double ssr_scale = 0;        // lighting.ssr's resolution_scale; 0: the example's
   double planar_scale = 0;     // gi.planar_reflection's resolution_scale; 0: the example's
+  double voxel_scale = 0;      // gi.voxel's resolution_scale; 0: the node's default
   std::string probe_params{};  // more gi.reflection_capture params as JSON members, e.g. "\"samples\": 64"
   std::string ssr_params{};    // more lighting.ssr params, likewise
 };
@@ -45,7 +57,7 @@ Graph reflection_graph(const ReflectionConfig& config);
 struct ReflectionFrame {
   std::vector<float> direct, lit, material;  // light.color, ibl.color, gbuf.gbuffer.material (RGBA)
   std::vector<float> ssr;                    // ssr.reflections (a: confidence) where SSR ran, else empty
-  std::vector<double> reflection_gpu_ms;     // per frame: the probes', planar's and ssr's passes summed
+  std::vector<double> reflection_gpu_ms;     // per frame: the probes', planar's, ssr's and voxel's passes summed
   std::vector<double> frame_gpu_ms;          // per frame: the whole command buffer
   std::vector<double> frame_wall_ms;         // per frame: render() on the host, captures included
   // Per frame: the process's CPU time (user and system, every thread) during render(). On

@@ -151,7 +151,7 @@ class VoxelKernel final : public NodeKernel {
     extent[doubled_axis_] *= 2;
     const char* axes[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) seen_[a] = image(std::string("voxels seen along ") + axes[a], extent, levels_);
-    facing_ = image("voxels facing", extent, levels_);
+    opacity_ = image("voxels opacity", extent, levels_);
     images_new_ = true;
     allocated_counts_ = grid_.counts;
   }
@@ -224,7 +224,7 @@ class VoxelKernel final : public NodeKernel {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_) {
       for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-      image_barrier(cmd, facing_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+      image_barrier(cmd, opacity_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
     }
     images_new_ = false;
     compute_to_compute_barrier(cmd);  // the atomics; last frame's reads of the chain
@@ -234,7 +234,7 @@ class VoxelKernel final : public NodeKernel {
                                       storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1})),
-                                      storage_image(6, facing_.view({.base_mip = 0, .mip_count = 1}))};
+                                      storage_image(6, opacity_.view({.base_mip = 0, .mip_count = 1}))};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
@@ -248,8 +248,8 @@ class VoxelKernel final : public NodeKernel {
         writes.push_back(storage_image(1 + a, seen_[a].view({.base_mip = level - 1, .mip_count = 1})));
       for (uint32_t a = 0; a < 3; ++a)
         writes.push_back(storage_image(4 + a, seen_[a].view({.base_mip = level, .mip_count = 1})));
-      writes.push_back(storage_image(7, facing_.view({.base_mip = level - 1, .mip_count = 1})));
-      writes.push_back(storage_image(8, facing_.view({.base_mip = level, .mip_count = 1})));
+      writes.push_back(storage_image(7, opacity_.view({.base_mip = level - 1, .mip_count = 1})));
+      writes.push_back(storage_image(8, opacity_.view({.base_mip = level, .mip_count = 1})));
       const int32_t push = int32_t(level);
       dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_downsample.comp", writes, uint32_t(counts.x),
                        uint32_t(counts.y * counts.z), std::as_bytes(std::span(&push, 1)));
@@ -263,6 +263,7 @@ class VoxelKernel final : public NodeKernel {
     camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
     Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
+    Image& specular = ctx.image(k_ == 1 ? "out.specular" : "tmp.specular_lowres");
     std::vector<DescriptorWrite> writes = {
         uniform_buffer(0, constants_->handle()),
         uniform_buffer(1, camera_->handle()),
@@ -273,28 +274,28 @@ class VoxelKernel final : public NodeKernel {
         storage_image(6, ao.view()),
         sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(9, facing_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
+        sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(10, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
+        storage_image(11, specular.view())};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)));
   }
 
-  // At resolution_scale below 1, the cones' smaller images to full resolution, guided by depth
-  // and normals (gi.irradiance_volume's upsample); at 1 the cones wrote the outputs themselves.
+  // At resolution_scale below 1, the cones' three smaller images to full resolution in one pass,
+  // guided by depth and normals; at 1 the cones wrote the outputs themselves.
   void upsample(PassContext& ctx) {
     if (k_ == 1) return;
-    const std::pair<const char*, const char*> images[] = {
-        {"tmp.lowres", "nodes/gi/irradiance_volume/shaders/upsample.comp"},
-        {"tmp.ao_lowres", "nodes/gi/voxel/shaders/voxel_ao_upsample.comp"}};
-    const char* outputs[] = {"out.irradiance", "out.ao"};
-    for (int i = 0; i < 2; ++i) {
-      Image& low = ctx.image(images[i].first);
-      const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
-                                        sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
-                                        sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
-                                        storage_image(3, ctx.image(outputs[i]).view())};
-      dispatch_compute(ctx, images[i].second, writes, low.desc().width, low.desc().height,
-                       std::as_bytes(std::span(&k_, 1)));
-    }
+    Image& low = ctx.image("tmp.lowres");
+    const DescriptorWrite writes[] = {sampled_image(0, low.view(), ctx.nearest_sampler()),
+                                      sampled_image(1, ctx.image("in.gbuffer", 0).view(), ctx.nearest_sampler()),
+                                      sampled_image(2, ctx.image("in.gbuffer", 1).view(), ctx.nearest_sampler()),
+                                      storage_image(3, ctx.image("out.irradiance").view()),
+                                      sampled_image(4, ctx.image("tmp.ao_lowres").view(), ctx.nearest_sampler()),
+                                      storage_image(5, ctx.image("out.ao").view()),
+                                      sampled_image(6, ctx.image("tmp.specular_lowres").view(), ctx.nearest_sampler()),
+                                      storage_image(7, ctx.image("out.specular").view())};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_upsample.comp", writes, low.desc().width, low.desc().height,
+                     std::as_bytes(std::span(&k_, 1)));
   }
 
   const int resolution_;
@@ -309,7 +310,7 @@ class VoxelKernel final : public NodeKernel {
   std::optional<HostBuffer> constants_, draws_, camera_;
   Buffer grid_sums_;
   std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)
-  Image facing_;                       // how much of each voxel faces rays along each axis (the same)
+  Image opacity_;                      // each voxel's opacity along each axis (the same)
   int doubled_axis_ = 0;               // the axis along which those hold both directions
   bool images_new_ = false;            // not yet in the GENERAL layout
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain

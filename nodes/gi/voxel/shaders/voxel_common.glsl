@@ -37,10 +37,13 @@ ivec3 voxel_invocation_cell(ivec3 counts) {
 // axis, the positive direction in the first half of the image along voxel.chain.x (the grid's
 // longest axis, so that every level has both halves) and the negative in the second; mip l is
 // level l, whose counts are voxel_level_counts(l). Per image: rgb the radiance of the surfaces
-// that face the ray, premultiplied by how much they face it and cover the voxel; a: opacity.
-// A fourth image of the same layout, the facing image, holds in rgb how much of the voxel faces
-// rays along x, y and z (the first half: travelling the positive way; the second: the negative),
-// composited as the colour is, so that a cone divides the colour by it (voxel_cones.comp).
+// that face the ray, premultiplied by how much they face it and cover the voxel; a: how much of
+// the voxel faces rays travelling that way, composited as the colour is, so that a cone divides
+// the colour by it (voxel_cones.comp). A fourth image of the same layout, the opacity image,
+// holds in rgb the voxel's opacity for rays along x, y and z, the same in both halves (two
+// opacities composite alike either way round). So a cone's sample reads four images, the facing
+// of each direction it needs riding with that direction's colour (with the facing in an image
+// of its own, read in both halves, it read five).
 ivec3 voxel_level_counts(int level) {
   return max(voxel.counts.xyz >> level, ivec3(1));
 }

@@ -6,7 +6,7 @@
 // starts one voxel out along the normal and marches front to back through the anisotropic chain
 // (voxel_common.glsl; the three directions facing the ray, weighted by the squares of its
 // components). A sample's radiance is the colour of the surfaces facing the ray over how much
-// faces it (the facing image), so a floor seen obliquely keeps its whole radiance though only
+// faces it (the chain's alpha), so a floor seen obliquely keeps its whole radiance though only
 // the chain's vertical direction shows it, and what faces away from the ray (a sunlit roof seen
 // from the room below it) adds nothing. A sample at distance t reads, trilinearly within one level, the level whose
 // voxels are as wide as the cone there (2 t tan 30, rounded down to a level), but never wider
@@ -20,6 +20,11 @@
 // sin^2(30 deg) = 1/4 exactly; the other five share the rest, 3/20 each. E = pi sum w_i L_i,
 // exact for a uniform radiance L. Ambient occlusion: 1 - sum w_i a_i with each cone's opacity
 // a_i gathered within ao_distance.
+// The specular cone: one more cone along the reflection of the view about the normal, its
+// half-angle from the GGX lobe (voxel_specular_half_angle_tan), marched the same way; it writes
+// the radiance of what it met (its gathered light over its opacity, W/m^2/sr, before the BRDF)
+// and its opacity as the coverage, so lighting.ibl mixes the prefiltered environment toward it as
+// toward a reflection probe's (the part of the cone that leaves the grid sees the environment).
 // rgb: irradiance, W/m^2; a: coverage, 1 where the surface lies in the grid's box and there is a
 // light, else 0.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
@@ -37,9 +42,11 @@ layout(binding = 3) uniform sampler2D normal_tex;
 layout(binding = 4) uniform sampler3D seen_x;
 layout(binding = 7) uniform sampler3D seen_y;
 layout(binding = 8) uniform sampler3D seen_z;
-layout(binding = 9) uniform sampler3D facing_image;
+layout(binding = 9) uniform sampler3D opacity_image;
 layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
 layout(binding = 6, r8) uniform writeonly image2D ao;
+layout(binding = 10) uniform sampler2D material_tex;  // r: perceptual roughness
+layout(binding = 11, rgba16f) uniform writeonly image2D specular;
 layout(push_constant) uniform Push {
   int k;  // the G-buffer's resolution over the targets'
 };
@@ -72,21 +79,24 @@ struct Sample {
 Sample sample_chain(vec3 uvw, int level, vec3 d) {
   vec3 w = d * d;
   bvec3 negative = lessThan(d, vec3(0.0));
-  vec4 colour = w.x * seen(seen_x, uvw, level, int(negative.x)) + w.y * seen(seen_y, uvw, level, int(negative.y)) +
-                w.z * seen(seen_z, uvw, level, int(negative.z));
-  vec3 facing = mix(seen(facing_image, uvw, level, 0).rgb, seen(facing_image, uvw, level, 1).rgb, negative);
+  vec4 x = seen(seen_x, uvw, level, int(negative.x)), y = seen(seen_y, uvw, level, int(negative.y)),
+       z = seen(seen_z, uvw, level, int(negative.z));
+  vec3 colour = w.x * x.rgb + w.y * y.rgb + w.z * z.rgb, facing = vec3(x.a, y.a, z.a);
   vec3 in_front = min(vec3(1.0), kCrossing * w) * facing;
+  float opaque = dot(w, seen(opacity_image, uvw, level, 0).rgb);
   // Below 1e-3 of a voxel facing the ray, the colour (at most as large) is negligible.
-  return Sample(colour.rgb / max(dot(w, facing), 1e-3), colour.a, max(in_front.x, max(in_front.y, in_front.z)));
+  return Sample(colour / max(dot(w, facing), 1e-3), opaque, max(in_front.x, max(in_front.y, in_front.z)));
 }
 
 struct Cone {
   vec3 light;      // radiance gathered, W/m^2/sr
+  float opacity;   // of what faced the ray
   float occluded;  // opacity gathered within ao_distance
 };
 
-// `cosine`: of the cone's axis with the normal (h grows by it per metre of t).
-Cone trace(vec3 origin, vec3 direction, float cosine) {
+// `cosine`: of the cone's axis with the normal (h grows by it per metre of t); `tan_half_angle`:
+// of the cone's aperture.
+Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle) {
   float cell = voxel.origin_cell.w;
   vec3 grid_size = cell * vec3(voxel.counts.xyz);
   float top = float(voxel.counts.w - 1);
@@ -96,7 +106,7 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
   for (int s = 0; s < 128 && opacity < 0.99 && blocked < 0.99; ++s) {
     // The level whose voxels are at most that wide: a whole level, as blending in the next one
     // would reach twice as far.
-    float level = min(floor(log2(max(min(2.0 * t * kTanHalfAngle, (cell + t * cosine) / 1.5), cell) / cell)), top);
+    float level = min(floor(log2(max(min(2.0 * t * tan_half_angle, (cell + t * cosine) / 1.5), cell) / cell)), top);
     float width = cell * exp2(level);
     vec3 uvw = (origin + direction * t - voxel.origin_cell.xyz) / grid_size;
     if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
@@ -115,7 +125,37 @@ Cone trace(vec3 origin, vec3 direction, float cosine) {
     if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
     t += width;
   }
-  return Cone(light, occluded);
+  return Cone(light, opacity, occluded);
+}
+
+// The tangent of the specular cone's half-angle for perceptual roughness r (GGX, alpha = r^2):
+// the reflected lobe's half width at half maximum. GGX's D(h) falls to half its peak where
+// tan^2 theta_h = (sqrt 2 - 1) alpha^2 / (1 - sqrt 2 alpha^2), i.e. tan theta_h = 0.6436 alpha for
+// small alpha (the form used here, finite for every alpha); the reflection turns twice as far as
+// the half vector, so theta = 2 atan(0.6436 alpha): 0 at r = 0 (a mirror: one voxel wide, the
+// finest level), 3 degrees at r = 0.2, 18 at 0.5, 65.5 at 1.
+float voxel_specular_half_angle_tan(float roughness) {
+  float x = 0.64359425 * roughness * roughness;  // sqrt(sqrt 2 - 1) alpha
+  return 2.0 * x / (1.0 - x * x);                // tan(2 atan x), x <= 0.644
+}
+
+// The specular cone from `origin` (one voxel out along the unit normal n of the surface at p):
+// along the view's reflection, pulled up into the tangent plane when the shading normal puts it
+// below, its aperture from the roughness. rgb: the radiance it met (W/m^2/sr, before the BRDF),
+// a: its opacity, the share of the lobe that met surfaces facing it (lit or dark) rather than
+// leaving the grid.
+vec4 specular_cone(vec3 origin, vec3 p, vec3 n, float roughness) {
+  vec3 v = camera.position.xyz - p;
+  float v_len = length(v);
+  vec3 r = v_len > 0.0 ? reflect(-v / v_len, n) : n;
+  r -= n * min(dot(r, n), 0.0);
+  float r_len = length(r);
+  r = r_len > 1e-4 ? r / r_len : n;
+  Cone cone = trace(origin, r, max(dot(r, n), 0.0), voxel_specular_half_angle_tan(clamp(roughness, 0.0, 1.0)));
+  float a = clamp(cone.opacity, 0.0, 1.0);
+  // Below 1e-4 the light gathered (at most a times the brightest voxel) is negligible.
+  vec3 radiance = a > 1e-4 ? cone.light / a : vec3(0.0);
+  return vec4(clamp(finite_or_zero(radiance), 0.0, 65504.0), a);
 }
 
 void main() {
@@ -132,6 +172,7 @@ void main() {
       any(greaterThan(g, vec3(voxel.counts.xyz))) || !(len > 1e-6) || voxel.light.w == 0.0) {
     imageStore(irradiance, texel, vec4(0.0));
     imageStore(ao, texel, vec4(1.0));
+    imageStore(specular, texel, vec4(0.0));
     return;
   }
   n /= len;
@@ -140,17 +181,18 @@ void main() {
   float a = -1.0 / (s + n.z), b = n.x * n.y * a;
   vec3 t1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x), t2 = vec3(b, s + n.y * n.y * a, -n.y);
   vec3 origin = p + n * cell;
-  Cone centre = trace(origin, n, 1.0);
+  Cone centre = trace(origin, n, 1.0, kTanHalfAngle);
   vec3 light = kCentreWeight * centre.light;
   float occluded = kCentreWeight * centre.occluded;
   for (int i = 0; i < 5; ++i) {
     float phi = float(i) * (2.0 * LG_PI / 5.0);
     vec3 d = 0.5 * n + 0.86602540 * (cos(phi) * t1 + sin(phi) * t2);
-    Cone side = trace(origin, d, 0.5);
+    Cone side = trace(origin, d, 0.5, kTanHalfAngle);
     light += kSideWeight * side.light;
     occluded += kSideWeight * side.occluded;
   }
   vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
   imageStore(irradiance, texel, vec4(e, 1.0));
   imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
+  imageStore(specular, texel, specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r));
 }

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // gi.voxel's mip chain, anisotropic (six directions), one invocation per voxel of the level being
 // made. For a ray travelling along +x (and so for each of the six axis directions) the voxel's
-// colour, opacity and facing are its children's composited front to back along x, pair by pair
+// colour, facing and opacity are its children's composited front to back along x, pair by pair
 // (the front child's plus the back one's seen through it), then averaged over the four pairs
 // across x: colour and facing premultiplied by opacity. A lit roof's top voxels then stay hidden
 // behind its dark lower ones from below, where an isotropic mean let a thin roof or wall glow on
@@ -20,32 +20,33 @@ layout(binding = 3, rgba16f) uniform readonly image3D finer_z;
 layout(binding = 4, rgba16f) uniform writeonly image3D coarser_x;  // level
 layout(binding = 5, rgba16f) uniform writeonly image3D coarser_y;
 layout(binding = 6, rgba16f) uniform writeonly image3D coarser_z;
-layout(binding = 7, rgba16f) uniform readonly image3D finer_facing;
-layout(binding = 8, rgba16f) uniform writeonly image3D coarser_facing;
+layout(binding = 7, rgba16f) uniform readonly image3D finer_opacity;
+layout(binding = 8, rgba16f) uniform writeonly image3D coarser_opacity;
 layout(push_constant) uniform Push {
   int level;  // the one being made, 1 or more
 };
 
-// Colour and opacity, and facing along the same axis, as a ray travelling along `axis` the
+// Colour and facing, and opacity along the same axis, as a ray travelling along `axis` the
 // positive (negative = 0) or negative way sees child k of the finer level.
 struct Seen {
-  vec4 colour;  // rgb premultiplied, a: opacity
-  float facing;
+  vec4 colour;  // rgb premultiplied, a: facing
+  float opacity;
 };
 
 // (A macro: images of a declared format cannot be passed to functions.)
 #define LG_CHILD(finer, k, axis, negative) \
   Seen(imageLoad(finer, voxel_chain_texel(k, finer_counts, negative)), \
-       imageLoad(finer_facing, voxel_chain_texel(k, finer_counts, negative))[axis])
+       imageLoad(finer_opacity, voxel_chain_texel(k, finer_counts, negative))[axis])
 
 Seen over(Seen front, Seen back) {
-  float through = 1.0 - front.colour.a;
-  return Seen(front.colour + through * back.colour, front.facing + through * back.facing);
+  float through = 1.0 - front.opacity;
+  return Seen(front.colour + through * back.colour, front.opacity + through * back.opacity);
 }
 
 // Both directions along `axis` (0, 1, 2): the four pairs of children of voxel c, each composited
-// front to back (a side of one voxel has a single child), averaged; facing into the axis's
-// component of f_positive and f_negative.
+// front to back (a side of one voxel has a single child), averaged; opacity into the axis's
+// component of o_positive and o_negative (equal: compositing two opacities is the same either
+// way round, 1 - (1 - a)(1 - b)).
 #define LG_COMPOSITE_AXIS(axis, finer, coarser)                                              \
   {                                                                                          \
     ivec3 along = ivec3(0), across_a = ivec3(0), across_b = ivec3(0);                       \
@@ -63,13 +64,13 @@ Seen over(Seen front, Seen back) {
           p = over(low_p, LG_CHILD(finer, low + along, axis, 0));                               \
           n = over(LG_CHILD(finer, low + along, axis, 1), low_n);                               \
         }                                                                                    \
-        positive.colour += p.colour, positive.facing += p.facing;                            \
-        negative.colour += n.colour, negative.facing += n.facing;                            \
+        positive.colour += p.colour, positive.opacity += p.opacity;                          \
+        negative.colour += n.colour, negative.opacity += n.opacity;                          \
       }                                                                                      \
     imageStore(coarser, voxel_chain_texel(c, counts, 0), positive.colour * 0.25);            \
     imageStore(coarser, voxel_chain_texel(c, counts, 1), negative.colour * 0.25);            \
-    f_positive[axis] = positive.facing * 0.25;                                               \
-    f_negative[axis] = negative.facing * 0.25;                                               \
+    o_positive[axis] = positive.opacity * 0.25;                                              \
+    o_negative[axis] = negative.opacity * 0.25;                                              \
   }
 
 void main() {
@@ -77,11 +78,11 @@ void main() {
   ivec3 c = voxel_invocation_cell(counts);
   if (any(greaterThanEqual(c, counts))) return;
   ivec3 last = finer_counts - 1;
-  vec3 f_positive, f_negative;
+  vec3 o_positive, o_negative;
   LG_COMPOSITE_AXIS(0, finer_x, coarser_x)
   LG_COMPOSITE_AXIS(1, finer_y, coarser_y)
   LG_COMPOSITE_AXIS(2, finer_z, coarser_z)
-  // The facing image's alpha is unused.
-  imageStore(coarser_facing, voxel_chain_texel(c, counts, 0), vec4(f_positive, 1.0));
-  imageStore(coarser_facing, voxel_chain_texel(c, counts, 1), vec4(f_negative, 1.0));
+  // The opacity image's alpha is unused.
+  imageStore(coarser_opacity, voxel_chain_texel(c, counts, 0), vec4(o_positive, 1.0));
+  imageStore(coarser_opacity, voxel_chain_texel(c, counts, 1), vec4(o_negative, 1.0));
 }

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // gi.voxel's injection, one invocation per voxel: the voxelization's sums into level 0 of the
-// chain and of the facing image (voxel_common.glsl). A marked voxel is opaque (a = 1) for rays
+// chain and of the opacity image (voxel_common.glsl). A marked voxel is opaque (a = 1) for rays
 // along all six directions; its radiance is what a diffuse surface of its mean colour and normal
 // reflects under the light, and a ray sees it only where that surface faces the ray (see
 // facing()): albedo x E x max(0, -n . l) / pi x visibility.
@@ -19,11 +19,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 1) readonly buffer Grid { int grid[]; };
 layout(binding = 2) uniform sampler2D shadow_map;
-// Level 0 of the chain and of the facing image (voxel_common.glsl).
+// Level 0 of the chain and of the opacity image (voxel_common.glsl).
 layout(binding = 3, rgba16f) uniform writeonly image3D seen_x;
 layout(binding = 4, rgba16f) uniform writeonly image3D seen_y;
 layout(binding = 5, rgba16f) uniform writeonly image3D seen_z;
-layout(binding = 6, rgba16f) uniform writeonly image3D facing_image;
+layout(binding = 6, rgba16f) uniform writeonly image3D opacity_image;
 
 // How much of a surface of unit normal n faces rays travelling along each axis the positive way
 // (negative = 0) or the negative way: 1 from 15 degrees off edge-on, falling linearly to 0
@@ -42,10 +42,10 @@ void store(ivec3 c, vec3 radiance, vec3 n, float opacity) {
   for (int negative = 0; negative < 2; ++negative) {
     ivec3 t = voxel_chain_texel(c, voxel.counts.xyz, negative);
     vec3 f = opacity * facing(n, negative);
-    imageStore(seen_x, t, vec4(radiance * f.x, opacity));
-    imageStore(seen_y, t, vec4(radiance * f.y, opacity));
-    imageStore(seen_z, t, vec4(radiance * f.z, opacity));
-    imageStore(facing_image, t, vec4(f, 1.0));  // alpha unused
+    imageStore(seen_x, t, vec4(radiance * f.x, f.x));
+    imageStore(seen_y, t, vec4(radiance * f.y, f.y));
+    imageStore(seen_z, t, vec4(radiance * f.z, f.z));
+    imageStore(opacity_image, t, vec4(vec3(opacity), 1.0));  // alpha unused
   }
 }
 
