@@ -49,10 +49,10 @@ class AreaLightLtcGpuTest : public GpuTest {
                              find_shader(lighting_test_shaders(), "tests/lighting/shaders/area_ltc.comp"),
                              {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                               {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                              {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}});
+                              {2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}}});
     submitter().run([&](VkCommandBuffer cmd) {
       const DescriptorWrite writes[] = {storage_buffer(0, in.handle()), storage_buffer(1, out.handle()),
-                                        storage_buffer(2, ltc.handle())};
+                                        uniform_buffer(2, ltc.handle())};
       bind_pipeline(context(), cmd, p, writes);
       vkCmdDispatch(cmd, uint32_t((input.size() + 63) / 64), 1, 1);
       memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});

@@ -57,7 +57,7 @@ LightBuffers::LightBuffers(Context& gpu, const std::string& id)
       tubes_(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       rects_(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      ltc_(gpu, id + " LTC table", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+      ltc_(gpu, id + " LTC table", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT) {
   ltc_.write_value(ltc_table_texels());
 }
 
@@ -129,7 +129,7 @@ void LightBuffers::add_area_lists(std::vector<DescriptorWrite>& writes) const {
   writes.push_back(storage_buffer(16, spheres_.handle()));
   writes.push_back(storage_buffer(17, tubes_.handle()));
   writes.push_back(storage_buffer(18, rects_.handle()));
-  writes.push_back(storage_buffer(22, ltc_.handle()));
+  writes.push_back(uniform_buffer(22, ltc_.handle()));
 }
 
 }  // namespace lg

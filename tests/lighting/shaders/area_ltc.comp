@@ -17,8 +17,7 @@ struct Case {
 
 layout(std430, binding = 0) readonly buffer Cases { Case cases[]; };
 layout(std430, binding = 1) writeonly buffer Results { float integral[]; };
-layout(std430, binding = 2) readonly buffer Ltc { vec4 ltc_table[]; };
-
+#define LG_LTC_BINDING 2
 #include "nodes/lighting/deferred/shaders/ltc_table.glsl"
 
 void main() {

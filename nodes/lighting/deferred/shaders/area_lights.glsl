@@ -17,8 +17,7 @@
 layout(std430, binding = 16) readonly buffer Spheres { SphereLight spheres[]; };
 layout(std430, binding = 17) readonly buffer Tubes { TubeLight tubes[]; };
 layout(std430, binding = 18) readonly buffer Rects { RectLight rects[]; };
-layout(std430, binding = 22) readonly buffer Ltc { vec4 ltc_table[]; };
-
+#define LG_LTC_BINDING 22
 #include "nodes/lighting/deferred/shaders/ltc_table.glsl"
 
 // lighting.deferred's area_specular: true for "ltc", false for "representative_point" (the

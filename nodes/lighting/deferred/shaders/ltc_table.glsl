@@ -1,10 +1,14 @@
 // The LTC table of nodes/lighting/deferred/ltc_table.h (fitted by lumagraph-ltc-fit), read
-// bilinearly as ltc_lookup does on the CPU. Include it after declaring `vec4 ltc_table[]` in a
-// buffer, one entry a vec4, filled from ltc_table_texels() (area_lights.glsl binds it at 22).
+// bilinearly as ltc_lookup does on the CPU. Include it after #define LG_LTC_BINDING: a uniform
+// buffer there holds the table, one entry a vec4, filled from ltc_table_texels() (area_lights.glsl
+// binds it at 22). A uniform block, not a storage buffer: lavapipe loads a storage buffer one
+// lane at a time.
 #ifndef LG_LTC_TABLE_GLSL
 #define LG_LTC_TABLE_GLSL
 
 const int LG_LTC_SIZE = 32;
+
+layout(std140, binding = LG_LTC_BINDING) uniform Ltc { vec4 ltc_table[LG_LTC_SIZE * LG_LTC_SIZE]; };
 
 vec4 ltc_entry(int i, int j) {
   return ltc_table[j * LG_LTC_SIZE + i];
