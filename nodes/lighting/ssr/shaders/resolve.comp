@@ -48,32 +48,36 @@ void main() {
     return;
   }
   // The neighbourhood's range, which also bounds last frame's result: where no neighbour has a
-  // hit, the output is 0 whatever the history held, and nothing more needs reading.
-  vec4 taps[9], lo = vec4(1e30), hi = vec4(-1e30);
-  for (int i = 0; i < 9; ++i) {
-    taps[i] = premultiplied(texelFetch(raw, clamp(low + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1), 0));
-    lo = min(lo, taps[i]);
-    hi = max(hi, taps[i]);
-  }
+  // hit, the output is 0 whatever the history held, and nothing more needs reading. The taps are
+  // fetched again below rather than kept in an array: lavapipe keeps such an array in memory.
+  vec4 lo = vec4(1e30), hi = vec4(-1e30);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      vec4 tap = premultiplied(texelFetch(raw, clamp(low + ivec2(dx, dy), ivec2(0), size - 1), 0));
+      lo = min(lo, tap);
+      hi = max(hi, tap);
+    }
   if (!(hi.a > 0.0)) {
     imageStore(reflections, low, vec4(0.0));
     return;
   }
-  vec4 result = taps[4];
+  vec4 result = premultiplied(texelFetch(raw, low, 0));
   if ((flags & 2u) != 0u && roughness > kGlossy) {
     vec3 n = decode_normal(texelFetch(normal_tex, texel, 0).rgb);
     vec4 sum = vec4(0.0);
     float weight = 0.0;
-    for (int i = 0; i < 9; ++i) {
-      ivec2 source = upsample_source_texel(clamp(low + ivec2(i % 3 - 1, i / 3 - 1), ivec2(0), size - 1), k, full_size);
-      // Alike surfaces only: device depth within 5% (relative, as it is near / distance), normals
-      // within about 35 degrees (cosine^8 above 0.03).
-      float d = texelFetch(hiz, source, 0).r;
-      float w = clamp(1.0 - abs(d - depth) / (0.05 * depth), 0.0, 1.0) *
-                pow(max(dot(n, decode_normal(texelFetch(normal_tex, source, 0).rgb)), 0.0), 8.0);
-      sum += w * taps[i];
-      weight += w;
-    }
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        ivec2 neighbour = clamp(low + ivec2(dx, dy), ivec2(0), size - 1);
+        ivec2 source = upsample_source_texel(neighbour, k, full_size);
+        // Alike surfaces only: device depth within 5% (relative, as it is near / distance),
+        // normals within about 35 degrees (cosine^8 above 0.03).
+        float d = texelFetch(hiz, source, 0).r;
+        float w = clamp(1.0 - abs(d - depth) / (0.05 * depth), 0.0, 1.0) *
+                  pow(max(dot(n, decode_normal(texelFetch(normal_tex, source, 0).rgb)), 0.0), 8.0);
+        sum += w * premultiplied(texelFetch(raw, neighbour, 0));
+        weight += w;
+      }
     if (weight > 0.0) result = sum / weight;
   }
   if ((flags & 1u) != 0u && temporal_blend > 0.0) {

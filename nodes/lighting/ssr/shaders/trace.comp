@@ -81,7 +81,9 @@ float cell_exit(vec3 o, vec3 d, vec2 lo, vec2 hi) {
 ivec2 march(vec3 s0, vec3 d, float t_end, vec3 l) {
   ivec2 size = textureSize(hiz, 0);
   int top = textureQueryLevels(hiz) - 1;
-  int level = 0;
+  // At resolution_scale 1/k the ray stands for a k x k block: start at the pyramid's level of
+  // that size (the walk descends where it must), which saves the first climbs.
+  int level = min(findMSB(k), top);
   float t = cell_exit(s0, d, floor(s0.xy), floor(s0.xy) + 1.0) + kNudge;  // out of the ray's own pixel
   ivec2 hit = ivec2(-1);
   for (uint i = 0u; i < max_steps && t < t_end && hit.x < 0; ++i) {
@@ -103,10 +105,11 @@ ivec2 march(vec3 s0, vec3 d, float t_end, vec3 l) {
     } else {
       // Level 0: the ray reaches or passes behind this pixel's surface. A hit when it crosses the
       // surface inside the pixel or lies behind it by less than `thickness`, on a front face.
+      // The normal is fetched only for a candidate: most level-0 steps pass behind nothing.
       bool crossed = q.z >= nearest;
-      bool thin = nearest > 0.0 && q.z > 0.0 && near_plane / q.z - near_plane / nearest <= thickness;
-      bool front = dot(decode_normal(texelFetch(normal_tex, cell, 0).rgb), l) < 0.0;
-      if (nearest > 0.0 && (crossed || thin) && front) hit = cell;
+      bool thin = q.z > 0.0 && near_plane / q.z - near_plane / nearest <= thickness;
+      if (nearest > 0.0 && (crossed || thin) && dot(decode_normal(texelFetch(normal_tex, cell, 0).rgb), l) < 0.0)
+        hit = cell;
       t = t_exit + kNudge;  // otherwise: a thickness miss or a surface seen from behind, go on
     }
   }
