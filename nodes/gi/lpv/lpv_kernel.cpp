@@ -17,6 +17,7 @@
 #include "nodes/common/node_shaders.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
+#include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/gi/lpv/lpv_model.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
@@ -38,11 +39,6 @@ constexpr double kLobePeak = 1.02332671;      // the largest coefficient of sh_l
 // A triangle's blocking in a cell is at most 1 x kLobePeak (lpv_voxelize.comp): 2^16 units a unit
 // keeps 2^15 of them in a cell within an int, which no cell's surfaces come near.
 constexpr double kOcclusionUnit = 65536.0;
-// lpv_voxelize.comp's local size: 8 triangles x 8 slabs of cell layers; a slab is as many layers
-// as keep an invocation's loop under lavapipe's 65,535 iterations (gi.voxel's voxelize.comp).
-constexpr uint32_t kVoxelizeTile = 8;
-constexpr uint32_t kTrianglesPerDispatch = 65535 * kVoxelizeTile;
-constexpr int kVoxelizeLoopIterations = 65535;
 
 struct Constants {  // shaders/lpv_common.glsl
   glm::vec4 origin_cell;
@@ -53,10 +49,6 @@ struct Constants {  // shaders/lpv_common.glsl
 
 struct RsmLight {  // shaders/lpv_rsm.frag
   glm::vec4 direction, irradiance;
-};
-
-struct VoxelizePush {  // shaders/lpv_voxelize.comp
-  uint32_t draw_index, first_triangle, triangle_count, slab_layers;
 };
 
 struct RsmPush {  // lighting.deferred's shadow_draw.glsl
@@ -280,22 +272,7 @@ class LpvKernel final : public NodeKernel {
 
   // The geometry volume from every draw's triangles (lpv_voxelize.comp).
   void voxelize(PassContext& ctx) {
-    const SceneView& scene = ctx.scene();
-    const int slab_layers = std::max(1, kVoxelizeLoopIterations / (grid_.counts.x * grid_.counts.y));
-    const int slabs = (grid_.counts.z + slab_layers - 1) / slab_layers;
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-      const GpuMesh& mesh = ctx.gpu_scene().mesh(scene.draws[i].mesh);
-      const uint32_t triangles = mesh.index_count / 3;
-      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, draws_->handle()),
-                                        storage_buffer(2, mesh.vertices.handle()),
-                                        storage_buffer(3, mesh.indices.handle()),
-                                        storage_buffer(4, occlusion_fixed_.handle())};
-      for (uint32_t first = 0; first < triangles; first += kTrianglesPerDispatch) {
-        const VoxelizePush push{i, first, std::min(triangles - first, kTrianglesPerDispatch), uint32_t(slab_layers)};
-        dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_voxelize.comp", writes, push.triangle_count, uint32_t(slabs),
-                         std::as_bytes(std::span(&push, 1)), kVoxelizeTile);
-      }
-    }
+    voxelize_draws(ctx, "nodes/gi/lpv/shaders/lpv_voxelize.comp", grid_, *constants_, *draws_, occlusion_fixed_);
   }
 
   void propagate(PassContext& ctx) {

@@ -17,6 +17,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
+#include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/lighting/deferred/shadow_depth_pipeline.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
@@ -33,13 +34,6 @@ namespace lg {
 namespace {
 
 constexpr uint64_t kGridBytesPerVoxel = 8 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
-// voxelize.comp's local size: 8 triangles x 8 slabs of voxel layers. A dispatch holds at most
-// Vulkan's least maxComputeWorkGroupCount of groups along the triangles; a larger mesh takes
-// several. A slab is as many layers as keep an invocation's voxel loop under lavapipe's 65,535
-// iterations (a layer of the largest grid, 128 x 128, is 16,384).
-constexpr uint32_t kVoxelizeTile = 8;
-constexpr uint32_t kTrianglesPerDispatch = 65535 * kVoxelizeTile;
-constexpr int kVoxelLoopIterations = 65535;
 
 struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 origin_cell;
@@ -48,10 +42,6 @@ struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 irradiance;
   glm::mat4 shadow_from_world;
   glm::ivec4 chain;
-};
-
-struct VoxelizePush {  // shaders/voxelize.comp
-  uint32_t draw_index, first_triangle, triangle_count, slab_layers;
 };
 
 class VoxelKernel final : public NodeKernel {
@@ -201,22 +191,7 @@ class VoxelKernel final : public NodeKernel {
     memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                    {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
-    const SceneView& scene = ctx.scene();
-    const int slab_layers = std::max(1, kVoxelLoopIterations / (grid_.counts.x * grid_.counts.y));
-    const int slabs = (grid_.counts.z + slab_layers - 1) / slab_layers;
-    for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-      const GpuMesh& mesh = ctx.gpu_scene().mesh(scene.draws[i].mesh);
-      const uint32_t triangles = mesh.index_count / 3;
-      const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, draws_->handle()),
-                                        storage_buffer(2, mesh.vertices.handle()),
-                                        storage_buffer(3, mesh.indices.handle()),
-                                        storage_buffer(4, grid_sums_.handle())};
-      for (uint32_t first = 0; first < triangles; first += kTrianglesPerDispatch) {
-        const VoxelizePush push{i, first, std::min(triangles - first, kTrianglesPerDispatch), uint32_t(slab_layers)};
-        dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxelize.comp", writes, push.triangle_count, uint32_t(slabs),
-                         std::as_bytes(std::span(&push, 1)), kVoxelizeTile);
-      }
-    }
+    voxelize_draws(ctx, "nodes/gi/voxel/shaders/voxelize.comp", grid_, *constants_, *draws_, grid_sums_);
   }
 
   // The sums into level 0 (the chain kept in the GENERAL layout).
