@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace lg {
 namespace {
@@ -40,6 +42,18 @@ GpuSpot gpu_spot(const SpotLightData& l, int first_view, int views) {
           glm::vec4(float(first_view), float(views), 0.0f, 0.0f)};
 }
 
+// A list as its uniform block takes it: the block's whole size (the shaders declare
+// LG_MAX_LIGHTS entries), the entries past the count unread.
+template <typename T>
+void write_list(HostBuffer& buffer, std::vector<T> lights, const char* kind) {
+  if (lights.size() > kMaxLightsPerKind)
+    throw std::runtime_error("lighting.deferred shades at most " + std::to_string(kMaxLightsPerKind) + " " + kind +
+                             " lights a frame; the scene has " + std::to_string(lights.size()) +
+                             " that reach the view");
+  lights.resize(kMaxLightsPerKind);
+  buffer.write(lights);
+}
+
 }  // namespace
 
 int shadow_caster(const SceneView& scene) {
@@ -50,12 +64,12 @@ int shadow_caster(const SceneView& scene) {
 
 LightBuffers::LightBuffers(Context& gpu, const std::string& id)
     : constants(gpu, id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
-      directional_(gpu, id + " directional lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      points_(gpu, id + " point lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      spots_(gpu, id + " spot lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      spheres_(gpu, id + " sphere lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      tubes_(gpu, id + " tube lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      rects_(gpu, id + " rectangle lights", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      directional_(gpu, id + " directional lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      points_(gpu, id + " point lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      spots_(gpu, id + " spot lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      spheres_(gpu, id + " sphere lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      tubes_(gpu, id + " tube lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      rects_(gpu, id + " rectangle lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
       ltc_(gpu, id + " LTC table", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT) {
   ltc_.write_value(ltc_table_texels());
@@ -102,12 +116,12 @@ void LightBuffers::write_lights(const SceneView& scene, int caster, const LocalS
   constants_out.counts[3] = uint32_t(tubes.size());
   constants_out.counts2[0] = uint32_t(rects.size());
   constants_out.counts2[1] = uint32_t(spots.size());
-  directional_.write(directional);
-  points_.write(points);
-  spots_.write(spots);
-  spheres_.write(spheres);
-  tubes_.write(tubes);
-  rects_.write(rects);
+  write_list(directional_, std::move(directional), "directional");
+  write_list(points_, std::move(points), "point");
+  write_list(spots_, std::move(spots), "spot");
+  write_list(spheres_, std::move(spheres), "sphere");
+  write_list(tubes_, std::move(tubes), "tube");
+  write_list(rects_, std::move(rects), "rectangle");
   shadow_views_.write(views);
 }
 
@@ -116,9 +130,9 @@ void LightBuffers::add_constants(std::vector<DescriptorWrite>& writes) const {
 }
 
 void LightBuffers::add_direct_lists(std::vector<DescriptorWrite>& writes) const {
-  writes.push_back(storage_buffer(11, directional_.handle()));
-  writes.push_back(storage_buffer(12, points_.handle()));
-  writes.push_back(storage_buffer(13, spots_.handle()));
+  writes.push_back(uniform_buffer(11, directional_.handle()));
+  writes.push_back(uniform_buffer(12, points_.handle()));
+  writes.push_back(uniform_buffer(13, spots_.handle()));
 }
 
 void LightBuffers::add_shadow_views(std::vector<DescriptorWrite>& writes) const {
@@ -126,9 +140,9 @@ void LightBuffers::add_shadow_views(std::vector<DescriptorWrite>& writes) const 
 }
 
 void LightBuffers::add_area_lists(std::vector<DescriptorWrite>& writes) const {
-  writes.push_back(storage_buffer(16, spheres_.handle()));
-  writes.push_back(storage_buffer(17, tubes_.handle()));
-  writes.push_back(storage_buffer(18, rects_.handle()));
+  writes.push_back(uniform_buffer(16, spheres_.handle()));
+  writes.push_back(uniform_buffer(17, tubes_.handle()));
+  writes.push_back(uniform_buffer(18, rects_.handle()));
   writes.push_back(uniform_buffer(22, ltc_.handle()));
 }
 

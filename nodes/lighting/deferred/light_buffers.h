@@ -1,5 +1,5 @@
 // The lights as lighting.deferred's shaders read them (shaders/lights.glsl, direct_lights.glsl,
-// area_lights.glsl): the constants block and one storage buffer per kind of light, filled from
+// area_lights.glsl): the constants block and one uniform block per kind of light, filled from
 // the scene. scene.forward_transparent lights its surfaces from the same buffers.
 #pragma once
 
@@ -17,6 +17,10 @@
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
+
+// Lights of each kind a frame shades at most (lights.glsl's LG_MAX_LIGHTS); more in view is an
+// error naming the kind (write_lights throws).
+inline constexpr size_t kMaxLightsPerKind = 256;
 
 // shaders/lights.glsl's Constants (std140).
 struct LightConstants {
@@ -39,7 +43,8 @@ class LightBuffers {
   LightBuffers(Context& gpu, const std::string& id);
 
   // Writes every light list: `caster` (shadow_caster()) marked as using the shadow map, the
-  // point and spot lights with their views of `local`; sets the counts in `constants`.
+  // point and spot lights with their views of `local`; sets the counts in `constants`. Throws
+  // std::runtime_error when a kind has more than kMaxLightsPerKind lights.
   void write_lights(const SceneView& scene, int caster, const LocalShadows& local, LightConstants& constants);
 
   // The constants at binding 0 and the lists at the bindings direct_lights.glsl,

@@ -14,9 +14,9 @@
 #include "nodes/lighting/deferred/shaders/area_shadows.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
 
-layout(std430, binding = 16) readonly buffer Spheres { SphereLight spheres[]; };
-layout(std430, binding = 17) readonly buffer Tubes { TubeLight tubes[]; };
-layout(std430, binding = 18) readonly buffer Rects { RectLight rects[]; };
+layout(std140, binding = 16) uniform Spheres { SphereLight spheres[LG_MAX_LIGHTS]; };
+layout(std140, binding = 17) uniform Tubes { TubeLight tubes[LG_MAX_LIGHTS]; };
+layout(std140, binding = 18) uniform Rects { RectLight rects[LG_MAX_LIGHTS]; };
 #define LG_LTC_BINDING 22
 #include "nodes/lighting/deferred/shaders/ltc_table.glsl"
 

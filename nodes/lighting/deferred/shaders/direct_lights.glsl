@@ -11,9 +11,9 @@
 #include "nodes/lighting/deferred/shaders/local_shadow_atlas.glsl"
 
 layout(binding = 10) uniform sampler2D shadow_map;
-layout(std430, binding = 11) readonly buffer Directional { DirectionalLight directional[]; };
-layout(std430, binding = 12) readonly buffer Points { PointLight points[]; };
-layout(std430, binding = 13) readonly buffer Spots { SpotLight spots[]; };
+layout(std140, binding = 11) uniform Directional { DirectionalLight directional[LG_MAX_LIGHTS]; };
+layout(std140, binding = 12) uniform Points { PointLight points[LG_MAX_LIGHTS]; };
+layout(std140, binding = 13) uniform Spots { SpotLight spots[LG_MAX_LIGHTS]; };
 
 // 3x3 percentage-closer filtering: the fraction of taps nearer the light than p is shadowed.
 // Reversed depth: a larger stored value is nearer the light.

@@ -6,6 +6,11 @@
 
 #include "nodes/common/shaders/camera.glsl"
 
+// Lights of each kind a frame shades at most (light_buffers.h's kMaxLightsPerKind): the lists are
+// uniform blocks, since lavapipe loads a storage buffer one lane at a time even when every lane
+// reads the same light; 256 of the largest (64 bytes) fill the 16 KB every device offers.
+const int LG_MAX_LIGHTS = 256;
+
 struct DirectionalLight {
   vec4 direction;  // xyz: unit, the way the light travels; w: 1 when it uses the shadow map
   vec4 irradiance;
