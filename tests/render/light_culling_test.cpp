@@ -12,6 +12,7 @@
 #include <string>
 
 #include "api/renderer.h"
+#include "nodes/lighting/deferred/light_buffers.h"
 #include "nodes/lighting/deferred/local_shadows.h"
 #include "runtime/scene/mesh_generators.h"
 #include "runtime/scene/projection.h"
@@ -141,6 +142,23 @@ TEST(LightCullingRender, LightThatCannotReachTheViewChangesNoPixel) {
   add_point(world, {12.0f, 0.5f, 0.0f}, 2.0f);  // 9 m from the view's side plane
   add_point(world, {0.0f, 7.0f, 0.0f}, 2.5f);   // behind the camera
   EXPECT_EQ(render(world, true), before);
+}
+
+// The lists are uniform blocks of kMaxLightsPerKind lights a kind: that many in view render
+// (validation-clean), one more fails the frame with an error naming the kind and the count.
+TEST(LightCullingRender, MoreLightsOfAKindInViewThanTheListHoldsIsAnErrorNamingThem) {
+  World world = floor_seen_from_above();
+  for (size_t i = 0; i < kMaxLightsPerKind; ++i) add_point(world, {0.01f * float(i), 0.5f, 0.0f}, 0.0f);
+  EXPECT_FALSE(render(world, true).empty());
+  add_point(world, {0.0f, 0.6f, 0.0f}, 0.0f);
+  try {
+    render(world, true);
+    ADD_FAILURE() << "one light more than the list holds rendered";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("at most 256 point lights"), std::string::npos) << what;
+    EXPECT_NE(what.find("has 257"), std::string::npos) << what;
+  }
 }
 
 }  // namespace
