@@ -136,8 +136,8 @@ TEST(ScreenSpaceReflections, ConfidentPixelsAreCloserToTheReferenceThanTheEnviro
 // confident, the floor's error may grow by at most a fifth of the full-resolution error: the
 // boxes' reflected edges are where the coarser grid loses detail, and a fifth is what those edges
 // (a few per cent of the pixels, each off by the contrast between a box and the sky) can add.
-// The node's default quality (resolution_scale 0.25, 48 steps: what fits the 60 ms at
-// 1280x720 on lavapipe) is held to the same bound: measured 0.451 against 0.414 at full
+// The node's default quality (resolution_scale 0.25, 48 steps: chosen for the 60 ms at
+// 1280x720 on lavapipe, which is not yet shown on a quiet machine) is held to the same bound: measured 0.451 against 0.414 at full
 // resolution and 64 steps (1.09x; 0.5 gives 0.429, 1/3 0.440).
 TEST(ScreenSpaceReflections, CoarserGridsKeepTheAccuracy) {
   const World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/ssr-floor.json");

@@ -256,7 +256,8 @@ class LpvKernel final : public NodeKernel {
                                       sampled_image(2, ctx.image("tmp.rsm_normal").view(), ctx.nearest_sampler()),
                                       sampled_image(3, ctx.image("tmp.rsm_flux").view(), ctx.nearest_sampler()),
                                       storage_buffer(4, light_fixed_.handle())};
-    if (occlusion_) voxelize(ctx);
+    // The first step is not blocked (propagate), so one step or no light needs no geometry volume.
+    if (occlusion_ && light_present_ && iterations_ > 1) voxelize(ctx);
     if (light_present_) dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_inject.comp", inject, size, size);
     compute_to_compute_barrier(cmd);
     const DescriptorWrite resolve[] = {uniform_buffer(0, constants_->handle()),

@@ -1,4 +1,5 @@
-// LightBuffers: the scene's lights in the std430 layouts of shaders/lights.glsl.
+// LightBuffers: the scene's lights in the layouts of shaders/lights.glsl (vec4 members only, so
+// std140 and std430 agree).
 #include "nodes/lighting/deferred/light_buffers.h"
 
 #include <algorithm>
@@ -47,9 +48,9 @@ GpuSpot gpu_spot(const SpotLightData& l, int first_view, int views) {
 template <typename T>
 void write_list(HostBuffer& buffer, std::vector<T> lights, const char* kind) {
   if (lights.size() > kMaxLightsPerKind)
-    throw std::runtime_error("lighting.deferred shades at most " + std::to_string(kMaxLightsPerKind) + " " + kind +
-                             " lights a frame; the scene has " + std::to_string(lights.size()) +
-                             " that reach the view");
+    throw std::runtime_error("at most " + std::to_string(kMaxLightsPerKind) + " " + kind +
+                             " lights are shaded a frame (the light lists are uniform blocks); this frame has " +
+                             std::to_string(lights.size()) + " (those that reach the view where the node culls)");
   lights.resize(kMaxLightsPerKind);
   buffer.write(lights);
 }

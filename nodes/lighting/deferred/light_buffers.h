@@ -18,8 +18,9 @@
 
 namespace lg {
 
-// Lights of each kind a frame shades at most (lights.glsl's LG_MAX_LIGHTS); more in view is an
-// error naming the kind (write_lights throws).
+// Lights of each kind a frame shades at most (lights.glsl's LG_MAX_LIGHTS); more (after culling
+// to the view where the node culls: lighting.deferred and scene.forward_transparent; reflection
+// captures see every light) is an error naming the kind (write_lights throws).
 inline constexpr size_t kMaxLightsPerKind = 256;
 
 // shaders/lights.glsl's Constants (std140).

@@ -8,6 +8,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/common/node_shaders.h"
 #include "nodes/lighting/deferred/light_buffers.h"
+#include "nodes/lighting/deferred/light_culling.h"
 #include "nodes/scene/forward_transparent/blend_order.h"
 #include "nodes/scene/forward_transparent/forward_bindings.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
@@ -47,8 +48,10 @@ class ForwardTransparentKernel final : public NodeKernel {
       centers_version_ = scene.version;
     }
     // No shadow map and no local shadow views: the constants' zeros say none was drawn.
+    // The lights that reach the view, as lighting.deferred shades them (light_culling.h).
+    const SceneView lights = lights_in_view(scene);
     LightConstants constants{};
-    lights_->write_lights(scene, -1, no_local_shadows(scene), constants);
+    lights_->write_lights(lights, -1, no_local_shadows(lights), constants);
     constants.camera = camera_constants(scene.camera, w, h);
     lights_->constants.write_value(constants);
     draws_->write(draw_constants(scene));

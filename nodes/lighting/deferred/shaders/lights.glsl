@@ -1,4 +1,4 @@
-// The light lists of the deferred node (std430, one buffer per kind; light_buffers.cpp fills
+// The light lists of the deferred node (std140 uniform blocks, one per kind; light_buffers.cpp fills
 // them from the scene) and the constants its passes share, at binding 0. The lists' bindings
 // are in direct_lights.glsl and area_lights.glsl; scene.forward_transparent binds the same.
 #ifndef LG_DEFERRED_LIGHTS_GLSL
