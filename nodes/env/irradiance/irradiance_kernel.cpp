@@ -15,12 +15,12 @@ namespace {
 
 constexpr uint32_t kGroup = 8;        // both shaders' workgroup side
 constexpr uint32_t kOutputBlock = 4;  // output texels a side that one invocation of irradiance.comp sums
-// A source texel sums the texels of at most this many mips finer (64 x 64 of them) for its
-// light and direction (irradiance_sources.comp): lavapipe's 65535 loop iterations an invocation.
-constexpr uint32_t kMaxFineLevels = 6;
+// A light sums at most this many texels a side of a finer mip (irradiance_sources.comp): well
+// inside lavapipe's 65535 loop iterations an invocation.
+constexpr uint32_t kMaxBlock = 64;
 
 struct SourcesPush {  // shaders/irradiance_sources.comp
-  int32_t source_mip, fine_mip;
+  int32_t fine_mip;
 };
 
 class IrradianceKernel final : public NodeKernel {
@@ -39,21 +39,23 @@ class IrradianceKernel final : public NodeKernel {
   Image sources_;
 };
 
-uint32_t face_size(const Image& env, uint32_t mip) {
-  return std::max(env.desc().width >> mip, 1u);
+// The finest mip of `env` whose texels under one light of a `source_face` face are at most
+// kMaxBlock a side (the coarsest there is, where the chain is too short).
+uint32_t fine_mip(const Image& env, uint32_t source_face) {
+  uint32_t mip = 0;
+  while ((env.desc().width >> mip) > kMaxBlock * source_face && mip + 1 < env.desc().mips) ++mip;
+  return mip;
 }
 
 }  // namespace
 
-uint32_t irradiance_source_mip(const Image& env, uint32_t source_mip) {
-  uint32_t mip = std::min(source_mip, env.desc().mips - 1);
-  while ((env.desc().width >> mip) > kIrradianceMaxSourceFace && mip + 1 < env.desc().mips) ++mip;
-  return mip;
+uint32_t irradiance_source_face(const Image& env, uint32_t source_mip) {
+  return std::clamp(env.desc().width >> std::min(source_mip, 31u), 1u, kIrradianceMaxSourceFace);
 }
 
 void fit_irradiance_sources(Context& gpu, const std::string& name, const Image& env, uint32_t source_mip,
                             Image& sources) {
-  const uint32_t size = face_size(env, irradiance_source_mip(env, source_mip));
+  const uint32_t size = irradiance_source_face(env, source_mip);
   if (sources.handle() != VK_NULL_HANDLE && sources.desc().height == size) return;
   sources = Image::dedicated(gpu, {.name = name,
                                    .format = VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -65,7 +67,7 @@ void fit_irradiance_sources(Context& gpu, const std::string& name, const Image& 
 
 void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer cmd, const std::string& name,
                        uint32_t source_mip, Image& env, VkSampler sampler, Image& sources, Image& irradiance) {
-  const uint32_t mip = irradiance_source_mip(env, source_mip), source_size = face_size(env, mip);
+  const uint32_t source_size = irradiance_source_face(env, source_mip);
   const VkImageView sources_view = sources.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
   image_barrier(cmd, sources, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
   const Pipeline& weigh =
@@ -76,7 +78,7 @@ void record_irradiance(Context& gpu, PipelineCache& pipelines, VkCommandBuffer c
   const DescriptorWrite source_writes[] = {sampled_image(0, env.view({.type = VK_IMAGE_VIEW_TYPE_2D_ARRAY}), sampler),
                                            storage_image(1, sources_view)};
   bind_pipeline(gpu, cmd, weigh, source_writes);
-  push_constants(cmd, weigh, SourcesPush{int32_t(mip), int32_t(mip > kMaxFineLevels ? mip - kMaxFineLevels : 0)});
+  push_constants(cmd, weigh, SourcesPush{int32_t(fine_mip(env, source_size))});
   vkCmdDispatch(cmd, (source_size + kGroup - 1) / kGroup, (source_size + kGroup - 1) / kGroup, 6);
   compute_to_compute_barrier(cmd);
 

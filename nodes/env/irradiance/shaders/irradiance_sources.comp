@@ -1,9 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Pass 1 of env.irradiance: each texel (i, j) of face f of the source mip as one light for
-// irradiance.comp, at (2i, j, f) its direction and at (2i + 1, j, f) its light (radiance x solid
-// angle), made once per frame rather than once per output texel.
-// The light is summed over the texels of a finer mip under it (`fine_mip`), and its direction is
+// Pass 1 of env.irradiance: the environment as lights for irradiance.comp, a grid of S x S a
+// face (S the sources image's height), light (i, j) of face f at (2i, j, f) its direction and at
+// (2i + 1, j, f) its light (radiance x solid angle), made once per frame rather than once per
+// output texel.
+// The light is summed over the texels of mip `fine_mip` under it (the F x F face split into S
+// ranges a side, i F / S to (i + 1) F / S, so every texel counts once whether or not S divides F), and its direction is
 // their luminance-weighted mean, kept unnormalised in the light's scale: since n.l is linear in
 // l, n . sum(w_k l_k) is the exact cosine-weighted sum of the fine texels for any n that all of
 // them face, and for grey light exact in colour too. A sun in a coarse texel then lights along
@@ -17,20 +19,20 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2DArray env;  // every mip of the six faces
 layout(binding = 1, rgba32f) uniform writeonly image2DArray sources;
 layout(push_constant) uniform Push {
-  int source_mip, fine_mip;  // fine_mip <= source_mip
+  int fine_mip;
 };
 
 void main() {
   const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   const int face = int(gl_GlobalInvocationID.z);
-  const int size = textureSize(env, source_mip).x, fine_size = textureSize(env, fine_mip).x;
+  const int size = imageSize(sources).y, fine_size = textureSize(env, fine_mip).x;
   if (any(greaterThanEqual(texel, ivec2(size)))) return;
-  const int block = fine_size / size;
+  const ivec2 first = texel * fine_size / size, last = (texel + 1) * fine_size / size;  // last excluded
   vec3 light = vec3(0.0), moment = vec3(0.0);  // sum w L, sum w lum(L) l
   float luminance = 0.0;                       // sum w lum(L)
-  for (int y = 0; y < block; ++y)
-    for (int x = 0; x < block; ++x) {
-      const ivec2 fine = texel * block + ivec2(x, y);
+  for (int y = first.y; y < last.y; ++y)
+    for (int x = first.x; x < last.x; ++x) {
+      const ivec2 fine = ivec2(x, y);
       vec3 radiance = texelFetch(env, ivec3(fine, face), fine_mip).rgb;
       if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0);
       const vec3 w_radiance = radiance * cube_texel_solid_angle(fine, fine_size);
