@@ -24,6 +24,7 @@
 #include "runtime/scene/mesh_generators.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
+#include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
 #include "tests/gi/prt_comparison.h"
 #include "tests/runtime/gpu_test.h"
@@ -105,14 +106,7 @@ TEST(Lpv, BeatsNoIndirectLightOnTheCornellBoxAndFollowsTheSun) {
 // Bound 2.5%, between the two.
 TEST(Lpv, LightDoesNotLeakThroughAWallTheSunDoesNotLight) {
   World world;
-  PbrMaterial white;
-  white.base_color = glm::vec4(glm::vec3(0.8f), 1.0f);
-  const int material = world.add_material(white);
-  auto slab = [&](glm::vec3 size, glm::vec3 at) {
-    Entity e = world.create("slab");
-    world.add(e, MeshRenderer{world.add_mesh(make_box(size)), material});
-    world.add(e, Transform{}).position = at;
-  };
+  const auto slab = slab_adder(world, 0.8f);
   const float t = 0.1f;
   slab({8 + 3 * t, t, 4 + 2 * t}, {0, -t / 2, 0});         // both floors
   slab({4 + t, t, 4 + 2 * t}, {2 + t / 2, 3 + t / 2, 0});  // the east room's ceiling

@@ -28,6 +28,7 @@
 #include "runtime/scene/mesh_generators.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
+#include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -301,14 +302,7 @@ TEST(Voxel, SpecularConeStaysFiniteAtTheEndsOfRoughnessAndAtGrazingAngles) {
 // radiance (fails without the facing image).
 TEST(Voxel, ClosedRoomLitFromOutsideLeaksBelowItsBound) {
   World world;
-  PbrMaterial white;
-  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
-  const int material = world.add_material(white);
-  auto slab = [&](glm::vec3 size, glm::vec3 at) {
-    Entity e = world.create("slab");
-    world.add(e, MeshRenderer{world.add_mesh(make_box(size)), material});
-    world.add(e, Transform{}).position = at;
-  };
+  const auto slab = slab_adder(world, kWhite);
   const float t = 0.1f;
   slab({4 + 2 * t, t, 4 + 2 * t}, {0, -t / 2, 0});
   slab({4 + 2 * t, t, 4 + 2 * t}, {0, 3 + t / 2, 0});
