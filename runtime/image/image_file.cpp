@@ -1,14 +1,13 @@
 #include "runtime/image/image_file.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <limits>
-#include <memory>
+#include <fstream>
 
 #include "runtime/image/exr_header_check.h"
+#include "runtime/image/image_formats.h"
 
 namespace lg {
 namespace {
@@ -24,67 +23,41 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
+// The reader of the format the file's first bytes name, whatever its extension says.
+std::unique_ptr<FormatReader> open_by_signature(const std::string& path) {
+  char magic[8] = {};
+  std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
+  if (std::memcmp(magic, "\x89PNG\r\n\x1a\n", 8) == 0) return open_png(path);
+  if (std::memcmp(magic, "\x76\x2f\x31\x01", 4) == 0) {
+    check_exr_header(path, kMaxPixels);
+    return open_exr(path);
+  }
+  if (std::memcmp(magic, "#?", 2) == 0) return open_rgbe(path);
+  throw ImageFileError(path + ": error: cannot read the image: its first bytes are not those of a PNG, OpenEXR "
+                              "or Radiance HDR file");
+}
+
 }  // namespace
 
-struct ImageReader::Input {
-  std::unique_ptr<OIIO::ImageInput> image;
-};
-
-ImageReader::ImageReader(const std::string& path) : path_(path), input_(std::make_unique<Input>()) {
+ImageReader::ImageReader(const std::string& path) : path_(path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw ImageFileError(path + ": error: no such image file");
-  check_exr_header(path, kMaxPixels);
-  // The reader of the file's extension alone, made from the extension (a file name lets
-  // OpenImageIO probe the file and try other formats): when it failed, ImageInput::open() went on
-  // to try every format OpenImageIO knows, which cost tens of milliseconds a file and answered a
-  // corrupt EXR with "could not find a format reader". No extension: OpenImageIO guesses.
-  const std::string ext = lower_extension(path);
-  input_->image = OIIO::ImageInput::create(ext.size() > 1 ? ext.substr(1) : path);
-  OIIO::ImageSpec opened;
-  if (!input_->image || !input_->image->open(path, opened))
-    throw ImageFileError(
-        path + ": error: cannot read the image: " + (input_->image ? input_->image->geterror() : OIIO::geterror()));
-  const OIIO::ImageSpec& spec = input_->image->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
-    throw ImageFileError(path + ": error: not a 2D image (" + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
-  const uint64_t pixels = uint64_t(spec.width) * uint64_t(spec.height);
+  input_ = open_by_signature(path);
+  const uint64_t pixels = uint64_t(input_->width) * input_->height;
+  if (pixels == 0) throw ImageFileError(path + ": error: the image has no pixels");
   if (pixels > kMaxPixels)
-    throw ImageFileError(path + ": error: " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+    throw ImageFileError(path + ": error: " + std::to_string(input_->width) + "x" + std::to_string(input_->height) +
                          " is larger than the limit of " + std::to_string(kMaxPixels) + " pixels");
-  width_ = uint32_t(spec.width), height_ = uint32_t(spec.height);
+  width_ = input_->width, height_ = input_->height;
 }
 
 ImageReader::~ImageReader() = default;
 
 void ImageReader::read_rgba(std::span<float> rgba) {
-  const uint64_t pixels = uint64_t(width_) * height_;
-  if (rgba.size() != pixels * 4)
+  if (rgba.size() != uint64_t(width_) * height_ * 4)
     throw ImageFileError(path_ + ": error: " + std::to_string(rgba.size()) + " floats cannot hold its " +
                          std::to_string(width_) + "x" + std::to_string(height_) + " RGBA pixels");
-  OIIO::ImageInput& in = *input_->image;
-  const OIIO::ImageSpec& spec = in.spec();
-  const int channels = std::min(spec.nchannels, 4);
-  // Up to four channels land at their place in each RGBA pixel; the others are filled below.
-  const OIIO::stride_t pixel_stride = 4 * sizeof(float), row_stride = pixel_stride * width_;
-  bool ok = true;
-  if (spec.tile_width == 0 && spec.nchannels <= 4) {
-    // A row at a time: OpenImageIO converts a row through a buffer of one native row, where
-    // read_scanlines and read_image convert through one of 64 MiB whatever the rows asked for.
-    for (uint32_t y = 0; ok && y < height_; ++y)
-      ok = in.read_scanline(spec.y + int(y), 0, OIIO::TypeDesc::FLOAT, rgba.data() + uint64_t(y) * width_ * 4,
-                            pixel_stride);
-  } else {
-    ok = in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, rgba.data(), pixel_stride, row_stride);
-  }
-  if (!ok) throw ImageFileError(path_ + ": error: the pixels cannot be read (truncated or corrupt?): " + in.geterror());
-  if (channels == 4) return;
-  for (uint64_t p = 0; p < pixels; ++p) {
-    float* texel = &rgba[p * 4];
-    if (channels == 1) texel[1] = texel[2] = texel[0];  // grey
-    if (channels == 2) texel[2] = 0.0f;
-    texel[3] = 1.0f;
-  }
+  input_->read_rgba(rgba);
 }
 
 ImageData load_image(const std::string& path) {
@@ -100,35 +73,19 @@ void save_image(const std::string& path, uint32_t width, uint32_t height, std::s
     throw ImageFileError(path + ": error: " + std::to_string(rgba.size()) + " floats do not make a " +
                          std::to_string(width) + "x" + std::to_string(height) + " RGBA image");
   const std::string ext = lower_extension(path);
-  OIIO::TypeDesc type;
-  int channels = 4;
-  if (ext == ".png")
-    type = OIIO::TypeDesc::UINT8;
-  else if (ext == ".exr")
-    type = options.full_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
-  else if (ext == ".hdr")
-    type = OIIO::TypeDesc::FLOAT, channels = 3;
-  else
+  if (ext != ".png" && ext != ".exr" && ext != ".hdr")
     throw ImageFileError(path + ": error: unknown image extension '" + ext + "'; expected .png, .exr or .hdr");
-
-  std::vector<float> pixels(uint64_t(width) * height * channels);
-  for (uint64_t p = 0; p < uint64_t(width) * height; ++p)
-    for (int c = 0; c < channels; ++c) pixels[p * channels + c] = rgba[p * 4 + c];
-
-  // Same folder and extension, so the rename is atomic and OpenImageIO picks the same format.
+  // A temporary file in the same folder, renamed over the target: the rename is atomic.
   const fs::path target(path);
   const fs::path temporary = target.parent_path() / ("." + target.stem().string() + ".partial" + ext);
-  auto out = OIIO::ImageOutput::create(temporary.string());
-  if (!out) throw ImageFileError(path + ": error: cannot write this format: " + OIIO::geterror());
-  OIIO::ImageSpec spec(int(width), int(height), channels, type);
-  if (ext == ".exr") spec.attribute("compression", options.compress ? "zip" : "none");
-  bool ok =
-      out->open(temporary.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
   std::error_code ec;
-  if (!ok) {
-    std::string why = out->geterror();
+  try {
+    if (ext == ".png") write_png(temporary.string(), width, height, rgba);
+    if (ext == ".exr") write_exr(temporary.string(), width, height, rgba, options.compress, options.full_float);
+    if (ext == ".hdr") write_rgbe(temporary.string(), width, height, rgba);
+  } catch (const std::exception& e) {
     fs::remove(temporary, ec);
-    throw ImageFileError(path + ": error: writing failed: " + why);
+    throw ImageFileError(path + ": error: writing failed: " + e.what());
   }
   fs::rename(temporary, target, ec);
   if (ec) {

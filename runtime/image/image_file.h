@@ -1,10 +1,11 @@
-// Reading and writing image files with OpenImageIO: EXR and HDR (linear, float) and PNG (8-bit,
-// values taken as already display-encoded). Pixels are float RGBA, rows top to bottom;
-// ImageReader reads them straight into memory the caller owns (a staging buffer), so a large
-// image is never held twice. Every
-// failure — a missing, truncated or corrupt file, an unsupported format, a failed write —
-// throws ImageFileError naming the file and what went wrong; saving is atomic (a temporary
-// file renamed over the target), so a failed save never leaves half an image behind.
+// Reading and writing image files: EXR and Radiance HDR (linear, float) and PNG (8- or 16-bit
+// read, 8-bit written; taken as already display-encoded); a file is read by the format its first
+// bytes name (image_formats.h). Pixels are float RGBA, rows top to
+// bottom; ImageReader reads them straight into memory the caller owns (a staging buffer), so a
+// large image is never held twice. Every failure — a missing, truncated or corrupt file, an
+// unsupported format, a failed write — throws ImageFileError naming the file and what went
+// wrong; saving is atomic (a temporary file renamed over the target), so a failed save never
+// leaves half an image behind.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,8 @@
 #include <vector>
 
 namespace lg {
+
+class FormatReader;
 
 class ImageFileError : public std::runtime_error {
  public:
@@ -37,14 +40,13 @@ class ImageReader {
 
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
-  // Reads every pixel into `rgba` (width * height * 4 floats, laid out as ImageData::rgba), a
-  // band of rows at a time, so OpenImageIO's own conversion buffer stays a few MiB.
+  // Reads every pixel into `rgba` (width * height * 4 floats, laid out as ImageData::rgba); only
+  // a PNG passes through a buffer of its own (its 8- or 16-bit pixels).
   void read_rgba(std::span<float> rgba);
 
  private:
-  struct Input;
   std::string path_;
-  std::unique_ptr<Input> input_;
+  std::unique_ptr<FormatReader> input_;
   uint32_t width_ = 0, height_ = 0;
 };
 

@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 constexpr uint32_t kWidth = 8192, kHeight = 4096;
 constexpr int64_t kFloatCopy = int64_t{kWidth} * kHeight * 4 * sizeof(float);  // 512 MiB
 // Beyond the two copies: lavapipe's JIT of the two pipelines, the validation layer's tracking,
-// OpenImageIO's conversion buffer (a band of rows, ~4 MiB) and the 256^2 output cube (4 MiB).
+// OpenEXR's buffers (a block of rows) and the 256^2 output cube (4 MiB).
 constexpr int64_t kSlack = int64_t{64} << 20;
 constexpr uint32_t kFace = 256;
 constexpr float kBright = 1e4f;  // well inside half range, which the EXR stores

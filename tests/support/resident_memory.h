@@ -1,7 +1,7 @@
 // The process's resident memory from /proc/self/status, and its high-water mark reset through
 // /proc/self/clear_refs (Linux 4.0 and later). Unlike a heap tracker this sees every byte the
 // process touches: malloc from C libraries, mapped driver memory (lavapipe's device memory is
-// host memory) and OpenImageIO's buffers alike.
+// host memory) and the image readers' buffers alike.
 #pragma once
 
 #include <cstdint>

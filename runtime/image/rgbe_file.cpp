@@ -1,0 +1,174 @@
+// Radiance RGBE (.hdr): a text header ("#?" program line, variables such as
+// FORMAT=32-bit_rle_rgbe, an empty line, then the resolution "-Y height +X width"), then per
+// scan line either 4 bytes a pixel (red, green and blue mantissas sharing one exponent) or, for
+// widths 8 to 32767, the "new" run-length encoding: 2, 2, width's two bytes, then each of the 4
+// components as runs (a count above 128: that many minus 128 of the next byte; otherwise that
+// many literal bytes). A value is mantissa * 2^(exponent - 136), 0 where the exponent is 0.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include "runtime/image/image_file.h"
+#include "runtime/image/image_formats.h"
+
+namespace lg {
+namespace {
+
+constexpr size_t kMaxHeaderLine = 4096;
+constexpr int kMaxHeaderLines = 1024;
+
+struct File {
+  std::FILE* handle;
+  File(const std::string& path, const char* mode) : handle(std::fopen(path.c_str(), mode)) {}
+  ~File() {
+    if (handle) std::fclose(handle);
+  }
+};
+
+class RgbeReader final : public FormatReader {
+ public:
+  explicit RgbeReader(const std::string& path) : path_(path), file_(path, "rb") {
+    if (!file_.handle) throw ImageFileError(path + ": error: cannot open the image");
+    std::string line = read_line();
+    if (line.rfind("#?", 0) != 0) fail("not a Radiance HDR file (it does not start with '#?')");
+    for (int n = 0;; ++n) {
+      if (n == kMaxHeaderLines) fail("the header has more than " + std::to_string(kMaxHeaderLines) + " lines");
+      line = read_line();
+      if (line.empty()) break;
+      if (line.rfind("FORMAT=", 0) == 0 && line != "FORMAT=32-bit_rle_rgbe")
+        fail("the header's '" + line + "' is not supported; expected FORMAT=32-bit_rle_rgbe");
+    }
+    line = read_line();
+    char y_sign = 0, x_sign = 0, y_axis = 0, x_axis = 0, rest = 0;
+    long h = 0, w = 0;
+    if (std::sscanf(line.c_str(), "%c%c %ld %c%c %ld %c", &y_sign, &y_axis, &h, &x_sign, &x_axis, &w, &rest) != 6 ||
+        y_axis != 'Y' || x_axis != 'X' || (y_sign != '-' && y_sign != '+') || x_sign != '+' || h <= 0 || w <= 0 ||
+        h > 0x7fffffffL || w > 0x7fffffffL)
+      fail("the resolution line '" + line + "' is not '-Y height +X width' (or '+Y height +X width')");
+    width = uint32_t(w), height = uint32_t(h);
+    bottom_up_ = y_sign == '+';
+  }
+
+  void read_rgba(std::span<float> rgba) override {
+    std::vector<uint8_t> scan(size_t(width) * 4);
+    for (uint32_t y = 0; y < height; ++y) {
+      read_scan_line(scan);
+      float* out = rgba.data() + size_t(bottom_up_ ? height - 1 - y : y) * width * 4;
+      for (uint32_t x = 0; x < width; ++x) {
+        const uint8_t* p = &scan[4 * size_t(x)];
+        const float scale = p[3] == 0 ? 0.0f : std::ldexp(1.0f, int(p[3]) - 136);
+        for (int c = 0; c < 3; ++c) out[4 * x + c] = float(p[c]) * scale;
+        out[4 * x + 3] = 1.0f;
+      }
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& why) const { throw ImageFileError(path_ + ": error: " + why); }
+  [[noreturn]] void truncated() const {
+    fail("the pixels cannot be read (truncated or corrupt?): the file ends inside the pixels");
+  }
+
+  std::string read_line() {
+    std::string line;
+    for (int c; (c = std::fgetc(file_.handle)) != '\n';) {
+      if (c == EOF) fail("the header ends before the resolution line");
+      if (line.size() == kMaxHeaderLine) fail("a header line is longer than " + std::to_string(kMaxHeaderLine));
+      line += char(c);
+    }
+    return line;
+  }
+
+  uint8_t byte() {
+    const int c = std::fgetc(file_.handle);
+    if (c == EOF) truncated();
+    return uint8_t(c);
+  }
+
+  void read_scan_line(std::vector<uint8_t>& scan) {
+    uint8_t start[4];
+    if (std::fread(start, 1, 4, file_.handle) != 4) truncated();
+    const bool encoded = width >= 8 && width <= 0x7fff && start[0] == 2 && start[1] == 2 && !(start[2] & 0x80);
+    if (!encoded) {
+      std::memcpy(scan.data(), start, 4);
+      if (std::fread(scan.data() + 4, 1, scan.size() - 4, file_.handle) != scan.size() - 4) truncated();
+      return;
+    }
+    if (((uint32_t(start[2]) << 8) | start[3]) != width)
+      fail("a scan line's run-length header gives width " + std::to_string((start[2] << 8) | start[3]) +
+           ", not the image's " + std::to_string(width));
+    for (int c = 0; c < 4; ++c)
+      for (uint32_t x = 0; x < width;) {
+        const uint32_t count = byte();
+        const bool run = count > 128;
+        const uint32_t n = run ? count - 128 : count;
+        if (n == 0 || x + n > width) fail("a scan line's run of " + std::to_string(n) + " does not fit its width");
+        if (run) {
+          const uint8_t value = byte();
+          for (uint32_t i = 0; i < n; ++i) scan[4 * size_t(x + i) + c] = value;
+        } else {
+          for (uint32_t i = 0; i < n; ++i) scan[4 * size_t(x + i) + c] = byte();
+        }
+        x += n;
+      }
+  }
+
+  std::string path_;
+  File file_;
+  bool bottom_up_ = false;
+};
+
+// The shared exponent and mantissas of an RGB value (negative and non-finite components as 0).
+void encode(const float* rgb, uint8_t* out) {
+  float c[3];
+  for (int i = 0; i < 3; ++i) c[i] = std::isfinite(rgb[i]) && rgb[i] > 0.0f ? rgb[i] : 0.0f;
+  const float largest = std::max({c[0], c[1], c[2]});
+  if (largest < 1e-32f) {
+    std::memset(out, 0, 4);
+    return;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  exponent = std::min(exponent, 127);  // beyond RGBE's range: its largest mantissas
+  const float scale = std::ldexp(1.0f, 8 - exponent);
+  for (int i = 0; i < 3; ++i) out[i] = uint8_t(std::min(c[i] * scale, 255.0f));
+  out[3] = uint8_t(exponent + 128);
+}
+
+}  // namespace
+
+std::unique_ptr<FormatReader> open_rgbe(const std::string& path) {
+  return std::make_unique<RgbeReader>(path);
+}
+
+void write_rgbe(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
+  File file(path, "wb");
+  if (!file.handle) throw std::runtime_error("cannot create the file");
+  bool ok = std::fprintf(file.handle, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %u +X %u\n", height, width) > 0;
+  // Run-length encoded where the format allows it (so no flat scan line can be mistaken for an
+  // encoded one's start), as literal runs of at most 128 bytes.
+  const bool encoded = width >= 8 && width <= 0x7fff;
+  std::vector<uint8_t> pixels(size_t(width) * 4), line;
+  for (uint32_t y = 0; ok && y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) encode(&rgba[(size_t(y) * width + x) * 4], &pixels[4 * size_t(x)]);
+    line.clear();
+    if (!encoded) {
+      line = pixels;
+    } else {
+      line = {2, 2, uint8_t(width >> 8), uint8_t(width & 0xff)};
+      for (int c = 0; c < 4; ++c)
+        for (uint32_t x = 0; x < width; x += 128) {
+          const uint32_t n = std::min(width - x, 128u);
+          line.push_back(uint8_t(n));
+          for (uint32_t i = 0; i < n; ++i) line.push_back(pixels[4 * size_t(x + i) + c]);
+        }
+    }
+    ok = std::fwrite(line.data(), 1, line.size(), file.handle) == line.size();
+  }
+  if (!ok || std::fflush(file.handle) != 0) throw std::runtime_error("the disk refused the bytes");
+}
+
+}  // namespace lg
