@@ -7,6 +7,12 @@
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/scene/gbuffer/shaders/gbuffer_material.glsl"
 
+// This draw's constants as a uniform block (gbuffer_kernel.cpp binds each draw's range of the
+// buffer): lavapipe loads a storage buffer one lane at a time even where every fragment reads
+// the same draw, and the fragments' loads of draws[draw_index] were about half of the pass. The
+// vertex stage, shared with scene.forward_transparent, still reads `draws`.
+layout(std140, binding = 6) uniform DrawBlock { Draw this_draw; };
+
 layout(location = 0) out vec4 out_normal;
 layout(location = 1) out vec4 out_albedo;
 layout(location = 2) out vec2 out_material;
@@ -14,7 +20,7 @@ layout(location = 3) out vec2 out_motion;
 layout(location = 4) out vec4 out_emissive;
 
 void main() {
-  Draw d = draws[draw_index];
+  Draw d = this_draw;
   MaterialSample m = sample_material(d);
 #ifdef LG_ALPHA_MASK
   // Last, so that every texture above is sampled with its derivatives from whole quads.
