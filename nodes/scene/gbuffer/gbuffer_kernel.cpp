@@ -84,8 +84,9 @@ class GbufferKernel final : public NodeKernel {
   // Depth, then the colour targets: normal, albedo, material, motion, emissive (graph/port_type.cpp).
   static constexpr int gbuffer_targets = 6;
 
-  // The fragment stage's block of one draw (gbuffer_surface.glsl's DrawBlock) starts at a multiple
-  // of 256 bytes, the largest minUniformBufferOffsetAlignment Vulkan allows, so any device takes it.
+  // One draw's uniform block (draw.glsl's DrawBlock: the fragment stage, and the vertex stage of
+  // plain draws) starts at a multiple of 256 bytes, the largest minUniformBufferOffsetAlignment
+  // Vulkan allows, so any device takes it.
   static constexpr size_t kDrawBlockStride = (sizeof(DrawConstants) + 255) / 256 * 256;
 
   static std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants) {

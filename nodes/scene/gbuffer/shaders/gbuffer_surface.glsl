@@ -4,14 +4,9 @@
 // material's cutoff are discarded; the other variants have no discard, so that depth testing
 // can happen before shading. The material's occlusion goes into the albedo target's alpha for
 // lighting.ibl; the emitted radiance into its own target, which lighting.deferred adds.
+#define LG_DRAW_BLOCK  // the draw's constants as draw.glsl's uniform block
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/scene/gbuffer/shaders/gbuffer_material.glsl"
-
-// This draw's constants as a uniform block (gbuffer_kernel.cpp binds each draw's range of the
-// buffer): lavapipe loads a storage buffer one lane at a time even where every fragment reads
-// the same draw, and the fragments' loads of draws[draw_index] were about half of the pass. The
-// vertex stage, shared with scene.forward_transparent, still reads `draws`.
-layout(std140, binding = 6) uniform DrawBlock { Draw this_draw; };
 
 layout(location = 0) out vec4 out_normal;
 layout(location = 1) out vec4 out_albedo;
