@@ -1,6 +1,7 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -34,9 +35,12 @@ class GbufferKernel final : public NodeKernel {
     if (!camera_) {
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      draw_blocks_.emplace(ctx.gpu(), ctx.node().id + " draw blocks", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     }
     camera_->write_value(camera_constants(scene.camera, w, h));
-    draws_->write(draw_constants(scene));
+    const std::vector<DrawConstants> constants = draw_constants(scene);
+    draws_->write(constants);
+    draw_blocks_->write(draw_blocks(constants));
 
     VkRenderingAttachmentInfo colors[gbuffer_targets - 1];
     for (int c = 1; c < gbuffer_targets; ++c) colors[c - 1] = cleared_attachment(targets[c]->view(), {});
@@ -57,7 +61,9 @@ class GbufferKernel final : public NodeKernel {
       const DrawItem& d = scene.draws[i];
       const PbrMaterial& m = scene.material_of(d);
       if (m.alpha_mode == AlphaMode::blend) continue;  // scene.forward_transparent draws it
-      std::vector<DescriptorWrite> writes = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle())};
+      std::vector<DescriptorWrite> writes = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
+                                             uniform_buffer(6, draw_blocks_->handle(), i * kDrawBlockStride,
+                                                            sizeof(DrawConstants))};
       add_material_textures(gpu_scene, m, writes);
       Variant kind = m.alpha_mode == AlphaMode::mask ? masked : textured;
       const auto maps = material_maps(m);
@@ -78,6 +84,18 @@ class GbufferKernel final : public NodeKernel {
   // Depth, then the colour targets: normal, albedo, material, motion, emissive (graph/port_type.cpp).
   static constexpr int gbuffer_targets = 6;
 
+  // One draw's uniform block (draw.glsl's DrawBlock: the fragment stage, and the vertex stage of
+  // plain draws) starts at a multiple of 256 bytes, the largest minUniformBufferOffsetAlignment
+  // Vulkan allows, so any device takes it.
+  static constexpr size_t kDrawBlockStride = (sizeof(DrawConstants) + 255) / 256 * 256;
+
+  static std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants) {
+    std::vector<std::byte> bytes(std::max<size_t>(constants.size(), 1) * kDrawBlockStride);
+    for (size_t i = 0; i < constants.size(); ++i)
+      std::memcpy(bytes.data() + i * kDrawBlockStride, &constants[i], sizeof(DrawConstants));
+    return bytes;
+  }
+
   // Shader variants (gbuffer_surface.glsl): factors only for draws without textures or vertex
   // colours (fewer inputs to interpolate), the whole material, or the whole material with the
   // alpha test.
@@ -94,7 +112,9 @@ class GbufferKernel final : public NodeKernel {
     desc.vertex_shader = node_shader(kind == plain ? "nodes/scene/gbuffer/shaders/gbuffer_plain.vert"
                                                    : "nodes/scene/gbuffer/shaders/gbuffer.vert");
     desc.fragment_shader = node_shader(fragment_shaders[kind]);
-    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                     {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                     {6, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
     for (uint32_t binding : material_texture_bindings)
       desc.bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     desc.push_constant_bytes = sizeof(uint32_t);
@@ -109,7 +129,7 @@ class GbufferKernel final : public NodeKernel {
   }
 
   bool cull_backfaces_, frustum_culling_;
-  std::optional<HostBuffer> camera_, draws_;
+  std::optional<HostBuffer> camera_, draws_, draw_blocks_;
 };
 
 }  // namespace

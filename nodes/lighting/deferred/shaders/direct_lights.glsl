@@ -67,27 +67,41 @@ vec3 punctual(Surface s, vec4 position_range, vec3 intensity) {
 }
 
 // Radiance toward the eye from every directional, point and spot light.
+// The loops are do-whiles: lavapipe (Mesa 22.3) runs a loop's body under the lanes' mask and
+// leaves only when no lane is left, so a `for`, whose exit test comes first, runs its body once
+// more, all lanes masked off, after the last light (the sun's 3x3 filter ran twice a pixel). A
+// do-while tests at the end and runs n bodies for n lights; the `if` around it runs its body
+// masked when n is 0, as the `for` did.
 vec3 direct_radiance(Surface s) {
   vec3 radiance = vec3(0.0);
-  for (uint i = 0; i < counts.x; ++i) {
-    DirectionalLight light = directional[i];
-    float visibility = light.direction.w > 0.0 ? sun_visibility(s) : 1.0;
-    radiance += brdf_cosine(s, -light.direction.xyz) * light.irradiance.rgb * visibility;
+  if (counts.x > 0u) {
+    uint i = 0u;
+    do {
+      DirectionalLight light = directional[i];
+      float visibility = light.direction.w > 0.0 ? sun_visibility(s) : 1.0;
+      radiance += brdf_cosine(s, -light.direction.xyz) * light.irradiance.rgb * visibility;
+    } while (++i < counts.x);
   }
-  for (uint i = 0; i < counts.y; ++i) {
-    PointLight light = points[i];
-    float visibility = local_visibility(s, light.position_range.xyz, light.intensity.w, 6.0);
-    radiance += punctual(s, light.position_range, light.intensity.rgb * visibility);
+  if (counts.y > 0u) {
+    uint i = 0u;
+    do {
+      PointLight light = points[i];
+      float visibility = local_visibility(s, light.position_range.xyz, light.intensity.w, 6.0);
+      radiance += punctual(s, light.position_range, light.intensity.rgb * visibility);
+    } while (++i < counts.y);
   }
-  for (uint i = 0; i < counts2.y; ++i) {
-    SpotLight light = spots[i];
-    vec3 l = normalize(light.position_range.xyz - s.position);
-    // glTF KHR_lights_punctual's falloff: the square of a linear ramp in the cosine of the
-    // angle to the axis, 0 at the outer cone and 1 from the inner cone in.
-    float ramp = clamp(dot(light.direction_angle_scale.xyz, -l) * light.direction_angle_scale.w +
-                           light.intensity_angle_offset.w, 0.0, 1.0);
-    float visibility = local_visibility(s, light.position_range.xyz, light.shadow.x, light.shadow.y);
-    radiance += punctual(s, light.position_range, light.intensity_angle_offset.rgb * (ramp * ramp * visibility));
+  if (counts2.y > 0u) {
+    uint i = 0u;
+    do {
+      SpotLight light = spots[i];
+      vec3 l = normalize(light.position_range.xyz - s.position);
+      // glTF KHR_lights_punctual's falloff: the square of a linear ramp in the cosine of the
+      // angle to the axis, 0 at the outer cone and 1 from the inner cone in.
+      float ramp = clamp(dot(light.direction_angle_scale.xyz, -l) * light.direction_angle_scale.w +
+                             light.intensity_angle_offset.w, 0.0, 1.0);
+      float visibility = local_visibility(s, light.position_range.xyz, light.shadow.x, light.shadow.y);
+      radiance += punctual(s, light.position_range, light.intensity_angle_offset.rgb * (ramp * ramp * visibility));
+    } while (++i < counts2.y);
   }
   return radiance;
 }

@@ -49,7 +49,11 @@ void main() {
   imageStore(bent_normals, origin, own);
   ivec2 end = upsample_block_end(low, k, low_size, full_size);
   int width = end.x - origin.x, count = width * (end.y - origin.y);
-  for (int i = 1; i < count; ++i) {
+  // A do-while, not a for: lavapipe runs a for's body once more, every lane masked off, after
+  // its last pass (its exit test comes first and it leaves when no lane is left), a quarter of
+  // this loop's work at k = 2.
+  int i = 1;
+  if (count > 1) do {
     ivec2 texel = origin + ivec2(i % width, i / width);
     float depth = texelFetch(depth_tex, texel, 0).r;
     // The sky, and a surface whose taps are all sky (thinner than k pixels against it), are
@@ -67,5 +71,5 @@ void main() {
     }
     imageStore(ao, texel, vec4(visibility));
     imageStore(bent_normals, texel, cone);
-  }
+  } while (++i < count);
 }

@@ -12,14 +12,16 @@ layout(binding = 1, rgba8) uniform writeonly image2D display;
 layout(binding = 2) uniform sampler2D auto_exposure_ev;  // 1x1, EV in red (post.exposure)
 layout(push_constant) uniform Push {
   float exposure_scale;  // 2^EV
-  uint curve;            // 0 ACES fitted, 1 neutral, 2 clamp
-  uint auto_exposure;    // 1: multiply by 2^auto_exposure_ev; 0: the binding is a stand-in
 };
+// Specialization constants, not push constants: lavapipe runs both sides of a branch on a
+// uniform value, so every pixel paid for both curves and the exposure's fetch.
+layout(constant_id = 0) const uint curve = 0u;             // 0 ACES fitted, 1 neutral, 2 clamp
+layout(constant_id = 1) const bool auto_exposure = false;  // multiply by 2^auto_exposure_ev; false: a stand-in
 
 // The exposure param's factor, times the automatic exposure's when linked (a non-finite one
 // counts as 0 EV, so it never spreads).
 float exposure_factor() {
-  if (auto_exposure == 0u) return exposure_scale;
+  if (!auto_exposure) return exposure_scale;
   float ev = texelFetch(auto_exposure_ev, ivec2(0), 0).r;
   return abs(ev) < 128.0 ? exposure_scale * exp2(ev) : exposure_scale;
 }

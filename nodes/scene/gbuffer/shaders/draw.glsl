@@ -14,4 +14,13 @@ layout(std140, binding = 0) uniform CameraBlock { Camera camera; };
 layout(std430, binding = 1) readonly buffer Draws { Draw draws[]; };
 layout(push_constant) uniform DrawIndex { uint draw_index; };
 
+#ifdef LG_DRAW_BLOCK
+// The G-buffer's stages read their draw as a uniform block (gbuffer_kernel.cpp binds each
+// draw's range of a buffer of them): lavapipe loads a storage buffer one lane at a time even
+// where every lane reads the same draw (docs/lavapipe-costs.md); draws[draw_index] was about
+// half of the G-buffer pass. The vertex stage of textured draws (gbuffer.vert) is shared with
+// scene.forward_transparent and the reflection capture, which bind only the storage buffer.
+layout(std140, binding = 6) uniform DrawBlock { Draw this_draw; };
+#endif
+
 #endif

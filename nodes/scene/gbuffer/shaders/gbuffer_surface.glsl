@@ -4,6 +4,7 @@
 // material's cutoff are discarded; the other variants have no discard, so that depth testing
 // can happen before shading. The material's occlusion goes into the albedo target's alpha for
 // lighting.ibl; the emitted radiance into its own target, which lighting.deferred adds.
+#define LG_DRAW_BLOCK  // the draw's constants as draw.glsl's uniform block
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/scene/gbuffer/shaders/gbuffer_material.glsl"
 
@@ -14,7 +15,7 @@ layout(location = 3) out vec2 out_motion;
 layout(location = 4) out vec4 out_emissive;
 
 void main() {
-  Draw d = draws[draw_index];
+  Draw d = this_draw;
   MaterialSample m = sample_material(d);
 #ifdef LG_ALPHA_MASK
   // Last, so that every texture above is sampled with its derivatives from whole quads.

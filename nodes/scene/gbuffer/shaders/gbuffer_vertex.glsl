@@ -1,6 +1,7 @@
 // The G-buffer's vertex stage: one mesh into clip space, passing on what the fragment stage
 // (gbuffer_surface.glsl) stores; with LG_MATERIAL_MAPS also both uv sets, the tangent frame,
-// the vertex colour and the world position its material needs.
+// the vertex colour and the world position its material needs. With LG_DRAW_BLOCK (the
+// G-buffer's own variant, gbuffer_plain.vert) the draw comes from draw.glsl's uniform block.
 #include "nodes/scene/gbuffer/shaders/draw.glsl"
 
 layout(location = 0) in vec3 position;
@@ -20,7 +21,11 @@ layout(location = 6) out vec4 vertex_color;
 #endif
 
 void main() {
+#ifdef LG_DRAW_BLOCK
+  Draw d = this_draw;
+#else
   Draw d = draws[draw_index];
+#endif
   vec4 world = d.world * vec4(position, 1.0);
   world_normal = mat3(d.normal_matrix) * normal;
 #ifdef LG_MATERIAL_MAPS
