@@ -7,11 +7,23 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <span>
 #include <string>
 
 namespace lg {
+
+// A C stream closed when it goes out of scope (libpng and the RGBE code read and write through one).
+struct CFile {
+  std::FILE* handle;
+  CFile(const std::string& path, const char* mode) : handle(std::fopen(path.c_str(), mode)) {}
+  ~CFile() {
+    if (handle) std::fclose(handle);
+  }
+  CFile(const CFile&) = delete;
+  CFile& operator=(const CFile&) = delete;
+};
 
 class FormatReader {
  public:

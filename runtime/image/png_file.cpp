@@ -26,14 +26,6 @@ struct PngMessage {
 
 void on_warning(png_structp, png_const_charp) {}
 
-struct File {
-  std::FILE* handle;
-  explicit File(const std::string& path, const char* mode) : handle(std::fopen(path.c_str(), mode)) {}
-  ~File() {
-    if (handle) std::fclose(handle);
-  }
-};
-
 class PngReader final : public FormatReader {
  public:
   explicit PngReader(const std::string& path) : path_(path), file_(path, "rb") {
@@ -89,7 +81,7 @@ class PngReader final : public FormatReader {
   }
 
   std::string path_;
-  File file_;
+  CFile file_;
   PngMessage message_;
   struct Structs {
     png_structp png = nullptr;
@@ -123,7 +115,7 @@ void write_png(const std::string& path, uint32_t width, uint32_t height, std::sp
     bytes[i] = png_byte((rgba[i] > 0.0f ? std::min(rgba[i], 1.0f) : 0.0f) * 255.0f + 0.5f);  // NaN: 0
   std::vector<png_bytep> rows(height);
   for (uint32_t y = 0; y < height; ++y) rows[y] = bytes.data() + size_t(width) * 4 * y;
-  File file(path, "wb");
+  CFile file(path, "wb");
   if (!file.handle) throw std::runtime_error("cannot create the file");
   PngMessage message;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_error, on_warning);

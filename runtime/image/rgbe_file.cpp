@@ -20,14 +20,6 @@ namespace {
 constexpr size_t kMaxHeaderLine = 4096;
 constexpr int kMaxHeaderLines = 1024;
 
-struct File {
-  std::FILE* handle;
-  File(const std::string& path, const char* mode) : handle(std::fopen(path.c_str(), mode)) {}
-  ~File() {
-    if (handle) std::fclose(handle);
-  }
-};
-
 class RgbeReader final : public FormatReader {
  public:
   explicit RgbeReader(const std::string& path) : path_(path), file_(path, "rb") {
@@ -117,7 +109,7 @@ class RgbeReader final : public FormatReader {
   }
 
   std::string path_;
-  File file_;
+  CFile file_;
   bool bottom_up_ = false;
 };
 
@@ -145,7 +137,7 @@ std::unique_ptr<FormatReader> open_rgbe(const std::string& path) {
 }
 
 void write_rgbe(const std::string& path, uint32_t width, uint32_t height, std::span<const float> rgba) {
-  File file(path, "wb");
+  CFile file(path, "wb");
   if (!file.handle) throw std::runtime_error("cannot create the file");
   bool ok = std::fprintf(file.handle, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %u +X %u\n", height, width) > 0;
   // Run-length encoded where the format allows it (so no flat scan line can be mistaken for an
