@@ -30,7 +30,7 @@ void dump_volume(Executor& executor, const PlanResource& r, const fs::path& dir)
   for (uint32_t mip = 0; mip < d.mips; ++mip) {
     const std::vector<float> rgba = executor.read_image(d.name, {mip, 0});
     VtiImage image;
-    image.comment = "lumagraph render --dump: " + d.name + " (" + std::string(d.format) + "), mip " +
+    image.comment = "dumped by lumagraph render: " + d.name + " (" + std::string(d.format) + "), mip " +
                     std::to_string(mip) + " of " + std::to_string(d.mips) + "; rgba as the node's port doc says";
     image.dims = {std::max(d.width >> mip, 1u), std::max(d.height >> mip, 1u), std::max(d.layers >> mip, 1u)};
     const double block = double(1u << mip);
