@@ -157,6 +157,8 @@ InspectorWidget::InspectorWidget(QWidget* parent)
                           VolumeChannel::alpha})
     dumped_channel_->addItem(QString::fromStdString(channel_name(c) + (channel_is_log(c) ? " (log)" : "")));
   dumped_mip_ = new QComboBox(slice_bar_);
+  dumped_channel_->setObjectName(QStringLiteral("dumped_channel"));
+  dumped_mip_->setObjectName(QStringLiteral("dumped_mip"));
   sliders->addWidget(dumped_channel_);
   sliders->addWidget(dumped_mip_);
   connect(dumped_channel_, QOverload<int>::of(&QComboBox::activated), this,
@@ -528,6 +530,7 @@ void InspectorWidget::build_probe_panel(QVBoxLayout* panel) {
   panel->setContentsMargins(8, 8, 8, 8);
   // The bake's volumes, when it has more than one; a live one can be saved as a bake file.
   probe_volume_ = new QComboBox(probe_panel_);
+  probe_volume_->setObjectName(QStringLiteral("probe_volume"));
   panel->addWidget(probe_volume_);
   save_probes_ = new QPushButton(tr("Save probes…"), probe_panel_);
   save_probes_->setToolTip(tr("Write these probes as a .lgprobes bake, for lumagraph-inspect --bake"));
