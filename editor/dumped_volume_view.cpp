@@ -145,6 +145,23 @@ struct DumpedVolumeView::Pipeline {
     image->GetPointData()->SetActiveScalars("shown");
   }
 
+  // The middle of the texels with alpha above 0 (all of them when none has): an LPV grid over a
+  // flat box fills only the lower rows of its cube, whose middle row would show nothing.
+  std::array<int, 3> centre_of_content() const {
+    auto* rgba = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("rgba"));
+    std::array<int, 3> lo = dims, hi{-1, -1, -1};
+    for (int k = 0; k < dims[2]; ++k)
+      for (int j = 0; j < dims[1]; ++j)
+        for (int i = 0; i < dims[0]; ++i) {
+          int ijk[3] = {i, j, k};
+          if (!(rgba->GetPointer(4 * image->ComputePointId(ijk))[3] > 0.0f)) continue;
+          for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], ijk[a]), hi[a] = std::max(hi[a], ijk[a]);
+        }
+    std::array<int, 3> centre{};
+    for (int a = 0; a < 3; ++a) centre[a] = hi[a] < 0 ? dims[a] / 2 : (lo[a] + hi[a] + 1) / 2;
+    return centre;
+  }
+
   double low_shown() const { return channel_is_log(channel) ? std::log10(value_range[0]) : value_range[0]; }
   double high_shown() const { return channel_is_log(channel) ? std::log10(value_range[1]) : value_range[1]; }
 
@@ -203,8 +220,9 @@ DumpedVolumeView::DumpedVolumeView(vtkRenderer* renderer, const DumpedVolume& vo
   p.channel = channel;
   p.make_arrays();
   p.lut = visibility_colours({p.low_shown(), p.high_shown()});
+  const std::array<int, 3> start = p.centre_of_content();
   for (int axis = 0; axis < 3; ++axis) {
-    p.slice[axis] = p.dims[axis] / 2;
+    p.slice[axis] = start[axis];
     p.slices[axis]->SetInputData(p.image);
     p.place(axis);
     vtkNew<vtkDataSetMapper> mapper;

@@ -36,7 +36,7 @@ bool channel_is_log(VolumeChannel channel);
 // What the view shows, for the widget's caption and for tests.
 struct DumpedVolumeState {
   std::array<int, 3> dims{0, 0, 0};
-  std::array<int, 3> slice{0, 0, 0};         // the point index of each axis's slice
+  std::array<int, 3> slice{0, 0, 0};  // each axis's slice, first through the middle of alpha > 0
   VolumeChannel channel = VolumeChannel::luminance;
   std::array<double, 2> value_range{0, 0};   // the colour map's ends, in the channel's units
   long long slice_points = 0, masked_points = 0;  // over the three slices; masked: alpha 0, grey

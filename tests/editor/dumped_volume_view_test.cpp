@@ -60,12 +60,12 @@ TEST(DumpedVolumeView, ShowsSlicesOnALogScaleWithAlphaZeroMasked) {
   std::optional<DumpedVolumeState> s = inspector.dumped_volume_state();
   ASSERT_TRUE(s);
   EXPECT_EQ(s->dims, (std::array<int, 3>{6, 4, 4}));
-  EXPECT_EQ(s->slice, (std::array<int, 3>{3, 2, 2}));
+  EXPECT_EQ(s->slice, (std::array<int, 3>{3, 2, 1}));  // the middle of the texels with alpha 1 (k 0 to 2)
   // Luminance of grey v is v (the weights sum to 1, within float rounding).
   EXPECT_NEAR(s->value_range[1], 1.0, 1e-6);
   EXPECT_NEAR(s->value_range[0], 1e-4, 1e-10);
   EXPECT_EQ(s->lit_points, 6 * 4 * 3);  // alpha 1 and above 0
-  // Slices x = 3 (4 x 4), y = 2 (6 x 4), z = 2 (6 x 4); alpha 0 in the row k = 3 of the first two.
+  // Slices x = 3 (4 x 4), y = 2 (6 x 4), z = 1 (6 x 4); alpha 0 in the row k = 3 of the first two.
   EXPECT_EQ(s->slice_points, 16 + 24 + 24);
   EXPECT_EQ(s->masked_points, 4 + 6);
   EXPECT_TRUE(inspector.summary().contains("gi.volume.vti")) << inspector.summary().toStdString();
