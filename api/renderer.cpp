@@ -57,6 +57,7 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
   options.roots = options_.asset_roots;
   options.alias = device_alias_options(*context_);
   options.alias.enabled = options_.alias;
+  options.keep_optional_outputs = options_.keep_optional_outputs;
   CompileResult result = compile(*graph_, builtin_registry(), options, diagnostics);
   if (!result.plan) {
     diagnostics.sort_by_position();

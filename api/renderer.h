@@ -51,6 +51,7 @@ struct RendererOptions {
   const HostDevice* host = nullptr;  // or the host engine's device, which it keeps owning
   AssetRoots asset_roots{};          // where file paths in graphs may point
   bool alias = true;                 // false: every transient resource keeps its own memory
+  bool keep_optional_outputs = false;  // write optional outputs nothing links (a dump: gi.lpv's volume)
   // The driver's pipeline cache kept on disk between runs (runtime/gpu/pipeline_cache_store.h),
   // in `pipeline_cache_folder` or, when that is empty, $XDG_CACHE_HOME/lumagraph (~/.cache/...).
   // LUMAGRAPH_PIPELINE_CACHE=off in the environment turns it off too.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "graph/json_writer.h"
+#include "nodes/raytrace/vti_file.h"
 #include "runtime/exec/executor.h"
 #include "runtime/image/image_file.h"
 
@@ -20,10 +21,33 @@ bool is_port(const std::string& name) {
   return name.find('/') == std::string::npos && name.find('@') == std::string::npos;
 }
 
+// A 3D texture as VTK image data, one file a mip (NAME.vti, NAME.mip1.vti, ...) that
+// vtkXMLImageDataReader and ParaView open: texel (i, j, k) at point (i, j, k) of level 0's
+// texels, a coarser mip's points at the centres of the level-0 blocks they cover, so that every
+// mip lies over the others.
+void dump_volume(Executor& executor, const PlanResource& r, const fs::path& dir) {
+  const LoweredResource& d = r.desc;
+  for (uint32_t mip = 0; mip < d.mips; ++mip) {
+    const std::vector<float> rgba = executor.read_image(d.name, {mip, 0});
+    VtiImage image;
+    image.comment = "dumped by lumagraph render: " + d.name + " (" + std::string(d.format) + "), mip " +
+                    std::to_string(mip) + " of " + std::to_string(d.mips) + "; rgba as the node's port doc says";
+    image.dims = {std::max(d.width >> mip, 1u), std::max(d.height >> mip, 1u), std::max(d.layers >> mip, 1u)};
+    const double block = double(1u << mip);
+    image.spacing = glm::dvec3(block);
+    image.origin = glm::dvec3((block - 1.0) / 2.0);
+    image.arrays.push_back({"rgba", 4, rgba});
+    image.scalars = "rgba";
+    const std::string name = d.name + (mip > 0 ? ".mip" + std::to_string(mip) : "") + ".vti";
+    std::string error;
+    if (!write_file_atomically((dir / name).string(), encode_vti(image), &error)) throw std::runtime_error(error);
+  }
+}
+
 void dump_image(Executor& executor, const PlanResource& r, const fs::path& dir) {
   static const char* faces[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   const LoweredResource& d = r.desc;
-  const uint32_t layers = d.kind == ResourceKind::texture2d || d.kind == ResourceKind::cube ? d.layers : 1;
+  const uint32_t layers = d.layers;  // 2D textures and cube maps (3D ones: dump_volume)
   for (uint32_t mip = 0; mip < d.mips; ++mip)
     for (uint32_t layer = 0; layer < layers; ++layer) {
       std::string name = d.name;
@@ -34,8 +58,7 @@ void dump_image(Executor& executor, const PlanResource& r, const fs::path& dir) 
       if (mip > 0) name += ".mip" + std::to_string(mip);
       std::vector<float> rgba = executor.read_image(d.name, {mip, layer});
       const uint32_t w = std::max(d.width >> mip, 1u), h = std::max(d.height >> mip, 1u);
-      const uint32_t depth = d.kind == ResourceKind::texture3d ? std::max(d.layers >> mip, 1u) : 1;
-      save_image((dir / (name + ".exr")).string(), w, h * depth, rgba);  // 3D: slices stacked
+      save_image((dir / (name + ".exr")).string(), w, h, rgba);
     }
 }
 
@@ -75,6 +98,8 @@ void dump_outputs(Executor& executor, const std::string& dir) {
     if (!is_port(r.desc.name) || r.placement.block < 0) continue;
     if (r.desc.kind == ResourceKind::buffer)
       dump_buffer(executor, r, dir);
+    else if (r.desc.kind == ResourceKind::texture3d)
+      dump_volume(executor, r, dir);
     else
       dump_image(executor, r, dir);
     ++files;

@@ -35,7 +35,9 @@ options:
                       post.exposure adapts from one frame to the next
   --out FILE          image to write: .png (default out.png), .exr or .hdr
   --dump DIR          write every node output port of the last frame: textures as EXR,
-                      SH and scalars as JSON (turns memory aliasing off so all survive)
+                      3D textures as VTK image data (.vti, one a mip), SH and scalars
+                      as JSON (turns memory aliasing off so all survive; optional
+                      outputs, as gi.lpv's and gi.voxel's volumes, are written too)
   --stats FILE        write the last frame's per-pass GPU times and memory as JSON
   --device NAME       the GPU whose name contains NAME (default: the first suitable)
   --validate          run with the Vulkan validation layer; any message fails the run
@@ -105,6 +107,7 @@ int render_command(const std::vector<std::string>& argv) {
   options.device.device_name = args->value("--device").value_or("");
   options.asset_roots.roots = args->values("--asset-root");
   options.alias = !args->has("--no-alias") && !args->value("--dump");
+  options.keep_optional_outputs = args->value("--dump").has_value();
   options.pipeline_cache_on_disk = !args->has("--no-pipeline-cache");
   if (auto env = args->value("--env")) use_environment(*graph, *env, options.asset_roots);
 

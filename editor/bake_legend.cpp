@@ -1,6 +1,7 @@
 #include "editor/bake_legend.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkColorTransferFunction.h>
@@ -16,6 +17,8 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkImageData.h>
 
 #include <algorithm>
 #include <cmath>
@@ -164,6 +167,44 @@ void add_visibility_bar(vtkRenderer* renderer, vtkLookupTable* lut, const char* 
   }
   bar->GetTitleTextProperty()->SetFontSize(18);
   renderer->AddActor2D(bar);
+}
+
+namespace {
+
+// The last non-empty line of a VTK message, without the "vtkClass (0x...): " that starts it.
+std::string last_line(std::string message) {
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  message = message.substr(message.find_last_of('\n') + 1);
+  const size_t object = message.find("): ");
+  return object == std::string::npos ? message : message.substr(object + 3);
+}
+
+}  // namespace
+
+// VTK's XML reader reports a damaged file through error events, not exceptions: the observer
+// keeps the first message for ours.
+vtkSmartPointer<vtkImageData> read_vti_file(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
+  std::string vtk_error;
+  vtkNew<vtkCallbackCommand> on_error;
+  on_error->SetClientData(&vtk_error);
+  on_error->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+    auto* message = static_cast<std::string*>(client);
+    if (message->empty() && call) *message = static_cast<const char*>(call);
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, on_error);
+  reader->AddObserver(vtkCommand::WarningEvent, on_error);
+  if (!reader->CanReadFile(path.c_str())) throw BakeFileError(path + ": not a VTK XML image data file (.vti)");
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  if (!vtk_error.empty() || !image || image->GetNumberOfPoints() == 0) {
+    throw BakeFileError(path + ": damaged VTK image data" +
+                        (vtk_error.empty() ? std::string(" (no points)") : ": " + last_line(vtk_error)));
+  }
+  auto copy = vtkSmartPointer<vtkImageData>::New();
+  copy->DeepCopy(image);
+  return copy;
 }
 
 void add_title(vtkRenderer* renderer, const std::string& text) {

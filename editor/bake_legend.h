@@ -1,6 +1,6 @@
 // What the inspector's views share: light shown as display bytes; reading a whole bake of one mode, the world mesh a
 // per-vertex bake was made from, arrays as VTK arrays, visibility with the invalid points masked (NaN, drawn grey), the
-// colour map and its bar, the title in the view's top-left corner, and the camera's framing.
+// colour map and its bar, .vti files, the title in the view's top-left corner, and the camera's framing.
 #pragma once
 
 #include <vtkSmartPointer.h>
@@ -12,6 +12,7 @@
 
 class vtkDataArray;
 class vtkFloatArray;
+class vtkImageData;
 class vtkLookupTable;
 class vtkActor;
 class vtkColorTransferFunction;
@@ -39,6 +40,10 @@ void require_whole(const std::string& path, uint32_t chunk_index, uint32_t chunk
 // unreadable, or not that geometry (another vertex count or hash).
 WorldMesh load_baked_mesh(const std::string& mesh_path, const std::string& bake_path, uint64_t input_hash,
                           uint64_t vertices);
+// The VTK XML image data (.vti) at `path`, read by VTK's reader; throws BakeFileError naming it
+// when it is not such a file or is damaged.
+vtkSmartPointer<vtkImageData> read_vti_file(const std::string& path);
+
 // The mesh's triangles as VTK polygons, points in world space.
 vtkSmartPointer<vtkPolyData> vtk_mesh(const WorldMesh& mesh);
 

@@ -2,7 +2,6 @@
 
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
-#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCubeAxesActor.h>
 #include <vtkDataSetMapper.h>
@@ -20,7 +19,6 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkTextProperty.h>
-#include <vtkXMLImageDataReader.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,40 +38,6 @@ vtkFloatArray* float_array(vtkImageData* image, const char* name, int components
       array->GetNumberOfTuples() != image->GetNumberOfPoints())
     return nullptr;
   return array;
-}
-
-// The last non-empty line of a VTK message, without the "vtkClass (0x...): " that starts it.
-std::string last_line(std::string message) {
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
-  message = message.substr(message.find_last_of('\n') + 1);
-  const size_t object = message.find("): ");
-  return object == std::string::npos ? message : message.substr(object + 3);
-}
-
-// VTK's XML reader reports a damaged file through error events, not exceptions: the observer
-// keeps the first message for ours.
-vtkSmartPointer<vtkImageData> read_vti(const std::string& path) {
-  auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
-  std::string vtk_error;
-  vtkNew<vtkCallbackCommand> on_error;
-  on_error->SetClientData(&vtk_error);
-  on_error->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-    auto* message = static_cast<std::string*>(client);
-    if (message->empty() && call) *message = static_cast<const char*>(call);
-  });
-  reader->AddObserver(vtkCommand::ErrorEvent, on_error);
-  reader->AddObserver(vtkCommand::WarningEvent, on_error);
-  if (!reader->CanReadFile(path.c_str())) throw BakeFileError(path + ": not a VTK XML image data file (.vti)");
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  if (!vtk_error.empty() || !image || image->GetNumberOfPoints() == 0) {
-    throw BakeFileError(path + ": damaged VTK image data" +
-                        (vtk_error.empty() ? std::string(" (no points)") : ": " + last_line(vtk_error)));
-  }
-  auto copy = vtkSmartPointer<vtkImageData>::New();
-  copy->DeepCopy(image);
-  return copy;
 }
 
 vtkSmartPointer<vtkImageData> image_of_bake(const std::string& path) {
@@ -97,7 +61,7 @@ BakeVolume load_bake_volume(const std::string& path) {
   BakeVolume volume;
   volume.path = path;
   if (extension == ".vti")
-    volume.image = read_vti(path);
+    volume.image = read_vti_file(path);
   else if (extension == ".lgbake")
     volume.image = image_of_bake(path);
   else

@@ -8,6 +8,9 @@
 // probes of volume N (from 1) of a probe bake (`lumagraph bake --mode probes`), probe I selected.
 // lumagraph-inspect --bake NAME.lgprt --mesh MESH [--vertex I] [--screenshot PNG]: shows a PRT bake
 // (`lumagraph bake --mode prt`) on its mesh, and vertex I's transfer function on a sphere.
+// lumagraph-inspect --dumped NAME.vti [--channel C] [--screenshot PNG]: shows a 3D texture that
+// `lumagraph render --dump` wrote (gi.lpv's or gi.voxel's volume; NAME.mipK.vti for mip K) as
+// three slices and a volume rendering of channel C (luminance, red, green, blue: log scale; alpha).
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <QApplication>
@@ -16,6 +19,7 @@
 #include <iostream>
 #include <optional>
 
+#include "editor/dumped_volume_view.h"
 #include "editor/headless_help.h"
 #include "editor/inspector_widget.h"
 #include "editor/probe_view.h"
@@ -51,24 +55,47 @@ int main(int argc, char** argv) {
   const QCommandLineOption vertex(QStringLiteral("vertex"),
                                  QStringLiteral("The PRT bake's vertex whose transfer to show (from 0)."),
                                  QStringLiteral("I"));
+  const QCommandLineOption dumped(
+      QStringLiteral("dumped"),
+      QStringLiteral("A 3D texture `lumagraph render --dump` wrote (NAME.vti, NAME.mipK.vti) to show instead."),
+      QStringLiteral("VTI"));
+  const QCommandLineOption channel(QStringLiteral("channel"),
+                                   QStringLiteral("The dumped volume's channel: luminance, red, green, blue (log "
+                                                  "scale) or alpha."),
+                                   QStringLiteral("C"), QStringLiteral("luminance"));
   args.addOption(bake);
+  args.addOption(dumped);
+  args.addOption(channel);
   args.addOption(mesh);
   args.addOption(volume);
   args.addOption(probe);
   args.addOption(vertex);
   args.addOption(screenshot);
   args.process(app);
-  if (args.positionalArguments().size() != (args.isSet(bake) ? 0 : 1)) args.showHelp(1);
-  const QString file = args.isSet(bake) ? args.value(bake) : args.positionalArguments().front();
+  const bool other = args.isSet(bake) || args.isSet(dumped);
+  if (args.positionalArguments().size() != (other ? 0 : 1) || (args.isSet(bake) && args.isSet(dumped)))
+    args.showHelp(1);
+  const QString file = args.isSet(bake)     ? args.value(bake)
+                       : args.isSet(dumped) ? args.value(dumped)
+                                            : args.positionalArguments().front();
 
   lg::InspectorWidget inspector;
   inspector.setWindowTitle(QStringLiteral("Lumagraph Inspector — %1").arg(file));
-  inspector.resize(args.isSet(bake) ? 1100 : 1400, args.isSet(bake) ? 820 : 620);
+  inspector.resize(args.isSet(dumped) ? 1400 : args.isSet(bake) ? 1100 : 1400, other ? 820 : 620);
   inspector.show();
   const bool probes = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprobes"));
   const bool prt = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprt"));
   bool opened = false;
-  if (prt && !args.isSet(mesh))
+  std::optional<lg::VolumeChannel> shown_channel;
+  for (lg::VolumeChannel c : {lg::VolumeChannel::luminance, lg::VolumeChannel::red, lg::VolumeChannel::green,
+                              lg::VolumeChannel::blue, lg::VolumeChannel::alpha})
+    if (args.value(channel).toStdString() == lg::channel_name(c)) shown_channel = c;
+  if (args.isSet(dumped) && !shown_channel)
+    inspector.show_error(QStringLiteral("--channel %1: expected luminance, red, green, blue or alpha")
+                             .arg(args.value(channel)));
+  else if (args.isSet(dumped))
+    opened = inspector.open_dumped_volume(file, *shown_channel);
+  else if (prt && !args.isSet(mesh))
     inspector.show_error(
         QStringLiteral("%1: a PRT bake opens on the mesh or scene it was baked from: add --mesh MESH").arg(file));
   else if (prt)

@@ -35,6 +35,7 @@
 
 #include "editor/bake_legend.h"
 #include "editor/bake_view.h"
+#include "editor/dumped_volume_view.h"
 #include "editor/env_probe.h"
 #include "editor/probe_view.h"
 #include "editor/prt_view.h"
@@ -150,6 +151,19 @@ InspectorWidget::InspectorWidget(QWidget* parent)
   // One slider per axis moves that axis's slice of a volume (hidden until one is shown).
   auto* sliders = new QHBoxLayout(slice_bar_);
   sliders->setContentsMargins(6, 2, 6, 0);
+  // A dumped volume's channel and mip, before the sliders.
+  dumped_channel_ = new QComboBox(slice_bar_);
+  for (VolumeChannel c : {VolumeChannel::luminance, VolumeChannel::red, VolumeChannel::green, VolumeChannel::blue,
+                          VolumeChannel::alpha})
+    dumped_channel_->addItem(QString::fromStdString(channel_name(c) + (channel_is_log(c) ? " (log)" : "")));
+  dumped_mip_ = new QComboBox(slice_bar_);
+  dumped_channel_->setObjectName(QStringLiteral("dumped_channel"));
+  dumped_mip_->setObjectName(QStringLiteral("dumped_mip"));
+  sliders->addWidget(dumped_channel_);
+  sliders->addWidget(dumped_mip_);
+  connect(dumped_channel_, QOverload<int>::of(&QComboBox::activated), this,
+          [this](int channel) { set_dumped_volume_channel(VolumeChannel(channel)); });
+  connect(dumped_mip_, QOverload<int>::of(&QComboBox::activated), this, [this](int mip) { set_dumped_volume_mip(mip); });
   for (int axis = 0; axis < 3; ++axis) {
     sliders->addWidget(new QLabel(tr("%1 slice").arg(QChar("xyz"[axis])), slice_bar_));
     slice_sliders_[axis] = new QSlider(Qt::Horizontal, slice_bar_);
@@ -196,6 +210,10 @@ void InspectorWidget::clear_view() {
   vtk_->renderer->RemoveAllViewProps();
   vtk_->spheres.clear();
   volume_.reset();
+  dumped_view_.reset();
+  dumped_.reset();
+  dumped_channel_->hide();
+  dumped_mip_->hide();
   probes_.reset();
   probe_bake_.reset();
   prt_.reset();
@@ -341,15 +359,90 @@ std::optional<VolumeSliceState> InspectorWidget::volume_state() const {
 }
 
 void InspectorWidget::set_volume_slice(int axis, int index) {
-  if (!volume_) return;
-  volume_->set_slice(axis, index);
-  {
+  if (dumped_view_) {
+    dumped_view_->set_slice(axis, index);
+    const QSignalBlocker quiet(slice_sliders_[axis]);
+    slice_sliders_[axis]->setValue(dumped_view_->state().slice[axis]);
+    slice_caption_->setText(QString::fromStdString(dumped_view_->caption()));
+  } else if (volume_) {
+    volume_->set_slice(axis, index);
     const QSignalBlocker quiet(slice_sliders_[axis]);
     slice_sliders_[axis]->setValue(volume_->state().slice[axis]);
+    slice_caption_->setText(QString::fromStdString(volume_->slice_caption()));
+  } else {
+    return;
   }
-  slice_caption_->setText(QString::fromStdString(volume_->slice_caption()));
   vtk_->window->Render();
   vtk_->widget->update();
+}
+
+bool InspectorWidget::open_dumped_volume(const QString& path, VolumeChannel channel) {
+  std::unique_ptr<DumpedVolume> volume;
+  try {
+    volume = std::make_unique<DumpedVolume>(load_dumped_volume(path.toStdString()));
+  } catch (const std::runtime_error& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  clear_view();
+  dumped_ = std::move(volume);
+  dumped_view_ = std::make_unique<DumpedVolumeView>(vtk_->renderer, *dumped_, channel);
+  const DumpedVolumeState state = dumped_view_->state();
+  for (int axis = 0; axis < 3; ++axis) {
+    const QSignalBlocker quiet(slice_sliders_[axis]);
+    slice_sliders_[axis]->setRange(0, state.dims[axis] - 1);
+    slice_sliders_[axis]->setValue(state.slice[axis]);
+  }
+  {
+    const QSignalBlocker quiet_channel(dumped_channel_), quiet_mip(dumped_mip_);
+    dumped_channel_->setCurrentIndex(int(channel));
+    dumped_mip_->clear();
+    for (size_t mip = 0; mip < dumped_->mips.size(); ++mip) dumped_mip_->addItem(tr("mip %1").arg(mip));
+    dumped_mip_->setCurrentIndex(dumped_->mip);
+  }
+  dumped_channel_->show();
+  dumped_mip_->show();
+  slice_bar_->show();
+  slice_caption_->setText(QString::fromStdString(dumped_view_->caption()));
+  slice_caption_->show();
+  summary_->setText(tr("%1 — dumped 3D texture, %2 x %3 x %4 texels, mip %5 of %6 · %7 from %8 to %9 · %10 texels lit, "
+                       "%11 with alpha 0 on the slices (grey)")
+                        .arg(path)
+                        .arg(state.dims[0])
+                        .arg(state.dims[1])
+                        .arg(state.dims[2])
+                        .arg(dumped_->mip)
+                        .arg(dumped_->mips.size())
+                        .arg(QString::fromStdString(channel_name(channel)))
+                        .arg(state.value_range[0], 0, 'g', 4)
+                        .arg(state.value_range[1], 0, 'g', 4)
+                        .arg(state.lit_points)
+                        .arg(state.masked_points));
+  vtk_->window->Render();
+  vtk_->widget->update();
+  return true;
+}
+
+std::optional<DumpedVolumeState> InspectorWidget::dumped_volume_state() const {
+  if (!dumped_view_) return std::nullopt;
+  return dumped_view_->state();
+}
+
+void InspectorWidget::set_dumped_volume_channel(VolumeChannel channel) {
+  if (!dumped_) return;
+  const std::array<int, 3> slice = dumped_view_->state().slice;
+  if (!open_dumped_volume(QString::fromStdString(dumped_->path), channel)) return;
+  for (int axis = 0; axis < 3; ++axis) set_volume_slice(axis, slice[axis]);
+}
+
+void InspectorWidget::set_dumped_volume_mip(int mip) {
+  if (!dumped_ || mip < 0 || size_t(mip) >= dumped_->mips.size()) return;
+  const DumpedVolumeState before = dumped_view_->state();
+  if (!open_dumped_volume(QString::fromStdString(dumped_->mips[size_t(mip)]), before.channel)) return;
+  // The same place in the coarser or finer grid.
+  const DumpedVolumeState now = dumped_view_->state();
+  for (int axis = 0; axis < 3; ++axis)
+    set_volume_slice(axis, int(std::lround(double(before.slice[axis]) * now.dims[axis] / before.dims[axis])));
 }
 
 bool InspectorWidget::open_vertex_bake(const QString& path, const QString& mesh_path) {
@@ -437,6 +530,7 @@ void InspectorWidget::build_probe_panel(QVBoxLayout* panel) {
   panel->setContentsMargins(8, 8, 8, 8);
   // The bake's volumes, when it has more than one; a live one can be saved as a bake file.
   probe_volume_ = new QComboBox(probe_panel_);
+  probe_volume_->setObjectName(QStringLiteral("probe_volume"));
   panel->addWidget(probe_volume_);
   save_probes_ = new QPushButton(tr("Save probes…"), probe_panel_);
   save_probes_->setToolTip(tr("Write these probes as a .lgprobes bake, for lumagraph-inspect --bake"));

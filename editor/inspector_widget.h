@@ -2,8 +2,10 @@
 // the error between them, with the numbers; a baked occlusion volume as three slices with
 // sliders that move them; or a probe bake's volume (probe_view.h), read from a file or live from
 // the editor's preview, with a chooser of the bake's volumes, a slider for its slice and, beside
-// the view, the octahedral maps of the probe last clicked; or a PRT bake on its mesh (prt_view.h). VTK stays behind this header, out of
-// the editor's files.
+// the view, the octahedral maps of the probe last clicked; or a PRT bake on its mesh (prt_view.h);
+// or a node's dumped 3D texture (dumped_volume_view.h: gi.lpv's grid, gi.voxel's voxels) as
+// slices and a volume rendering, with choosers of its channel and mip. VTK stays behind this
+// header, out of the editor's files.
 #pragma once
 
 #include <QString>
@@ -29,6 +31,10 @@ struct ProbeViewState;
 struct PrtBake;
 struct PrtViewState;
 class VolumeSlices;
+class DumpedVolumeView;
+struct DumpedVolume;
+struct DumpedVolumeState;
+enum class VolumeChannel;
 class ProbeView;
 class PrtView;
 
@@ -55,6 +61,15 @@ class InspectorWidget : public QWidget {
   // The shown volume's slices; nullopt when no volume is shown.
   std::optional<VolumeSliceState> volume_state() const;
   void set_volume_slice(int axis, int index);
+
+  // A 3D texture of `lumagraph render --dump` (NAME.vti or NAME.mipK.vti), showing `channel`; on
+  // failure the view says why and returns false.
+  bool open_dumped_volume(const QString& path, VolumeChannel channel);
+  std::optional<DumpedVolumeState> dumped_volume_state() const;
+  // Shows another channel or mip of the shown dumped volume (the choosers do it); the slices
+  // stay where they are (clamped to a coarser mip's grid).
+  void set_dumped_volume_channel(VolumeChannel channel);
+  void set_dumped_volume_mip(int mip);
 
   void show_vertex_bake(const VertexBake& bake);
   // A vertex bake (NAME.lgbake) on the mesh or scene it was baked from.
@@ -115,6 +130,8 @@ class InspectorWidget : public QWidget {
   void build_probe_panel(QVBoxLayout* panel);
 
   std::unique_ptr<VolumeSlices> volume_;
+  std::unique_ptr<DumpedVolume> dumped_;
+  std::unique_ptr<DumpedVolumeView> dumped_view_;
   std::unique_ptr<ProbeBake> probe_bake_;
   std::unique_ptr<ProbeView> probes_;
   std::unique_ptr<PrtBake> prt_bake_;
@@ -123,6 +140,7 @@ class InspectorWidget : public QWidget {
   std::optional<std::array<double, 2>> vertex_bake_range_;
   QWidget* slice_bar_;
   std::array<QSlider*, 3> slice_sliders_{};
+  QComboBox *dumped_channel_, *dumped_mip_;  // in the slice bar, for a dumped volume only
   QLabel* slice_caption_;
   QWidget* probe_panel_;
   QComboBox* probe_volume_;

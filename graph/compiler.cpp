@@ -58,7 +58,8 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
   if (diagnostics.has_errors()) return result;
 
   auto lowered = timer.run(
-      "lower", [&] { return lower(resolved, *order_nodes, states, options.frame, options.roots, diagnostics); });
+      "lower", [&] { return lower(resolved, *order_nodes, states, options.frame, options.roots, diagnostics,
+                                options.keep_optional_outputs); });
   if (!lowered) return result;
   dump("lower", [&] { return dump_lowered(*lowered); });
   auto order = timer.run("schedule", [&] { return schedule(*lowered); });

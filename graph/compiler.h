@@ -24,6 +24,8 @@ struct CompileOptions {
   AssetRoots roots;
   AliasOptions alias;
   bool keep_dumps = false;  // fill CompileResult::dumps with every phase's IR
+  // Write every optional output (gi.lpv's volume), linked or not: `render --dump` keeps them.
+  bool keep_optional_outputs = false;
 };
 
 struct PhaseTiming {

@@ -26,7 +26,9 @@ const std::map<std::string, KindInfo, std::less<>>& kinds() {
          {"lut", {{"", "rg16f", 4}}}}}},
       {"cube", {ResourceKind::cube, "a cube map", {{"hdr", {{"", "rgba16f", 8}}}}}},
       {"texture3d",
-       {ResourceKind::texture3d, "a 3D texture", {{"sh", {{"", "rgba16f", 8}}}, {"mask", {{"", "r8", 1}}}}}},
+       {ResourceKind::texture3d,
+        "a 3D texture",
+        {{"hdr", {{"", "rgba16f", 8}}}, {"sh", {{"", "rgba16f", 8}}}, {"mask", {{"", "r8", 1}}}}}},
       {"sh", {ResourceKind::buffer, "a spherical-harmonics buffer", {{"", {{"", "buffer", 16}}}}}},
       {"scalar", {ResourceKind::buffer, "a scalar", {{"", {{"", "buffer", 4}}}}}},
       // gi.irradiance_volume's probe volumes: the block of 64 volumes of 160 bytes its lookup

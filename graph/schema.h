@@ -32,7 +32,8 @@ struct ParamSpec {
 };
 
 // How big a resource is. Extents come from the frame, an input, a parameter or a constant,
-// then scale; cube maps use the width as the face size.
+// then scale; cube maps use the width as the face size; a 3D texture's depth from a parameter or
+// a constant ("depth"), not scaled.
 struct SizeRule {
   enum class From : uint8_t { frame, input, param, fixed } from = From::frame;
   int ref = -1;  // input or param index
@@ -44,13 +45,17 @@ struct SizeRule {
   int mips_param = -1;
   uint32_t mips_fixed = 1;
   int sh_order_param = -1;  // "sh" buffers: (order + 1)^2 coefficients
+  int depth_param = -1;     // texture3d: the depth in a number param, or
+  uint32_t depth_fixed = 1;  // a constant
 };
 
 struct PortSpec {
   std::string name;
   PortType type;
   std::string doc;
-  bool optional = false;  // inputs: may stay unlinked
+  // inputs: may stay unlinked; outputs: written only while linked or kept (a debug view, such as
+  // gi.lpv's volume: unlinked, the plan drops its accesses, so the kernel skips it)
+  bool optional = false;
   bool history = false;   // inputs: reads the previous frame; the only legal back edge
   SizeRule size;          // outputs and internal resources
 };

@@ -207,7 +207,7 @@ class SchemaReader {
   PortSpec port(const JsonValue& v, const std::string& p, Role role) {
     const bool is_input = role == Role::input;
     check_keys(v, p, {"name", "type", "doc", "optional", "history", "extent", "scale", "only_when_scaled", "mips",
-                       "sh_order"});
+                       "sh_order", "depth"});
     PortSpec spec;
     spec.name = string_at(v, p, "name", true);
     spec.doc = string_at(v, p, "doc", true);
@@ -218,6 +218,7 @@ class SchemaReader {
     spec.optional = bool_at(v, p, "optional");
     spec.history = bool_at(v, p, "history");
     if (!is_input) size_rule(v, p, spec.size);
+    if (!is_input && type) depth_rule(v, p, spec);
     // A placeholder is for what the node alone reads: an output would hand its consumers a 1x1 image.
     if (const JsonValue* placeholder = v.find("only_when_scaled"); placeholder && role != Role::resource)
       d_.error(placeholder->pos(), json_pointer_append(p, "only_when_scaled"),
@@ -294,6 +295,30 @@ class SchemaReader {
     if (const JsonValue* o = v.find("sh_order")) {
       if (is_ref(*o, "param:")) r.sh_order_param = param_ref(*o, json_pointer_append(p, "sh_order"));
       else d_.error(o->pos(), json_pointer_append(p, "sh_order"), "expected \"param:NAME\"");
+    }
+  }
+
+  // "depth": a count or "param:NAME" (a number param), which a 3D texture needs and only it has.
+  void depth_rule(const JsonValue& v, const std::string& p, PortSpec& spec) {
+    const JsonValue* d = v.find("depth");
+    const bool is_3d = spec.type.resource == ResourceKind::texture3d;
+    if (!d) {
+      if (is_3d) d_.error(v.pos(), p, "a 3D texture needs \"depth\": a count or \"param:NAME\"");
+      return;
+    }
+    const std::string dp = json_pointer_append(p, "depth");
+    if (!is_3d) {
+      d_.error(d->pos(), dp, "only a 3D texture (texture3d) has a depth, not " + spec.type.kind);
+    } else if (is_ref(*d, "param:")) {
+      spec.size.depth_param = param_ref(*d, dp);
+      if (spec.size.depth_param >= 0 && !numeric_scalar(s_.params[size_t(spec.size.depth_param)])) {
+        d_.error(d->pos(), dp, "'" + d->as_string().substr(6) + "' is not a number param");
+        spec.size.depth_param = -1;
+      }
+    } else if (d->is_integer() && d->as_number() >= 1 && d->as_number() <= 65536) {
+      spec.size.depth_fixed = static_cast<uint32_t>(d->as_number());
+    } else {
+      d_.error(d->pos(), dp, "expected a count from 1 to 65536 or \"param:NAME\"");
     }
   }
 

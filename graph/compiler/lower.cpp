@@ -47,8 +47,9 @@ struct Span {
 
 class Lowerer {
  public:
-  Lowerer(const ResolvedGraph& r, const NodeStates& s, FrameSize f, const AssetRoots& roots, Diagnostics& d)
-      : r_(r), s_(s), frame_(f), roots_(roots), d_(d) {}
+  Lowerer(const ResolvedGraph& r, const NodeStates& s, FrameSize f, const AssetRoots& roots, bool keep_optional,
+          Diagnostics& d)
+      : r_(r), s_(s), frame_(f), roots_(roots), keep_optional_(keep_optional), d_(d) {}
 
   LoweredGraph run(const CachedVector<int>& order) {
     const size_t count = r_.nodes.size();
@@ -58,6 +59,7 @@ class Lowerer {
       port_base_[n + 1] = port_base_[n] + static_cast<int>(r_.nodes[n].schema->outputs.size());
     ports_.resize(port_base_[count]);
     previous_.resize(port_base_[count]);
+    mark_wanted_outputs();
     // Read once in file order: the loops below visit nodes in topological order, which large
     // graphs scatter, and need only this byte of each node's state.
     kinds_.resize(count);
@@ -107,8 +109,10 @@ class Lowerer {
   const NodeStates& s_;
   FrameSize frame_;
   const AssetRoots& roots_;
+  const bool keep_optional_;  // every optional output written, linked or not (a dump)
   Diagnostics& d_;
   LoweredGraph out_;
+  CachedVector<char> wanted_;            // per output port: linked or listed in the file's outputs
   CachedVector<int> port_base_;          // node -> index of its first output in ports_
   CachedVector<Span> ports_;             // per output port: its resources (a bypassed node's are its input's)
   CachedVector<Span> previous_;          // per output port: previous-frame copies, made on demand
@@ -145,6 +149,15 @@ class Lowerer {
       count += use.component >= 0 ? 1 : port.type.components().size();
     }
     return count;
+  }
+
+  // An optional output (a debug view) is written only while something reads it: a link, the
+  // file's outputs, or a dump (keep_optional_).
+  void mark_wanted_outputs() {
+    wanted_.assign(ports_.size(), keep_optional_ ? 1 : 0);
+    for (const ResolvedLink& l : r_.links)
+      if (l.from_node >= 0 && l.from_port >= 0) wanted_[port_base_[l.from_node] + l.from_port] = 1;
+    for (auto [node, output] : r_.outputs) wanted_[port_base_[node] + output] = 1;
   }
 
   std::string_view id(int n) const { return r_.id(n); }
@@ -211,7 +224,11 @@ class Lowerer {
     res.height = texels(h * scale);
     if (rule.only_when_scaled && scale >= 1) res.width = res.height = 1;
     res.layers = res.kind == ResourceKind::cube ? 6 : 1;
+    // A 3D texture's depth rides in layers (runtime/gpu/plan_resources.cpp), not scaled.
+    if (res.kind == ResourceKind::texture3d)
+      res.layers = rule.depth_param >= 0 ? texels(number_param(n, rule.depth_param).value_or(1)) : rule.depth_fixed;
     uint32_t full = full_mip_count(res.width, res.height);
+    if (res.kind == ResourceKind::texture3d) full = std::max(full, full_mip_count(res.layers, 1));
     switch (rule.mips) {
       case SizeRule::Mips::one:
         res.mips = 1;
@@ -234,7 +251,8 @@ class Lowerer {
       }
       res.width = elements, res.height = 1, res.mips = 1;
     }
-    if (res.width > limits::max_image_extent || res.height > limits::max_image_extent) [[unlikely]]
+    if (res.width > limits::max_image_extent || res.height > limits::max_image_extent ||
+        (res.kind == ResourceKind::texture3d && res.layers > limits::max_image_extent)) [[unlikely]]
       too_large(n, res);
   }
 
@@ -243,7 +261,7 @@ class Lowerer {
   [[gnu::noinline]] void too_large(int n, const LoweredResource& res) {
     d_.error(r_.graph->nodes[n].pos, json_pointer_append("/nodes", static_cast<size_t>(n)),
              "'" + res.name + "' would be " + std::to_string(res.width) + "x" + std::to_string(res.height) +
-                 ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
+                 (res.kind == ResourceKind::texture3d ? "x" + std::to_string(res.layers) : "") + ", beyond the limit of " + std::to_string(limits::max_image_extent) + " texels a side");
   }
 
   // Named "<node><separator><port>", and ".<component>" after that for a bundle's parts.
@@ -266,8 +284,11 @@ class Lowerer {
 
   static uint64_t resource_bytes_for(const LoweredResource& r, uint32_t bytes_per_texel) {
     uint64_t texels = 0;
-    for (uint32_t m = 0; m < r.mips; ++m) texels += uint64_t{std::max(1u, r.width >> m)} * std::max(1u, r.height >> m);
-    return texels * r.layers * bytes_per_texel;
+    const bool volume = r.kind == ResourceKind::texture3d;  // its depth halves with each mip
+    for (uint32_t m = 0; m < r.mips; ++m)
+      texels += uint64_t{std::max(1u, r.width >> m)} * std::max(1u, r.height >> m) *
+                (volume ? std::max(1u, r.layers >> m) : 1u);
+    return texels * (volume ? 1u : r.layers) * bytes_per_texel;
   }
 
   // A bypassed node that forwards an unlinked input leaves its consumers with nothing; one that
@@ -355,8 +376,10 @@ class Lowerer {
       pass.accesses.reserve(most_accesses(s, spec));
       for (const PassUse& use : spec.uses) {
         Span span;
-        if (use.target == PassUse::Target::output)
+        if (use.target == PassUse::Target::output) {
+          if (s.outputs[use.index].optional && !wanted_[port_base_[n] + use.index]) continue;
           span = port(n, use.index);
+        }
         else if (use.target == PassUse::Target::internal)
           span = internal_[use.index];
         else if (int li = rn.input_link[use.index]; li >= 0) {
@@ -443,9 +466,9 @@ std::string_view lifetime_name(ResourceLifetime l) {
 
 std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const CachedVector<int>& topo_order,
                                   const NodeStates& states, FrameSize frame, const AssetRoots& roots,
-                                  Diagnostics& diagnostics) {
+                                  Diagnostics& diagnostics, bool keep_optional_outputs) {
   size_t before = diagnostics.error_count();
-  LoweredGraph out = Lowerer(resolved, states, frame, roots, diagnostics).run(topo_order);
+  LoweredGraph out = Lowerer(resolved, states, frame, roots, keep_optional_outputs, diagnostics).run(topo_order);
   if (diagnostics.error_count() > before) return std::nullopt;
   return out;
 }

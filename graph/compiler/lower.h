@@ -1,6 +1,7 @@
 // Phase 6, lower: turns each live node into its schema's passes and each port into resources
 // sized for the frame. Bypassed nodes become aliases of their inputs; history links get a
-// previous-frame copy; static nodes whose inputs are static get a cache key.
+// previous-frame copy; static nodes whose inputs are static get a cache key. An optional output
+// nothing links nor lists is not written (its accesses dropped) unless keep_optional_outputs.
 #pragma once
 
 #include <optional>
@@ -21,7 +22,7 @@ struct FrameSize {
 
 std::optional<LoweredGraph> lower(const ResolvedGraph& resolved, const CachedVector<int>& topo_order,
                                   const NodeStates& states, FrameSize frame, const AssetRoots& roots,
-                                  Diagnostics& diagnostics);
+                                  Diagnostics& diagnostics, bool keep_optional_outputs = false);
 JsonValue dump_lowered(const LoweredGraph& lowered);
 
 // A node's params as the runtime gets them: every param, defaults filled, paths absolute.

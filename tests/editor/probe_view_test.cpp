@@ -156,7 +156,7 @@ TEST(ProbeView, ChoosesAVolumeAndARefreshKeepsTheView) {
   inspector.show();
   ASSERT_TRUE(inspector.show_probes(in_memory(), 0, {true, "dynamic"}));
   test::settle();
-  auto* chooser = inspector.findChild<QComboBox*>();
+  auto* chooser = inspector.findChild<QComboBox*>(QStringLiteral("probe_volume"));  // the slice bar has others
   ASSERT_TRUE(chooser);
   EXPECT_TRUE(chooser->isVisible());
   EXPECT_EQ(chooser->count(), 2);

@@ -313,6 +313,18 @@ class LpvKernel final : public NodeKernel {
     writes.push_back(storage_image(7, target.view()));
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)));
+    if (ctx.has("out.volume")) write_volume(ctx);
+  }
+
+  // The optional volume output (linked or dumped): the sum's L0 term as mean irradiance
+  // (lpv_volume.comp), after the store above (its barrier precedes the lookup, which also reads).
+  void write_volume(PassContext& ctx) {
+    Image& volume = ctx.image("out.volume");
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), general_sampled(ctx, 1, sum_images_[0]),
+                                      general_sampled(ctx, 2, sum_images_[1]), general_sampled(ctx, 3, sum_images_[2]),
+                                      storage_image(4, volume.view())};
+    const ImageDesc& d = volume.desc();
+    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_volume.comp", writes, d.width, d.height * d.depth);
   }
 
   // At resolution_scale below 1, the lookup's smaller image to full resolution, guided by depth

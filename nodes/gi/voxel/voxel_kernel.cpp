@@ -180,6 +180,27 @@ class VoxelKernel final : public NodeKernel {
       build_chain(ctx);
     }
     trace_cones(ctx);
+    if (ctx.has("out.volume")) write_volume(ctx);
+  }
+
+  // The optional volume output (linked or dumped), every mip from the chain's level of that
+  // index (voxel_volume.comp), after trace_cones' barrier: the chain is only read since.
+  void write_volume(PassContext& ctx) {
+    Image& volume = ctx.image("out.volume");
+    for (uint32_t level = 0; level < volume.desc().mips; ++level) {
+      const DescriptorWrite writes[] = {
+          uniform_buffer(0, constants_->handle()),
+          sampled_image(1, seen_[0].view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+          sampled_image(2, seen_[1].view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+          sampled_image(3, seen_[2].view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+          sampled_image(4, opacity_.view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+          storage_image(5, volume.view({.base_mip = level, .mip_count = 1}))};
+      const uint32_t w = std::max(volume.desc().width >> level, 1u), h = std::max(volume.desc().height >> level, 1u),
+                     d = std::max(volume.desc().depth >> level, 1u);
+      const int32_t push = int32_t(level);
+      dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_volume.comp", writes, w, h * d,
+                       std::as_bytes(std::span(&push, 1)));
+    }
   }
 
   void voxelize(PassContext& ctx) {
