@@ -44,6 +44,25 @@ struct Constants {  // shaders/voxel_common.glsl
   glm::ivec4 chain;
 };
 
+// The access of this node's pass `pass` to `slot`, or null (an optional input unlinked): the
+// kernel's first pass of a frame (the shadow's) decides for the volume pass.
+const PlanAccess* node_access(PassContext& ctx, std::string_view pass, std::string_view slot) {
+  const Plan& plan = ctx.plan();
+  for (const PlanPass& p : plan.passes) {
+    if (p.node != ctx.pass().node || p.pass != pass) continue;
+    for (const PlanAccess& a : plan.accesses_of(p))
+      if (plan.slot_of(a) == slot) return &a;
+  }
+  return nullptr;
+}
+
+// Whether `a`'s resource is a static result of the plan (made once, the same every frame): its
+// first pass, its producer, is static.
+bool static_resource(const Plan& plan, const PlanAccess& a) {
+  const int first = plan.resources[a.resource].first;
+  return first >= 0 && plan.passes[first].is_static;
+}
+
 class VoxelKernel final : public NodeKernel {
  public:
   explicit VoxelKernel(const PlanNode& node)
@@ -90,6 +109,8 @@ class VoxelKernel final : public NodeKernel {
       c.shadow_from_world = shadow_from_world(bounds, direction);
     }
     shadow_from_world_ = c.shadow_from_world;
+    const PlanAccess* sh = node_access(ctx, "volume", "in.sh");
+    sky_ = sh && scene.has_environment;
     const std::vector<DrawConstants> draws = draw_constants(scene);
     // The volume is rebuilt only when what it is made of changed: the grid, the light, the draws
     // (transforms, materials), which mesh each draws (not in DrawConstants: a draw may swap
@@ -102,15 +123,19 @@ class VoxelKernel final : public NodeKernel {
       key.insert(key.end(), first, first + bytes);
     };
     append(&c, sizeof(c));
+    append(&sky_, sizeof(sky_));
     append(&scene.version, sizeof(scene.version));
     append(draws.data(), draws.size() * sizeof(DrawConstants));
     for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
-    rebuild_ = images_new_ || key != built_from_;
+    // A sky whose SH is not a static result (an animated sky) may change in any frame.
+    rebuild_ = images_new_ || key != built_from_ || (sky_ && !static_resource(ctx.plan(), *sh));
     built_from_ = std::move(key);
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      no_sh_.emplace(ctx.gpu(), ctx.node().id + " no SH", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      no_sh_->write(std::vector<float>(4, 0.0f));
     }
     constants_->write_value(c);
     draws_->write(draws);
@@ -176,8 +201,13 @@ class VoxelKernel final : public NodeKernel {
     prepare(ctx);
     if (rebuild_) {
       voxelize(ctx);
-      inject(ctx);
+      inject(ctx, false);
       build_chain(ctx);
+      if (sky_) {  // the sky's light needs the chain of the sun's to see how open each voxel is
+        sky_visibility(ctx);
+        inject(ctx, true);
+        build_chain(ctx);
+      }
     }
     trace_cones(ctx);
   }
@@ -194,8 +224,9 @@ class VoxelKernel final : public NodeKernel {
     voxelize_draws(ctx, "nodes/gi/voxel/shaders/voxelize.comp", grid_, *constants_, *draws_, grid_sums_);
   }
 
-  // The sums into level 0 (the chain kept in the GENERAL layout).
-  void inject(PassContext& ctx) {
+  // The sums into level 0 (the chain kept in the GENERAL layout); with `sky`, the sky's light too
+  // (each voxel's visibility in its sums, from sky_visibility()).
+  void inject(PassContext& ctx, bool sky) {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_) {
       for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
@@ -209,8 +240,25 @@ class VoxelKernel final : public NodeKernel {
                                       storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1})),
-                                      storage_image(6, opacity_.view({.base_mip = 0, .mip_count = 1}))};
+                                      storage_image(6, opacity_.view({.base_mip = 0, .mip_count = 1})),
+                                      storage_buffer(7, sky ? ctx.buffer("in.sh").handle() : no_sh_->handle())};
+    const int32_t push = sky ? 1 : 0;
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
+                     uint32_t(grid_.counts.y * grid_.counts.z), std::as_bytes(std::span(&push, 1)));
+  }
+
+  // Per voxel, how much of the sky its surface sees through the chain (voxel_sky.comp), into its
+  // sums.
+  void sky_visibility(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());  // the chain's last level
+    const DescriptorWrite writes[] = {
+        uniform_buffer(0, constants_->handle()),
+        storage_buffer(1, grid_sums_.handle()),
+        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_sky.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
 
@@ -283,12 +331,14 @@ class VoxelKernel final : public NodeKernel {
   glm::ivec3 allocated_counts_{0};  // none yet
   uint32_t levels_ = 1;
   std::optional<HostBuffer> constants_, draws_, camera_;
+  std::optional<HostBuffer> no_sh_;  // bound in place of the SH where the sky is not injected
   Buffer grid_sums_;
   std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)
   Image opacity_;                      // each voxel's opacity along each axis (the same)
   int doubled_axis_ = 0;               // the axis along which those hold both directions
   bool images_new_ = false;            // not yet in the GENERAL layout
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
+  bool sky_ = false;                   // the environment's SH linked and the scene has an environment
   std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
 };
 
