@@ -35,6 +35,11 @@ namespace {
 
 constexpr uint64_t kGridBytesPerVoxel = 8 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
 
+struct ConesPush {  // shaders/voxel_cones.comp
+  int32_t k;
+  int32_t specular;
+};
+
 struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 origin_cell;
   glm::ivec4 counts;
@@ -61,6 +66,26 @@ const PlanAccess* node_access(PassContext& ctx, std::string_view pass, std::stri
 bool static_resource(const Plan& plan, const PlanAccess& a) {
   const int first = plan.resources[a.resource].first;
   return first >= 0 && plan.passes[first].is_static;
+}
+
+// Whether another node's pass, or the file's outputs, read what this node writes to its output
+// `slot` (an output nothing reads need not be computed).
+bool output_read(PassContext& ctx, std::string_view slot) {
+  const Plan& plan = ctx.plan();
+  const int self = ctx.pass().node;
+  int resource = -1;
+  for (const PlanPass& p : plan.passes)
+    if (p.node == self)
+      for (const PlanAccess& a : plan.accesses_of(p))
+        if (plan.slot_of(a) == slot) resource = a.resource;
+  if (resource < 0) return false;
+  for (const PlanOutput& o : plan.outputs)
+    if (std::find(o.resources.begin(), o.resources.end(), resource) != o.resources.end()) return true;
+  for (const PlanPass& p : plan.passes)
+    if (p.node != self)
+      for (const PlanAccess& a : plan.accesses_of(p))
+        if (a.resource == resource) return true;
+  return false;
 }
 
 class VoxelKernel final : public NodeKernel {
@@ -300,8 +325,11 @@ class VoxelKernel final : public NodeKernel {
         sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(10, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
         storage_image(11, specular.view())};
+    // The specular cone only where its output is read (examples/gi-voxel.json does not link it).
+    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
+    const ConesPush push{k_, *specular_read_ ? 1 : 0};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
-                     std::as_bytes(std::span(&k_, 1)));
+                     std::as_bytes(std::span(&push, 1)));
   }
 
   // At resolution_scale below 1, the cones' three smaller images to full resolution in one pass,
@@ -338,6 +366,7 @@ class VoxelKernel final : public NodeKernel {
   int doubled_axis_ = 0;               // the axis along which those hold both directions
   bool images_new_ = false;            // not yet in the GENERAL layout
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
+  std::optional<bool> specular_read_;  // the plan reads out.specular (fixed for the kernel's plan)
   bool sky_ = false;                   // the environment's SH linked and the scene has an environment
   std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
 };

@@ -44,7 +44,8 @@ layout(binding = 6, r8) uniform writeonly image2D ao;
 layout(binding = 10) uniform sampler2D material_tex;  // r: perceptual roughness
 layout(binding = 11, rgba16f) uniform writeonly image2D specular;
 layout(push_constant) uniform Push {
-  int k;  // the G-buffer's resolution over the targets'
+  int k;               // the G-buffer's resolution over the targets'
+  int trace_specular;  // 0 where nothing reads the specular output: it stays 0
 };
 
 // The tangent of the specular cone's half-angle for perceptual roughness r (GGX, alpha = r^2):
@@ -107,5 +108,7 @@ void main() {
   vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
   imageStore(irradiance, texel, vec4(e, 1.0));
   imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
-  imageStore(specular, texel, specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r));
+  vec4 reflected = vec4(0.0);
+  if (trace_specular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
+  imageStore(specular, texel, reflected);
 }
