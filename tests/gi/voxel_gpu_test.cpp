@@ -9,7 +9,8 @@
 //   the sky alone gives the floor what its face gets from the sky, and nothing reaches the inside
 //   of a closed room under that sky;
 // - the frame after the sun turns and the wall moves equals a fresh renderer's, and so does the
-//   frame after a draw changes only its mesh;
+//   frame after a draw changes only its mesh, and the frame after the camera moves (the cones kept
+//   while neither changes);
 // - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
 //   every output finite, validation clean;
 // - a scene without a directional light drops the node from examples/gi-voxel.json, with the
@@ -454,6 +455,51 @@ TEST(Voxel, NextFrameFollowsAMovedWallAndATurnedSun) {
   EXPECT_GT(largest, 0.0);
   EXPECT_GT(change, 0.0);  // the frame did change
   EXPECT_LE(worst, 1e-3 * largest);
+  expect_no_validation_messages(renderer->context());
+  expect_no_validation_messages(fresh->context());
+}
+
+// The cones are traced again only when the volume or the camera changed (voxel_kernel.cpp keeps
+// their last results): at resolution scale 1/2 (the kept images are the smaller ones, the upsample
+// runs every frame) a second frame from the same camera equals the first exactly, and after the
+// camera moves the frame equals a fresh renderer's frame from there (1e-3 of the largest value, as
+// above; a node that kept the old cones fails it: the floor seen from elsewhere). The irradiance
+// and the specular output (whose cone depends on the view) both.
+TEST(Voxel, TracesItsConesAgainWhenTheCameraMoves) {
+  World world = floor_and_wall(kSunFromTheEast, 10.0f, 0.1f);
+  const Graph graph = voxel_graph(32, 0.5);
+  auto renderer = make_renderer(graph);
+  auto read = [](Renderer& r) {
+    return std::pair{r.executor().read_image("voxel.irradiance"), r.executor().read_image("voxel.specular")};
+  };
+  renderer->render(world, kFrame);
+  const auto first = read(*renderer);
+  renderer->render(world, kFrame);
+  const auto still = read(*renderer);
+  EXPECT_EQ(still.first, first.first);
+  EXPECT_EQ(still.second, first.second);
+
+  world.each<Camera, Transform>([](Entity, Camera&, Transform& t) {
+    t.position = {0.3f, 1.0f, 3.5f};
+    t.rotation = look_rotation({-0.3f, -0.45f, -1.0f});
+  });
+  renderer->render(world, kFrame);
+  const auto moved = read(*renderer);
+  auto fresh = make_renderer(graph);
+  fresh->render(world, kFrame);
+  const auto expected = read(*fresh);
+  for (const auto& [got, want, before] : {std::tuple{&moved.first, &expected.first, &first.first},
+                                          std::tuple{&moved.second, &expected.second, &first.second}}) {
+    ASSERT_EQ(got->size(), want->size());
+    double largest = 0, worst = 0, change = 0;
+    for (size_t i = 0; i < want->size(); ++i) {
+      largest = std::max(largest, double(std::abs((*want)[i])));
+      worst = std::max(worst, double(std::abs((*got)[i] - (*want)[i])));
+      change += std::abs((*got)[i] - (*before)[i]);
+    }
+    EXPECT_GT(change, 0.0);  // the view did change
+    EXPECT_LE(worst, 1e-3 * largest);
+  }
   expect_no_validation_messages(renderer->context());
   expect_no_validation_messages(fresh->context());
 }

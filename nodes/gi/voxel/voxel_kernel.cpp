@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstring>
 #include <cstddef>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -27,6 +28,7 @@
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
+#include "runtime/gpu/image_copy.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/scene/scene_view.h"
 
@@ -305,13 +307,24 @@ class VoxelKernel final : public NodeKernel {
   }
 
   void trace_cones(PassContext& ctx) {
-    compute_to_compute_barrier(ctx.cmd());
+    VkCommandBuffer cmd = ctx.cmd();
+    compute_to_compute_barrier(cmd);
     // At the G-buffer's size: the cones start from positions reconstructed at its pixels.
     Image& depth = ctx.image("in.gbuffer", 0);
-    camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
+    const CameraConstants camera = camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height);
     Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
     Image& specular = ctx.image(k_ == 1 ? "out.specular" : "tmp.specular_lowres");
+    const std::array<Image*, 3> targets{&target, &ao, &specular};
+    // A frame that changes neither the volume nor the camera (a jittered one changes the camera)
+    // sees the same G-buffer: the cones' last results are copied back instead of traced.
+    if (!rebuild_ && kept_camera_ &&
+        std::memcmp(&*kept_camera_, &camera, sizeof(CameraConstants)) == 0) {
+      for (size_t i = 0; i < targets.size(); ++i)
+        copy_image(cmd, kept_[i], VK_IMAGE_LAYOUT_GENERAL, *targets[i], VK_IMAGE_LAYOUT_GENERAL);
+      return;
+    }
+    camera_->write_value(camera);
     std::vector<DescriptorWrite> writes = {
         uniform_buffer(0, constants_->handle()),
         uniform_buffer(1, camera_->handle()),
@@ -330,6 +343,25 @@ class VoxelKernel final : public NodeKernel {
     const ConesPush push{k_, *specular_read_ ? 1 : 0};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&push, 1)));
+    keep_cones(ctx, targets);
+    kept_camera_ = camera;
+  }
+
+  // The cones' results into the node's own images (kept in the GENERAL layout), made at the
+  // targets' sizes.
+  void keep_cones(PassContext& ctx, const std::array<Image*, 3>& targets) {
+    VkCommandBuffer cmd = ctx.cmd();
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const ImageDesc& d = targets[i]->desc();
+      if (kept_[i].desc().width != d.width || kept_[i].desc().height != d.height ||
+          kept_[i].desc().format != d.format || !kept_camera_) {
+        kept_[i] = Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " kept " + d.name,
+                                                .format = d.format,
+                                                .width = d.width,
+                                                .height = d.height});
+      }
+      copy_image(cmd, *targets[i], VK_IMAGE_LAYOUT_GENERAL, kept_[i], VK_IMAGE_LAYOUT_GENERAL);
+    }
   }
 
   // At resolution_scale below 1, the cones' three smaller images to full resolution in one pass,
@@ -366,6 +398,8 @@ class VoxelKernel final : public NodeKernel {
   int doubled_axis_ = 0;               // the axis along which those hold both directions
   bool images_new_ = false;            // not yet in the GENERAL layout
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
+  std::array<Image, 3> kept_;                  // the cones' last irradiance, AO and specular (trace_cones())
+  std::optional<CameraConstants> kept_camera_;  // the camera they were traced from; none yet
   std::optional<bool> specular_read_;  // the plan reads out.specular (fixed for the kernel's plan)
   bool sky_ = false;                   // the environment's SH linked and the scene has an environment
   std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
