@@ -5,6 +5,7 @@
 
 #include "runtime/exec/executor.h"
 #include "runtime/gpu/direct_barriers.h"
+#include "runtime/gpu/image_copy.h"
 #include "runtime/gpu/plan_barriers.h"
 
 namespace lg {
@@ -19,26 +20,6 @@ std::optional<int> find_resource(const Plan& plan, const std::string& name) {
 bool same_shape(const LoweredResource& a, const LoweredResource& b) {
   return a.kind == b.kind && a.format == b.format && a.width == b.width && a.height == b.height &&
          a.layers == b.layers && a.mips == b.mips && a.bytes == b.bytes;
-}
-
-// Every mip and layer of `from` into `to` (alike), each left in the layout it is read in.
-void copy_image(VkCommandBuffer cmd, const Image& from, VkImageLayout from_layout, const Image& to,
-                VkImageLayout to_layout) {
-  image_barrier(cmd, from, from_layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-  image_barrier(cmd, to, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-  const ImageDesc& d = from.desc();
-  std::vector<VkImageCopy> regions;
-  for (uint32_t mip = 0; mip < d.mips; ++mip) {
-    VkImageCopy region{};
-    region.srcSubresource = {from.primary_aspect(), mip, 0, d.layers};
-    region.dstSubresource = region.srcSubresource;
-    region.extent = {std::max(d.width >> mip, 1u), std::max(d.height >> mip, 1u), std::max(d.depth >> mip, 1u)};
-    regions.push_back(region);
-  }
-  vkCmdCopyImage(cmd, from.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(),
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(regions.size()), regions.data());
-  image_barrier(cmd, from, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, from_layout);
-  image_barrier(cmd, to, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, to_layout);
 }
 
 }  // namespace

@@ -292,7 +292,9 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
       for (const double scale : o.planar_scales) m.measure({.source = source, .planar_scale = scale});
   // gi.voxel carries the main directional light's bounce; elsewhere it is bypassed.
   if (has_directional_light(w.world))
-    for (const double scale : o.voxel_scales) m.measure({.source = ReflectionSource::voxel, .voxel_scale = scale});
+    for (const double scale : o.voxel_scales)
+      for (const bool sky : {true, false})
+        m.measure({.source = ReflectionSource::voxel, .voxel_scale = scale, .voxel_sky = sky});
   std::printf("\n");
   points.insert(points.end(), m.points.begin(), m.points.end());
 }

@@ -89,6 +89,7 @@ std::string config_label(const ReflectionConfig& c) {
   if (uses_planar(c.source) && c.planar_scale > 0) label += " planar=" + std::to_string(c.planar_scale).substr(0, 4);
   if (c.source == ReflectionSource::voxel && c.voxel_scale > 0)
     label += " scale=" + std::to_string(c.voxel_scale).substr(0, 4);
+  if (c.source == ReflectionSource::voxel && !c.voxel_sky) label += " sun-only";
   return label;
 }
 
@@ -125,6 +126,7 @@ Graph reflection_graph(const ReflectionConfig& c) {
     };
     link({"gbuf", "gbuffer"}, {"voxel", "gbuffer"});
     link({"voxel", "specular"}, {"ibl", "reflection_probes"});
+    if (c.voxel_sky) link({"sh", "sh"}, {"voxel", "sh"});
   }
   return graph;
 }

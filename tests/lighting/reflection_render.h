@@ -42,6 +42,7 @@ struct ReflectionConfig {
   double ssr_scale = 0;        // lighting.ssr's resolution_scale; 0: the example's
   double planar_scale = 0;     // gi.planar_reflection's resolution_scale; 0: the example's
   double voxel_scale = 0;      // gi.voxel's resolution_scale; 0: the node's default
+  bool voxel_sky = true;       // the example's SH linked into gi.voxel's sh (the sky's light in the voxels)
   std::string probe_params{};  // more gi.reflection_capture params as JSON members, e.g. "\"samples\": 64"
   std::string ssr_params{};    // more lighting.ssr params, likewise
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstring>
 #include <cstddef>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -27,6 +28,7 @@
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/host_buffer.h"
 #include "runtime/gpu/image.h"
+#include "runtime/gpu/image_copy.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/scene/scene_view.h"
 
@@ -34,6 +36,11 @@ namespace lg {
 namespace {
 
 constexpr uint64_t kGridBytesPerVoxel = 8 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
+
+struct ConesPush {  // shaders/voxel_cones.comp
+  int32_t k;
+  int32_t specular;
+};
 
 struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 origin_cell;
@@ -43,6 +50,45 @@ struct Constants {  // shaders/voxel_common.glsl
   glm::mat4 shadow_from_world;
   glm::ivec4 chain;
 };
+
+// The access of this node's pass `pass` to `slot`, or null (an optional input unlinked): the
+// kernel's first pass of a frame (the shadow's) decides for the volume pass.
+const PlanAccess* node_access(PassContext& ctx, std::string_view pass, std::string_view slot) {
+  const Plan& plan = ctx.plan();
+  for (const PlanPass& p : plan.passes) {
+    if (p.node != ctx.pass().node || p.pass != pass) continue;
+    for (const PlanAccess& a : plan.accesses_of(p))
+      if (plan.slot_of(a) == slot) return &a;
+  }
+  return nullptr;
+}
+
+// Whether `a`'s resource is a static result of the plan (made once, the same every frame): its
+// first pass, its producer, is static.
+bool static_resource(const Plan& plan, const PlanAccess& a) {
+  const int first = plan.resources[a.resource].first;
+  return first >= 0 && plan.passes[first].is_static;
+}
+
+// Whether another node's pass, or the file's outputs, read what this node writes to its output
+// `slot` (an output nothing reads need not be computed).
+bool output_read(PassContext& ctx, std::string_view slot) {
+  const Plan& plan = ctx.plan();
+  const int self = ctx.pass().node;
+  int resource = -1;
+  for (const PlanPass& p : plan.passes)
+    if (p.node == self)
+      for (const PlanAccess& a : plan.accesses_of(p))
+        if (plan.slot_of(a) == slot) resource = a.resource;
+  if (resource < 0) return false;
+  for (const PlanOutput& o : plan.outputs)
+    if (std::find(o.resources.begin(), o.resources.end(), resource) != o.resources.end()) return true;
+  for (const PlanPass& p : plan.passes)
+    if (p.node != self)
+      for (const PlanAccess& a : plan.accesses_of(p))
+        if (a.resource == resource) return true;
+  return false;
+}
 
 class VoxelKernel final : public NodeKernel {
  public:
@@ -90,6 +136,8 @@ class VoxelKernel final : public NodeKernel {
       c.shadow_from_world = shadow_from_world(bounds, direction);
     }
     shadow_from_world_ = c.shadow_from_world;
+    const PlanAccess* sh = node_access(ctx, "volume", "in.sh");
+    sky_ = sh && scene.has_environment;
     const std::vector<DrawConstants> draws = draw_constants(scene);
     // The volume is rebuilt only when what it is made of changed: the grid, the light, the draws
     // (transforms, materials), which mesh each draws (not in DrawConstants: a draw may swap
@@ -102,15 +150,19 @@ class VoxelKernel final : public NodeKernel {
       key.insert(key.end(), first, first + bytes);
     };
     append(&c, sizeof(c));
+    append(&sky_, sizeof(sky_));
     append(&scene.version, sizeof(scene.version));
     append(draws.data(), draws.size() * sizeof(DrawConstants));
     for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
-    rebuild_ = images_new_ || key != built_from_;
+    // A sky whose SH is not a static result (an animated sky) may change in any frame.
+    rebuild_ = images_new_ || key != built_from_ || (sky_ && !static_resource(ctx.plan(), *sh));
     built_from_ = std::move(key);
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      no_sh_.emplace(ctx.gpu(), ctx.node().id + " no SH", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      no_sh_->write(std::vector<float>(4, 0.0f));
     }
     constants_->write_value(c);
     draws_->write(draws);
@@ -176,8 +228,13 @@ class VoxelKernel final : public NodeKernel {
     prepare(ctx);
     if (rebuild_) {
       voxelize(ctx);
-      inject(ctx);
+      inject(ctx, false);
       build_chain(ctx);
+      if (sky_) {  // the sky's light needs the chain of the sun's to see how open each voxel is
+        sky_visibility(ctx);
+        inject(ctx, true);
+        build_chain(ctx);
+      }
     }
     trace_cones(ctx);
     if (ctx.has("out.volume")) write_volume(ctx);
@@ -215,8 +272,9 @@ class VoxelKernel final : public NodeKernel {
     voxelize_draws(ctx, "nodes/gi/voxel/shaders/voxelize.comp", grid_, *constants_, *draws_, grid_sums_);
   }
 
-  // The sums into level 0 (the chain kept in the GENERAL layout).
-  void inject(PassContext& ctx) {
+  // The sums into level 0 (the chain kept in the GENERAL layout); with `sky`, the sky's light too
+  // (each voxel's visibility in its sums, from sky_visibility()).
+  void inject(PassContext& ctx, bool sky) {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_) {
       for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
@@ -230,8 +288,25 @@ class VoxelKernel final : public NodeKernel {
                                       storage_image(3, seen_[0].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1})),
-                                      storage_image(6, opacity_.view({.base_mip = 0, .mip_count = 1}))};
+                                      storage_image(6, opacity_.view({.base_mip = 0, .mip_count = 1})),
+                                      storage_buffer(7, sky ? ctx.buffer("in.sh").handle() : no_sh_->handle())};
+    const int32_t push = sky ? 1 : 0;
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
+                     uint32_t(grid_.counts.y * grid_.counts.z), std::as_bytes(std::span(&push, 1)));
+  }
+
+  // Per voxel, how much of the sky its surface sees through the chain (voxel_sky.comp), into its
+  // sums.
+  void sky_visibility(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());  // the chain's last level
+    const DescriptorWrite writes[] = {
+        uniform_buffer(0, constants_->handle()),
+        storage_buffer(1, grid_sums_.handle()),
+        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_sky.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
 
@@ -253,13 +328,24 @@ class VoxelKernel final : public NodeKernel {
   }
 
   void trace_cones(PassContext& ctx) {
-    compute_to_compute_barrier(ctx.cmd());
+    VkCommandBuffer cmd = ctx.cmd();
+    compute_to_compute_barrier(cmd);
     // At the G-buffer's size: the cones start from positions reconstructed at its pixels.
     Image& depth = ctx.image("in.gbuffer", 0);
-    camera_->write_value(camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height));
+    const CameraConstants camera = camera_constants(ctx.scene().camera, depth.desc().width, depth.desc().height);
     Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
     Image& specular = ctx.image(k_ == 1 ? "out.specular" : "tmp.specular_lowres");
+    const std::array<Image*, 3> targets{&target, &ao, &specular};
+    // A frame that changes neither the volume nor the camera (a jittered one changes the camera)
+    // sees the same G-buffer: the cones' last results are copied back instead of traced.
+    if (!rebuild_ && kept_camera_ &&
+        std::memcmp(&*kept_camera_, &camera, sizeof(CameraConstants)) == 0) {
+      for (size_t i = 0; i < targets.size(); ++i)
+        copy_image(cmd, kept_[i], VK_IMAGE_LAYOUT_GENERAL, *targets[i], VK_IMAGE_LAYOUT_GENERAL);
+      return;
+    }
+    camera_->write_value(camera);
     std::vector<DescriptorWrite> writes = {
         uniform_buffer(0, constants_->handle()),
         uniform_buffer(1, camera_->handle()),
@@ -273,8 +359,30 @@ class VoxelKernel final : public NodeKernel {
         sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(10, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
         storage_image(11, specular.view())};
+    // The specular cone only where its output is read (examples/gi-voxel.json does not link it).
+    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
+    const ConesPush push{k_, *specular_read_ ? 1 : 0};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
-                     std::as_bytes(std::span(&k_, 1)));
+                     std::as_bytes(std::span(&push, 1)));
+    keep_cones(ctx, targets);
+    kept_camera_ = camera;
+  }
+
+  // The cones' results into the node's own images (kept in the GENERAL layout), made at the
+  // targets' sizes.
+  void keep_cones(PassContext& ctx, const std::array<Image*, 3>& targets) {
+    VkCommandBuffer cmd = ctx.cmd();
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const ImageDesc& d = targets[i]->desc();
+      if (kept_[i].desc().width != d.width || kept_[i].desc().height != d.height ||
+          kept_[i].desc().format != d.format || !kept_camera_) {
+        kept_[i] = Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " kept " + d.name,
+                                                .format = d.format,
+                                                .width = d.width,
+                                                .height = d.height});
+      }
+      copy_image(cmd, *targets[i], VK_IMAGE_LAYOUT_GENERAL, kept_[i], VK_IMAGE_LAYOUT_GENERAL);
+    }
   }
 
   // At resolution_scale below 1, the cones' three smaller images to full resolution in one pass,
@@ -304,12 +412,17 @@ class VoxelKernel final : public NodeKernel {
   glm::ivec3 allocated_counts_{0};  // none yet
   uint32_t levels_ = 1;
   std::optional<HostBuffer> constants_, draws_, camera_;
+  std::optional<HostBuffer> no_sh_;  // bound in place of the SH where the sky is not injected
   Buffer grid_sums_;
   std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)
   Image opacity_;                      // each voxel's opacity along each axis (the same)
   int doubled_axis_ = 0;               // the axis along which those hold both directions
   bool images_new_ = false;            // not yet in the GENERAL layout
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
+  std::array<Image, 3> kept_;                  // the cones' last irradiance, AO and specular (trace_cones())
+  std::optional<CameraConstants> kept_camera_;  // the camera they were traced from; none yet
+  std::optional<bool> specular_read_;  // the plan reads out.specular (fixed for the kernel's plan)
+  bool sky_ = false;                   // the environment's SH linked and the scene has an environment
   std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
 };
 

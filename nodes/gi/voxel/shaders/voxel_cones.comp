@@ -28,6 +28,7 @@
 // rgb: irradiance, W/m^2; a: coverage, 1 where the surface lies in the grid's box and there is a
 // light, else 0.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
+#include "nodes/gi/voxel/shaders/voxel_trace.glsl"
 #include "nodes/common/shaders/camera.glsl"
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
@@ -38,95 +39,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = 1) uniform CameraBlock { Camera camera; };  // at the G-buffer's size
 layout(binding = 2) uniform sampler2D depth_tex;
 layout(binding = 3) uniform sampler2D normal_tex;
-// The chain (voxel_common.glsl), per axis, trilinear within a level.
-layout(binding = 4) uniform sampler3D seen_x;
-layout(binding = 7) uniform sampler3D seen_y;
-layout(binding = 8) uniform sampler3D seen_z;
-layout(binding = 9) uniform sampler3D opacity_image;
 layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
 layout(binding = 6, r8) uniform writeonly image2D ao;
 layout(binding = 10) uniform sampler2D material_tex;  // r: perceptual roughness
 layout(binding = 11, rgba16f) uniform writeonly image2D specular;
 layout(push_constant) uniform Push {
-  int k;  // the G-buffer's resolution over the targets'
+  int k;               // the G-buffer's resolution over the targets'
+  int trace_specular;  // 0 where nothing reads the specular output: it stays 0
 };
-
-const float kTanHalfAngle = 0.57735027;  // tan 30 deg
-const float kCentreWeight = 0.25, kSideWeight = 0.15;
-const float kCrossing = 4.0;
-
-// What a ray travelling along `negative` (0 or 1) of `image`'s axis sees at `uvw` (the grid's
-// box in [0, 1]^3) of `level`: within its half, clamped half a voxel inside it so the filter does
-// not blend the other half in.
-vec4 seen(sampler3D image, vec3 uvw, int level, int negative) {
-  int axis = voxel.chain.x;
-  float n = float(voxel_level_counts(level)[axis]);
-  uvw[axis] = (clamp(uvw[axis], 0.5 / n, 1.0 - 0.5 / n) + float(negative)) * 0.5;
-  return textureLod(image, uvw, float(level));
-}
-
-// What a cone's sample sees.
-struct Sample {
-  vec3 radiance;   // of what faces the ray, W/m^2/sr
-  float opaque;    // the chain's opacity, whichever way the surfaces face
-  float in_front;  // opacity of what faces the ray only
-};
-
-// The chain at `uvw` and `level` for a ray along `d` (unit): the three directions facing the ray,
-// weighted by d's squared components (they sum to 1). in_front: how much of the voxel faces the
-// ray along any of the three directions, each counted fully once the ray crosses that axis at 30
-// degrees or more (w >= 1/4), fading below.
-Sample sample_chain(vec3 uvw, int level, vec3 d) {
-  vec3 w = d * d;
-  bvec3 negative = lessThan(d, vec3(0.0));
-  vec4 x = seen(seen_x, uvw, level, int(negative.x)), y = seen(seen_y, uvw, level, int(negative.y)),
-       z = seen(seen_z, uvw, level, int(negative.z));
-  vec3 colour = w.x * x.rgb + w.y * y.rgb + w.z * z.rgb, facing = vec3(x.a, y.a, z.a);
-  vec3 in_front = min(vec3(1.0), kCrossing * w) * facing;
-  float opaque = dot(w, seen(opacity_image, uvw, level, 0).rgb);
-  // Below 1e-3 of a voxel facing the ray, the colour (at most as large) is negligible.
-  return Sample(colour / max(dot(w, facing), 1e-3), opaque, max(in_front.x, max(in_front.y, in_front.z)));
-}
-
-struct Cone {
-  vec3 light;      // radiance gathered, W/m^2/sr
-  float opacity;   // of what faced the ray
-  float occluded;  // opacity gathered within ao_distance
-};
-
-// `cosine`: of the cone's axis with the normal (h grows by it per metre of t); `tan_half_angle`:
-// of the cone's aperture.
-Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle) {
-  float cell = voxel.origin_cell.w;
-  vec3 grid_size = cell * vec3(voxel.counts.xyz);
-  float top = float(voxel.counts.w - 1);
-  vec3 light = vec3(0.0);
-  float opacity = 0.0, occluded = 0.0, blocked = 0.0;
-  float t = cell;
-  for (int s = 0; s < 128 && opacity < 0.99 && blocked < 0.99; ++s) {
-    // The level whose voxels are at most that wide: a whole level, as blending in the next one
-    // would reach twice as far.
-    float level = min(floor(log2(max(min(2.0 * t * tan_half_angle, (cell + t * cosine) / 1.5), cell) / cell)), top);
-    float width = cell * exp2(level);
-    vec3 uvw = (origin + direction * t - voxel.origin_cell.xyz) / grid_size;
-    if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
-    Sample v = sample_chain(uvw, int(level), direction);
-    // Light stops at what faces the ray only (a ray never meets the back of a surface); the
-    // occlusion counts every voxel, as a one-sided roof occludes the floor below it.
-    float a = clamp(v.in_front, 0.0, 1.0);
-    light += (1.0 - opacity) * a * max(v.radiance, vec3(0.0));
-    opacity += (1.0 - opacity) * a;
-    float opaque = clamp(v.opaque, 0.0, 1.0);
-    if (t <= voxel.irradiance.w) occluded += (1.0 - occluded) * opaque;
-    // The march ends once the voxels are solid whichever way they face (nothing lit is seen
-    // through them: closed surfaces face the ray before their backs), but not for the voxels
-    // of the surface the cone starts from, which the filter reaches within 2.5 voxels of it. A
-    // march ended by facing opacity alone went on through every surface's back.
-    if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
-    t += width;
-  }
-  return Cone(light, opacity, occluded);
-}
 
 // The tangent of the specular cone's half-angle for perceptual roughness r (GGX, alpha = r^2):
 // the reflected lobe's half width at half maximum. GGX's D(h) falls to half its peak where
@@ -151,7 +71,8 @@ vec4 specular_cone(vec3 origin, vec3 p, vec3 n, float roughness) {
   r -= n * min(dot(r, n), 0.0);
   float r_len = length(r);
   r = r_len > 1e-4 ? r / r_len : n;
-  Cone cone = trace(origin, r, max(dot(r, n), 0.0), voxel_specular_half_angle_tan(clamp(roughness, 0.0, 1.0)));
+  Cone cone = trace(origin, r, max(dot(r, n), 0.0), voxel_specular_half_angle_tan(clamp(roughness, 0.0, 1.0)),
+                    voxel.irradiance.w, kAllLevels);
   float a = clamp(cone.opacity, 0.0, 1.0);
   // Below 1e-4 the light gathered (at most a times the brightest voxel) is negligible.
   vec3 radiance = a > 1e-4 ? cone.light / a : vec3(0.0);
@@ -176,23 +97,18 @@ void main() {
     return;
   }
   n /= len;
-  // An orthonormal frame about n (Duff et al. 2017).
-  float s = n.z >= 0.0 ? 1.0 : -1.0;
-  float a = -1.0 / (s + n.z), b = n.x * n.y * a;
-  vec3 t1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x), t2 = vec3(b, s + n.y * n.y * a, -n.y);
   vec3 origin = p + n * cell;
-  Cone centre = trace(origin, n, 1.0, kTanHalfAngle);
-  vec3 light = kCentreWeight * centre.light;
-  float occluded = kCentreWeight * centre.occluded;
-  for (int i = 0; i < 5; ++i) {
-    float phi = float(i) * (2.0 * LG_PI / 5.0);
-    vec3 d = 0.5 * n + 0.86602540 * (cos(phi) * t1 + sin(phi) * t2);
-    Cone side = trace(origin, d, 0.5, kTanHalfAngle);
-    light += kSideWeight * side.light;
-    occluded += kSideWeight * side.occluded;
+  vec3 light = vec3(0.0);
+  float occluded = 0.0;
+  for (int i = 0; i < kHemisphereCones; ++i) {
+    Cone cone = trace_hemisphere_cone(origin, n, i, voxel.irradiance.w, kAllLevels);
+    light += hemisphere_cone_weight(i) * cone.light;
+    occluded += hemisphere_cone_weight(i) * cone.occluded;
   }
   vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
   imageStore(irradiance, texel, vec4(e, 1.0));
   imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
-  imageStore(specular, texel, specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r));
+  vec4 reflected = vec4(0.0);
+  if (trace_specular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
+  imageStore(specular, texel, reflected);
 }

@@ -12,8 +12,12 @@
 // percentage-closer filter at the voxel's centre moved one voxel out along the normal, with a
 // depth bias of 1.5 voxels: a voxel's centre may lie up to sqrt(3)/2 voxels behind the surface it
 // holds.
+// With the environment's SH linked, a second injection after the sky visibility (voxel_sky.comp)
+// adds what the sky gives the same surface: albedo x E_sky(n) x visibility / pi, E_sky from the
+// cosine-convolved SH (as lighting.ibl's diffuse light), the visibility from the voxels' opacity.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/common/shaders/finite.glsl"
+#include "nodes/env/common/shaders/sh_basis.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -24,6 +28,11 @@ layout(binding = 3, rgba16f) uniform writeonly image3D seen_x;
 layout(binding = 4, rgba16f) uniform writeonly image3D seen_y;
 layout(binding = 5, rgba16f) uniform writeonly image3D seen_z;
 layout(binding = 6, rgba16f) uniform writeonly image3D opacity_image;
+// The environment's irradiance SH (env.sh_project with convolve_cosine), read once a voxel.
+layout(std430, binding = 7) readonly buffer Sh { vec4 sh[]; };
+layout(push_constant) uniform Push {
+  int sky;  // 1: add the sky's light (the sums' eighth int holds the visibility), 0: the sun's alone
+};
 
 // How much of a surface of unit normal n faces rays travelling along each axis the positive way
 // (negative = 0) or the negative way: 1 from 15 degrees off edge-on, falling linearly to 0
@@ -66,6 +75,16 @@ float visibility(vec3 p) {
   return lit / 9.0;
 }
 
+// The sky's irradiance at unit normal n, W/m^2 (lighting.ibl's sh_irradiance, whose bindings
+// this pass does not have).
+vec3 sky_irradiance(vec3 n) {
+  float y[LG_SH_MAX_COUNT];
+  sh_evaluate(n, y);
+  vec3 e = vec3(0.0);
+  for (int k = 0; k < min(int(sh.length()), LG_SH_MAX_COUNT); ++k) e += sh[k].rgb * y[k];
+  return max(e, vec3(0.0));  // ringing must not light negatively
+}
+
 void main() {
   ivec3 c = voxel_invocation_cell(voxel.counts.xyz);
   if (any(greaterThanEqual(c, voxel.counts.xyz))) return;
@@ -88,5 +107,6 @@ void main() {
     float v = cosine > 0.0 ? visibility(centre + n * voxel.origin_cell.w) : 0.0;
     radiance = albedo * voxel.irradiance.rgb * (cosine * v / LG_PI);
   }
+  if (len > 1e-3 && sky == 1) radiance += albedo * sky_irradiance(n) * (intBitsToFloat(grid[base + 7u]) / LG_PI);
   store(c, clamp(finite_or_zero(radiance), 0.0, 65504.0), n, 1.0);
 }
