@@ -1,5 +1,6 @@
 #include "tests/bench/bench_flags.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -86,6 +87,16 @@ std::optional<int> BenchFlags::parse(int argc, char** argv) const {
     }
   }
   return std::nullopt;
+}
+
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> out;
+  for (size_t start = 0; start <= text.size();) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
 }
 
 }  // namespace lg::bench

@@ -41,4 +41,7 @@ class BenchFlags {
   std::vector<Flag> flags_;
 };
 
+// "a,b,c" -> {"a", "b", "c"}; "" -> {""}.
+std::vector<std::string> split_commas(const std::string& text);
+
 }  // namespace lg::bench

@@ -40,12 +40,12 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "nodes/gi/common/main_light.h"
-#include "nodes/gi/path_tracer/path_transport.h"
-#include "nodes/raytrace/camera_pixels.h"
+#include "nodes/gi/path_tracer/path_tracer.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "tests/bench/bench_flags.h"
 #include "tests/bench/renderer_pass_timing.h"
+#include "tests/bench/two_rooms_leak.h"
 #include "tests/gi/prt_comparison.h"
 
 namespace lg::bench {
@@ -86,16 +86,6 @@ struct Options {
                               {"lpv", 16, 0, kLpvDefaultDivisor},
                               {"lpv", 16, 8, 2}};
 };
-
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> out;
-  for (size_t start = 0; start <= text.size();) {
-    const size_t end = std::min(text.find(',', start), text.size());
-    out.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return out;
-}
 
 // gi.lpv's grid and iterations ("32/8"); gi.voxel's resolution; either's resolution_scale where it
 // is not the node's default ("64 1/4").
@@ -200,38 +190,18 @@ FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
   return out;
 }
 
-// The leak in the two rooms: the node's mean irradiance (green) on the floor each room's camera
-// sees, east over west.
-double leak_ratio(World world, const Quality& q, const Options& o) {
-  auto floor_mean = [&](glm::vec3 eye, glm::vec3 at) {
-    world.each<Camera, Transform>([&](Entity, Camera&, Transform& t) {
-      t.position = eye;
-      t.rotation = look_rotation(at - eye);
-    });
+// The leak in the two rooms (two_rooms_leak.h) with the node's irradiance.
+double leak_ratio(const World& world, const Quality& q, const Options& o) {
+  const RoomFloors floors = two_rooms_floors(world, o.width, o.height, [&](const World& room) {
     Renderer renderer;
     renderer.set_graph(node_graph(q));
-    renderer.render(world, {o.width, o.height});
-    const std::vector<float> e = renderer.executor().read_image(q.method + ".irradiance");
-    const SceneView view = make_scene_view(world, float(o.width) / o.height);
-    const PathScene scene(view, PathEnvironment::none());
-    const PathTransport transport(scene, 1);
-    const CameraPixels camera(view.camera, o.width, o.height);
-    double sum = 0;
-    size_t n = 0;
-    for (uint32_t y = 0; y < o.height; ++y)
-      for (uint32_t x = 0; x < o.width; ++x) {
-        const auto s = transport.visible_surface(camera.eye(), camera.ray_direction(x, y), true);
-        if (!s || s->normal.y < 0.9 || s->position.y > 0.05) continue;
-        sum += e[4 * (size_t(y) * o.width + x) + 1], ++n;
-      }
-    return n ? sum / double(n) : std::nan("");
-  };
-  const double east = floor_mean({3.7f, 1.6f, 1.7f}, {0.3f, 0.0f, -1.0f});
-  const double west = floor_mean({-3.7f, 1.6f, 1.7f}, {-0.3f, 0.0f, -1.0f});
+    renderer.render(room, {o.width, o.height});
+    return renderer.executor().read_image(q.method + ".irradiance");
+  });
   // Both are small where little light bounces onto the floors: the ratio alone can mislead.
   std::printf("  %s %s: mean irradiance on the east room's floor %.5f, the west room's %.5f W/m^2\n", q.method.c_str(),
-              quality_name(q).c_str(), east, west);
-  return east / west;
+              quality_name(q).c_str(), floors.east, floors.west);
+  return floors.leak();
 }
 
 int run(const Options& o) {

@@ -30,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "nodes/gi/path_tracer/reference_file.h"
 #include "runtime/image/image_file.h"
 #include "tests/bench/bench_flags.h"
+#include "tests/bench/reference_cache.h"
 #include "tests/lighting/captured_reflection_mask.h"
 #include "tests/lighting/reflection_render.h"
 #include "tests/lighting/reflection_worlds.h"
@@ -77,49 +77,19 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-// FNV-1a of the text.
-uint64_t text_hash(const std::string& text) {
-  uint64_t hash = 0xcbf29ce484222325ull;
-  for (unsigned char c : text) hash = (hash ^ c) * 0x100000001b3ull;
-  return hash;
-}
-
 // The reference of `w` with `paths` a pixel from `seed`, from the cache when a file there was
 // traced for the same run: the world and graph files (the environment is the graph's), the world's
 // edits (its name), size, paths and seed.
 ReferenceImage cached_reference(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
                                 const PathEnvironment& environment, uint32_t paths, uint64_t seed) {
   const std::string source = LUMAGRAPH_SOURCE_DIR;
-  const uint64_t hash = text_hash(file_text(source + "/examples/worlds/" + world_file) +
-                                  file_text(source + "/examples/reflections.json"));
-  char run[256];
-  std::snprintf(run, sizeof run, "world=%s files=%016" PRIx64 " size=%ux%u spp=%u seed=%" PRIu64, w.name.c_str(),
-                hash, o.width, o.height, paths, seed);
-  char name[256];
-  std::snprintf(name, sizeof name, "/%s-%ux%u-%u-s%" PRIu64 "-%016" PRIx64 ".part", w.name.c_str(), o.width, o.height,
-                paths, seed, hash);
-  const std::string path = o.cache_dir + name;
-  if (std::filesystem::exists(path)) {
-    ReferencePart part = read_reference_part(path);
-    if (part.run == run) {
-      std::printf("%s reference: cached in %s\n", w.name.c_str(), path.c_str());
-      return std::move(part.image);
-    }
-  }
-  const auto start = std::chrono::steady_clock::now();
-  ReferencePart part{run, 0, 1, test::trace_specular_reference(w.world, o.width, o.height, paths, environment, seed)};
-  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-  std::filesystem::create_directories(o.cache_dir);
-  write_reference_part(path, part);
-  std::printf("%s reference: traced in %.0f s, saved to %s\n", w.name.c_str(), seconds.count(), path.c_str());
-  return std::move(part.image);
+  char options[128], tag[64];
+  std::snprintf(options, sizeof options, "size=%ux%u spp=%u seed=%" PRIu64, o.width, o.height, paths, seed);
+  std::snprintf(tag, sizeof tag, "%ux%u-%u-s%" PRIu64, o.width, o.height, paths, seed);
+  return bench::cached_reference(
+      {o.cache_dir, w.name, {source + "/examples/worlds/" + world_file, source + "/examples/reflections.json"}, options,
+       tag},
+      [&] { return test::trace_specular_reference(w.world, o.width, o.height, paths, environment, seed); });
 }
 
 void print_error(const char* what, const test::SpecularError& e) {
