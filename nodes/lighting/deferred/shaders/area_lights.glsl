@@ -23,6 +23,13 @@ layout(std140, binding = 18) uniform Rects { RectLight rects[LG_MAX_LIGHTS]; };
 // lighting.deferred's area_specular: true for "ltc", false for "representative_point" (the
 // compiler drops the other); scene.forward_transparent keeps the default.
 layout(constant_id = 1) const bool area_specular_ltc = true;
+// lighting.deferred's area pass: whether the frame has lights of each kind, so that the compiler
+// drops an absent kind's loop. lavapipe (22.3) runs a loop's body at least once, with every lane
+// masked off when the list is empty, and runs both sides of every branch whatever the lanes
+// decide: an empty list cost a whole light. scene.forward_transparent keeps the defaults.
+layout(constant_id = 5) const bool area_has_spheres = true;
+layout(constant_id = 6) const bool area_has_tubes = true;
+layout(constant_id = 7) const bool area_has_rects = true;
 
 // True where every point of the light's bounding sphere (centre c, radius `bound`) lies below the
 // surface's horizon: neither its diffuse nor its specular (the GGX lobe is clipped there) can
@@ -51,7 +58,7 @@ vec3 area_radiance(Surface s) {
   // alpha = roughness^2 above its floor, where the table's entries are alike.
   vec4 ltc = ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha));
   vec3 added = vec3(0.0);
-  for (uint i = 0; i < counts.z; ++i) {
+  for (uint i = 0; area_has_spheres && i < counts.z; ++i) {
     SphereLight l = spheres[i];
     vec3 c = l.center_radius.xyz;
     float radius = l.center_radius.w;
@@ -65,7 +72,7 @@ vec3 area_radiance(Surface s) {
     RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
     added += area_specular(s, rp, radiance, LG_PI * radius * radius);
   }
-  for (uint i = 0; i < counts.w; ++i) {
+  for (uint i = 0; area_has_tubes && i < counts.w; ++i) {
     TubeLight l = tubes[i];
     vec3 a = l.end0_radius.xyz, b = l.end1.xyz;
     float radius = l.end0_radius.w;
@@ -84,7 +91,7 @@ vec3 area_radiance(Surface s) {
     float sin_side = len > 0.0 ? length(cross(axis / len, rp.direction)) : 0.0;
     added += area_specular(s, rp, radiance, LG_PI * radius * radius + 2.0 * radius * len * sin_side);
   }
-  for (uint i = 0; i < counts2.x; ++i) {
+  for (uint i = 0; area_has_rects && i < counts2.x; ++i) {
     RectLight l = rects[i];
     vec3 c = l.center_two_sided.xyz, hx = l.half_x.xyz, hy = l.half_y.xyz;
     bool two_sided = l.center_two_sided.w > 0.0;
