@@ -2,6 +2,8 @@
 // view is replaced by the cosine lobe that M (ltc_table.h) carries into its shape, whose integral
 // over a polygon is the Lambert polygon formula on the polygon carried back by M^-1 and clipped to
 // the cosine's horizon. Float math, ported line by line to shaders/area_light_ltc.glsl.
+// (The shader takes the outline's corners by a rotation from corner to corner, the same points
+// up to rounding.)
 //
 // Each returns L I: the light's radiance times the fraction of the lobe's energy the light covers
 // (I in [0, 1]). The specular radiance toward v is that times the lobe's directional albedo

@@ -192,8 +192,16 @@ class DeferredKernel final : public NodeKernel {
     writes.push_back(storage_image(5, color.view()));
     add_local_shadow_atlas(ctx, writes);
     lights_->add_area_lists(writes);
-    // Constant 1: area_lights.glsl's area_specular_ltc.
-    const uint32_t constants[] = {local_drawn_ ? 1u : 0u, area_specular_ltc_ ? 1u : 0u};
+    // Constant 1: area_lights.glsl's area_specular_ltc; 5 to 7: whether the frame has spheres,
+    // tubes, rectangles (2 to 4 are the reflection capture's, which includes the same file).
+    const uint32_t constants[] = {local_drawn_ ? 1u : 0u,
+                                  area_specular_ltc_ ? 1u : 0u,
+                                  0u,
+                                  0u,
+                                  0u,
+                                  constants_.counts[2] > 0 ? 1u : 0u,
+                                  constants_.counts[3] > 0 ? 1u : 0u,
+                                  constants_.counts2[0] > 0 ? 1u : 0u};
     dispatch_compute(ctx, "nodes/lighting/deferred/shaders/area.comp", writes, color.desc().width, color.desc().height,
                      {}, kTileSize, constants);
   }

@@ -71,7 +71,7 @@ LightBuffers::LightBuffers(Context& gpu, const std::string& id)
       spheres_(gpu, id + " sphere lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       tubes_(gpu, id + " tube lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       rects_(gpu, id + " rectangle lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
-      shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
+      shadow_views_(gpu, id + " local shadow views", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
       ltc_(gpu, id + " LTC table", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT) {
   ltc_.write_value(ltc_table_texels());
 }
@@ -123,6 +123,11 @@ void LightBuffers::write_lights(const SceneView& scene, int caster, const LocalS
   write_list(spheres_, std::move(spheres), "sphere");
   write_list(tubes_, std::move(tubes), "tube");
   write_list(rects_, std::move(rects), "rectangle");
+  if (views.size() > kMaxShadowViews)
+    throw std::runtime_error("at most " + std::to_string(kMaxShadowViews) +
+                             " local shadow views are drawn a frame (a uniform block); this frame has " +
+                             std::to_string(views.size()));
+  views.resize(kMaxShadowViews);
   shadow_views_.write(views);
 }
 
@@ -137,7 +142,7 @@ void LightBuffers::add_direct_lists(std::vector<DescriptorWrite>& writes) const 
 }
 
 void LightBuffers::add_shadow_views(std::vector<DescriptorWrite>& writes) const {
-  writes.push_back(storage_buffer(15, shadow_views_.handle()));
+  writes.push_back(uniform_buffer(15, shadow_views_.handle()));
 }
 
 void LightBuffers::add_area_lists(std::vector<DescriptorWrite>& writes) const {

@@ -22,6 +22,9 @@ namespace lg {
 // to the view where the node culls: lighting.deferred and scene.forward_transparent; reflection
 // captures see every light) is an error naming the kind (write_lights throws).
 inline constexpr size_t kMaxLightsPerKind = 256;
+// Local shadow views a frame draws at most (local_shadow_atlas.glsl's LG_MAX_SHADOW_VIEWS): six
+// for each of the 16 lights the schema's shadow_budget allows; a uniform block too (80 bytes each).
+inline constexpr size_t kMaxShadowViews = 96;
 
 // shaders/lights.glsl's Constants (std140).
 struct LightConstants {

@@ -6,13 +6,13 @@
 namespace lg {
 namespace {
 
-// forward_shading.glsl's bindings: constants 0, the light lists (11 to 13, 16 to 18), settings
-// 20 and the LTC table 22 uniform; draws 1, SH 6 and the local shadow views 15 storage buffers;
+// forward_shading.glsl's bindings: constants 0, the light lists (11 to 13, 16 to 18), the local
+// shadow views 15, settings 20 and the LTC table 22 uniform; draws 1 and SH 6 storage buffers;
 // the rest sampled images (the material's textures at material_texture_bindings among them).
 VkDescriptorType binding_type(uint32_t b) {
-  if (b == 0 || (b >= 11 && b <= 13) || (b >= 16 && b <= 18) || b == 20 || b == 22)
+  if (b == 0 || (b >= 11 && b <= 13) || b == 15 || (b >= 16 && b <= 18) || b == 20 || b == 22)
     return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  if (b == 1 || b == 6 || b == 15)
+  if (b == 1 || b == 6)
     return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 }

@@ -167,27 +167,35 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
   return true;
 }
 
-vec3 ltc_outline_vertex(LtcOutline o, int j) {
-  int half_ = j / (LG_LTC_ARC_SEGMENTS + 1);
-  float start = half_ == 0 ? 0.5 * LG_PI : -0.5 * LG_PI;
-  float angle = start + LG_PI * float(j - half_ * (LG_LTC_ARC_SEGMENTS + 1)) / float(LG_LTC_ARC_SEGMENTS);
-  // A round outline is one polygon around end 0.
-  angle = o.round_ ? 0.5 * LG_PI + 2.0 * LG_PI * float(j) / float(LG_LTC_OUTLINE_VERTICES) : angle;
-  half_ = o.round_ ? 0 : half_;
-  return half_ == 0 ? o.end0 + o.radius0 * (cos(angle) * o.axis0 + sin(angle) * o.side0)
-                    : o.end1 + o.radius1 * (cos(angle) * o.axis1 + sin(angle) * o.side1);
+// Corner (cos, sin) of end 0's (or end 1's) polygon, as area_light_ltc.cpp's ltc_outline_vertex.
+vec3 ltc_outline_point(LtcOutline o, bool end1, vec2 cs) {
+  return end1 ? o.end1 + o.radius1 * (cs.x * o.axis1 + cs.y * o.side1)
+              : o.end0 + o.radius0 * (cs.x * o.axis0 + cs.y * o.side0);
 }
 
+// The outline's corners in the C++ ltc_outline_vertex's order, each angle one constant step on from the
+// last by a rotation, not a cos and a sin per corner (with both outlines' angles taken, since
+// lavapipe runs both sides of round_'s selects, that was 20 sines and cosines a light). Every
+// outline starts at pi / 2; a capsule's end 1 starts at end 0's last angle, 3 pi / 2 = -pi / 2.
 float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
   LtcOutline o;
   if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0;
   LtcPolygon poly = ltc_polygon(n, v, entry);
-  vec3 previous = ltc_outline_vertex(o, LG_LTC_OUTLINE_VERTICES - 1);
-  for (int j = 0; j < LG_LTC_OUTLINE_VERTICES; ++j) {
-    vec3 next = ltc_outline_vertex(o, j);
+  const float arc_step = LG_PI / float(LG_LTC_ARC_SEGMENTS);
+  const float round_step = 2.0 * LG_PI / float(LG_LTC_OUTLINE_VERTICES);
+  vec2 step_ = o.round_ ? vec2(cos(round_step), sin(round_step)) : vec2(cos(arc_step), sin(arc_step));
+  // The last corner: a round outline's at pi / 2 - its step, a capsule's end 1's at pi / 2.
+  vec3 previous = ltc_outline_point(o, !o.round_, o.round_ ? step_.yx : vec2(0.0, 1.0));
+  vec2 cs = vec2(0.0, 1.0);
+  // A do-while: a `for` that lavapipe does not unroll runs one more body, every lane masked off.
+  int j = 0;
+  do {
+    vec3 next = ltc_outline_point(o, !o.round_ && j > LG_LTC_ARC_SEGMENTS, cs);
     ltc_add_edge(poly, previous, next);
     previous = next;
-  }
+    bool to_end1 = !o.round_ && j == LG_LTC_ARC_SEGMENTS;
+    cs = to_end1 ? cs : vec2(cs.x * step_.x - cs.y * step_.y, cs.y * step_.x + cs.x * step_.y);
+  } while (++j < LG_LTC_OUTLINE_VERTICES);
   return ltc_finish(poly);
 }
 

@@ -23,6 +23,14 @@ layout(std140, binding = 18) uniform Rects { RectLight rects[LG_MAX_LIGHTS]; };
 // lighting.deferred's area_specular: true for "ltc", false for "representative_point" (the
 // compiler drops the other); scene.forward_transparent keeps the default.
 layout(constant_id = 1) const bool area_specular_ltc = true;
+// lighting.deferred's area pass: whether the frame has lights of each kind, so that the compiler
+// drops an absent kind's loop. lavapipe (Mesa 22.3) runs a branch's body with the lanes that did
+// not take it masked off, whatever the lanes decide, so the `if` around an empty list's loop
+// still cost a whole light. scene.forward_transparent keeps the defaults (its lists are tested
+// at run time).
+layout(constant_id = 5) const bool area_has_spheres = true;
+layout(constant_id = 6) const bool area_has_tubes = true;
+layout(constant_id = 7) const bool area_has_rects = true;
 
 // True where every point of the light's bounding sphere (centre c, radius `bound`) lies below the
 // surface's horizon: neither its diffuse nor its specular (the GGX lobe is clipped there) can
@@ -44,61 +52,73 @@ vec3 area_specular(Surface s, RepresentativePoint rp, vec3 radiance, float area)
   return specular_term(s, rp.direction, s.alpha) * radiance * (area / d2 * rp.normalization);
 }
 
-// Radiance toward the eye from every sphere, tube and rectangle light.
+// Radiance toward the eye from every sphere, tube and rectangle light. The loops are do-whiles:
+// lavapipe leaves a loop only when no lane is left in it, so a `for`, whose exit test comes
+// first, runs its body once more after the last light with every lane masked off (one light
+// cost two); a do-while runs n bodies for n lights. A `continue` there goes to the test.
 vec3 area_radiance(Surface s) {
   vec3 diffuse_brdf = s.diffuse_color / LG_PI;
   vec3 r = reflection_dir(s);
   // alpha = roughness^2 above its floor, where the table's entries are alike.
   vec4 ltc = ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha));
   vec3 added = vec3(0.0);
-  for (uint i = 0; i < counts.z; ++i) {
-    SphereLight l = spheres[i];
-    vec3 c = l.center_radius.xyz;
-    float radius = l.center_radius.w;
-    if (below_horizon(s, c, radius)) continue;
-    vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, sphere_extent(radius, normalize(s.position - c)));
-    added += diffuse_brdf * radiance * sphere_irradiance(c, radius, s.position, s.normal);
-    if (area_specular_ltc) {
-      added += radiance * s.specular_albedo * ltc_sphere_specular(c, radius, s.position, s.normal, s.view, ltc);
-      continue;
-    }
-    RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
-    added += area_specular(s, rp, radiance, LG_PI * radius * radius);
+  if (area_has_spheres && counts.z > 0u) {
+    uint i = 0u;
+    do {
+      SphereLight l = spheres[i];
+      vec3 c = l.center_radius.xyz;
+      float radius = l.center_radius.w;
+      if (below_horizon(s, c, radius)) continue;
+      vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, sphere_extent(radius, normalize(s.position - c)));
+      added += diffuse_brdf * radiance * sphere_irradiance(c, radius, s.position, s.normal);
+      if (area_specular_ltc) {
+        added += radiance * s.specular_albedo * ltc_sphere_specular(c, radius, s.position, s.normal, s.view, ltc);
+        continue;
+      }
+      RepresentativePoint rp = sphere_specular_point(c, radius, s.position, r, s.alpha);
+      added += area_specular(s, rp, radiance, LG_PI * radius * radius);
+    } while (++i < counts.z);
   }
-  for (uint i = 0; i < counts.w; ++i) {
-    TubeLight l = tubes[i];
-    vec3 a = l.end0_radius.xyz, b = l.end1.xyz;
-    float radius = l.end0_radius.w;
-    vec3 c = 0.5 * (a + b);
-    if (below_horizon(s, c, 0.5 * length(b - a) + radius)) continue;
-    vec3 radiance = l.radiance.rgb * area_visibility(s, l.end1.w, c, tube_extent(a, b, radius, normalize(s.position - c)));
-    added += diffuse_brdf * radiance * tube_irradiance(a, b, radius, s.position, s.normal);
-    if (area_specular_ltc) {
-      added += radiance * s.specular_albedo * ltc_tube_specular(a, b, radius, s.position, s.normal, s.view, ltc);
-      continue;
-    }
-    RepresentativePoint rp = tube_specular_point(a, b, radius, s.position, r, s.alpha);
-    // Seen from the side a capsule shows its caps' disc and the cylinder's length x diameter.
-    vec3 axis = b - a;
-    float len = length(axis);
-    float sin_side = len > 0.0 ? length(cross(axis / len, rp.direction)) : 0.0;
-    added += area_specular(s, rp, radiance, LG_PI * radius * radius + 2.0 * radius * len * sin_side);
+  if (area_has_tubes && counts.w > 0u) {
+    uint i = 0u;
+    do {
+      TubeLight l = tubes[i];
+      vec3 a = l.end0_radius.xyz, b = l.end1.xyz;
+      float radius = l.end0_radius.w;
+      vec3 c = 0.5 * (a + b);
+      if (below_horizon(s, c, 0.5 * length(b - a) + radius)) continue;
+      vec3 radiance = l.radiance.rgb * area_visibility(s, l.end1.w, c, tube_extent(a, b, radius, normalize(s.position - c)));
+      added += diffuse_brdf * radiance * tube_irradiance(a, b, radius, s.position, s.normal);
+      if (area_specular_ltc) {
+        added += radiance * s.specular_albedo * ltc_tube_specular(a, b, radius, s.position, s.normal, s.view, ltc);
+        continue;
+      }
+      RepresentativePoint rp = tube_specular_point(a, b, radius, s.position, r, s.alpha);
+      // Seen from the side a capsule shows its caps' disc and the cylinder's length x diameter.
+      vec3 axis = b - a;
+      float len = length(axis);
+      float sin_side = len > 0.0 ? length(cross(axis / len, rp.direction)) : 0.0;
+      added += area_specular(s, rp, radiance, LG_PI * radius * radius + 2.0 * radius * len * sin_side);
+    } while (++i < counts.w);
   }
-  for (uint i = 0; i < counts2.x; ++i) {
-    RectLight l = rects[i];
-    vec3 c = l.center_two_sided.xyz, hx = l.half_x.xyz, hy = l.half_y.xyz;
-    bool two_sided = l.center_two_sided.w > 0.0;
-    if (below_horizon(s, c, length(hx + hy))) continue;
-    vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, rect_extent(hx, hy, normalize(s.position - c)));
-    added += diffuse_brdf * radiance * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
-    if (area_specular_ltc) {
-      added += radiance * s.specular_albedo * ltc_rect_specular(c, hx, hy, two_sided, s.position, s.normal, s.view, ltc);
-      continue;
-    }
-    RepresentativePoint rp = rect_specular_point(c, hx, hy, two_sided, s.position, r, s.alpha);
-    vec3 normal = cross(hx, hy);
-    float facing = abs(dot(normalize(normal), rp.direction));
-    added += area_specular(s, rp, radiance, 4.0 * length(normal) * facing);
+  if (area_has_rects && counts2.x > 0u) {
+    uint i = 0u;
+    do {
+      RectLight l = rects[i];
+      vec3 c = l.center_two_sided.xyz, hx = l.half_x.xyz, hy = l.half_y.xyz;
+      bool two_sided = l.center_two_sided.w > 0.0;
+      if (below_horizon(s, c, length(hx + hy))) continue;
+      vec3 radiance = l.radiance.rgb * area_visibility(s, l.radiance.w, c, rect_extent(hx, hy, normalize(s.position - c)));
+      added += diffuse_brdf * radiance * rect_irradiance(c, hx, hy, two_sided, s.position, s.normal);
+      if (area_specular_ltc) {
+        added += radiance * s.specular_albedo * ltc_rect_specular(c, hx, hy, two_sided, s.position, s.normal, s.view, ltc);
+        continue;
+      }
+      RepresentativePoint rp = rect_specular_point(c, hx, hy, two_sided, s.position, r, s.alpha);
+      vec3 normal = cross(hx, hy);
+      float facing = abs(dot(normalize(normal), rp.direction));
+      added += area_specular(s, rp, radiance, 4.0 * length(normal) * facing);
+    } while (++i < counts2.x);
   }
   return added;
 }

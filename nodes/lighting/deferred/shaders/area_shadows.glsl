@@ -104,8 +104,13 @@ float area_visibility(Surface s, float first, vec3 center, LightExtent extent) {
   // (z <= d / (1 + r), r the tap's reach in the disk or square). Else a wall near the light
   // but beside the receiver's line of sight would widen the penumbra, and past a corner the
   // filter would see the wall's far side, which lies in the receiver's plane, as lit.
+  //
+  // Both loops are do-whiles (n >= 1): lavapipe leaves a loop only when no lane is left in it,
+  // so a `for` ran one more tap after the last with every lane masked off. Lanes that return
+  // before the filter leave its loop, which ends at once where all of them did.
   float blocker_sum = 0.0, blockers = 0.0, blocker;
-  for (uint i = 0; i <= n; ++i) {
+  uint i = 0u;
+  do {
     vec2 uv = i < n ? extent_tap(i, n, extent.square) : vec2(0.0);
     float reach = extent.square ? max(abs(uv.x), abs(uv.y)) : length(uv);
     if (area_shadow_tap(first, center, D, w, s, texel, (uv.x * extent.x + uv.y * extent.y), blocker) == 2 &&
@@ -113,18 +118,19 @@ float area_visibility(Surface s, float first, vec3 center, LightExtent extent) {
       blocker_sum += blocker;
       blockers += 1.0;
     }
-  }
+  } while (++i <= n);
   if (blockers == 0.0) return 1.0;
   float z = blocker_sum / blockers;
   float k = max(d - z, 0.0) / max(z, local_shadow.y);
 
   float lit = 0.0, taps = 0.0;
-  for (uint i = 0; i < n; ++i) {
+  i = 0u;
+  do {
     vec2 uv = extent_tap(i, n, extent.square);
     int tap = area_shadow_tap(first, center, D, w, s, texel, k * (uv.x * extent.x + uv.y * extent.y), blocker);
     taps += tap > 0 ? 1.0 : 0.0;
     lit += tap == 1 ? 1.0 : 0.0;
-  }
+  } while (++i < n);
   return taps > 0.0 ? lit / taps : 1.0;
 }
 

@@ -13,7 +13,11 @@
 layout(constant_id = 0) const bool local_shadows_drawn = true;
 
 layout(binding = 14) uniform sampler2D local_shadow_atlas;
-layout(std430, binding = 15) readonly buffer ShadowViews { ShadowView views[]; };
+// Views a frame draws at most: six for each of the 16 lights the schema's shadow_budget allows
+// (light_buffers.h's kMaxShadowViews). A uniform block, not a storage buffer: lavapipe loads a
+// storage buffer one lane at a time, and a soft shadow reads a view for each of its taps.
+const int LG_MAX_SHADOW_VIEWS = 96;
+layout(std140, binding = 15) uniform ShadowViews { ShadowView views[LG_MAX_SHADOW_VIEWS]; };
 
 // The view of a light (first view `first`, `count` 1 or 6) that sees direction `d` from it:
 // for a cube the face of d's major axis, in the order +X, -X, +Y, -Y, +Z, -Z.
