@@ -1,5 +1,6 @@
 // Rooms of boxes for the one-bounce nodes' tests (gi.lpv, gi.voxel): one grey diffuse material
-// added to `world`, and a function that adds a box of that material of `size` centred at `at`.
+// added to `world`, and a function that adds a box of that material of `size` centred at `at`;
+// and a closed room of such boxes.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -19,6 +20,19 @@ inline auto slab_adder(World& world, float albedo) {
     world.add(e, MeshRenderer{world.add_mesh(make_box(size)), material});
     world.add(e, Transform{}).position = at;
   };
+}
+
+// A closed room, 4 x 3 x 4 m inside with its floor at y = 0, of slabs `thickness` thick: nothing
+// outside it can light its inside.
+inline void add_closed_room(World& world, float albedo, float thickness) {
+  const auto slab = slab_adder(world, albedo);
+  const float t = thickness;
+  slab({4 + 2 * t, t, 4 + 2 * t}, {0, -t / 2, 0});
+  slab({4 + 2 * t, t, 4 + 2 * t}, {0, 3 + t / 2, 0});
+  slab({t, 3, 4}, {-2 - t / 2, 1.5f, 0});
+  slab({t, 3, 4}, {2 + t / 2, 1.5f, 0});
+  slab({4, 3, t}, {0, 1.5f, -2 - t / 2});
+  slab({4, 3, t}, {0, 1.5f, 2 + t / 2});
 }
 
 }  // namespace lg::test

@@ -338,14 +338,7 @@ TEST(Voxel, SpecularConeStaysFiniteAtTheEndsOfRoughnessAndAtGrazingAngles) {
 // radiance (fails without the facing image).
 TEST(Voxel, ClosedRoomLitFromOutsideLeaksBelowItsBound) {
   World world;
-  const auto slab = slab_adder(world, kWhite);
-  const float t = 0.1f;
-  slab({4 + 2 * t, t, 4 + 2 * t}, {0, -t / 2, 0});
-  slab({4 + 2 * t, t, 4 + 2 * t}, {0, 3 + t / 2, 0});
-  slab({t, 3, 4}, {-2 - t / 2, 1.5f, 0});
-  slab({t, 3, 4}, {2 + t / 2, 1.5f, 0});
-  slab({4, 3, t}, {0, 1.5f, -2 - t / 2});
-  slab({4, 3, t}, {0, 1.5f, 2 + t / 2});
+  add_closed_room(world, kWhite, 0.1f);
   const glm::vec3 sun{-0.1f, -1.0f, -0.1f};
   add_camera_and_sun(world, {0.0f, 2.5f, 1.8f}, {0.0f, -0.8f, -1.0f}, sun, 10.0f);
   const double roof = kWhite * 10.0 * -sun.y / glm::length(sun) / kPi;
@@ -396,14 +389,7 @@ TEST(Voxel, SkyLightsTheWallItReaches) {
 // ceiling, 1.1% with levels 0-1, 2.9% with all); bound 1%.
 TEST(Voxel, SkyLeavesTheInsideOfAClosedRoomDark) {
   World room;
-  const auto slab = slab_adder(room, kWhite);
-  const float t = 0.5f;
-  slab({4 + 2 * t, t, 4 + 2 * t}, {0, -t / 2, 0});
-  slab({4 + 2 * t, t, 4 + 2 * t}, {0, 3 + t / 2, 0});
-  slab({t, 3, 4}, {-2 - t / 2, 1.5f, 0});
-  slab({t, 3, 4}, {2 + t / 2, 1.5f, 0});
-  slab({4, 3, t}, {0, 1.5f, -2 - t / 2});
-  slab({4, 3, t}, {0, 1.5f, 2 + t / 2});
+  add_closed_room(room, kWhite, 0.5f);
   add_camera_and_sun(room, {0.0f, 2.5f, 1.8f}, {0.0f, -0.8f, -1.0f}, {-0.1f, -1.0f, -0.1f}, 0.0f);
   room.add(room.create("environment"), EnvironmentLight{});
   auto renderer = make_renderer(voxel_sky_graph());
