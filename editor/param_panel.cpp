@@ -5,6 +5,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QScrollArea>
 #include <QStringList>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -36,7 +37,7 @@ static QString tooltip_of(const ParamSpec& spec) {
 }
 
 ParamPanel::ParamPanel(const Registry& registry, QWidget* parent)
-    : QWidget(parent), registry_(registry), title_(new QLabel(this)), doc_(new QLabel(this)) {
+    : QWidget(parent), registry_(registry), title_(new QLabel(this)), doc_(new QLabel), body_(new QWidget) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(8, 8, 8, 8);
   QFont bold = title_->font();
@@ -46,9 +47,17 @@ ParamPanel::ParamPanel(const Registry& registry, QWidget* parent)
   title_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   doc_->setWordWrap(true);
   doc_->setForegroundRole(QPalette::PlaceholderText);
+  auto* body = new QVBoxLayout(body_);
+  body->setContentsMargins(0, 0, 0, 0);
+  body->addWidget(doc_);
+  body->addStretch(1);
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setWidget(body_);
   layout->addWidget(title_);
-  layout->addWidget(doc_);
-  layout->addStretch(1);
+  layout->addWidget(scroll, 1);
   show_node(Graph(), {});
 }
 
@@ -100,9 +109,9 @@ void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
   doc_->setText(schema ? text_of(schema->doc) : tr("Unknown node type: no parameters to show."));
   if (!schema) return;
 
-  form_host_ = new QWidget(this);
+  form_host_ = new QWidget(body_);
   form_ = new QFormLayout(form_host_);
-  form_->setContentsMargins(0, 8, 0, 0);
+  form_->setContentsMargins(0, 0, 0, 8);
   form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
   if (!schema->presets.empty()) {
     presets_ = new QComboBox(form_host_);
@@ -143,7 +152,7 @@ void ParamPanel::rebuild(const Graph& graph, const GraphNode* node) {
             [this, param](const JsonValue& v) { emit param_edited(node_id_, param, v); });
     connect(reset, &QToolButton::clicked, this, [this, param] { emit param_edited(node_id_, param, JsonValue()); });
   }
-  static_cast<QVBoxLayout*>(layout())->insertWidget(2, form_host_);
+  static_cast<QVBoxLayout*>(body_->layout())->insertWidget(0, form_host_);
 }
 
 }  // namespace lg::editor

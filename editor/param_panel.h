@@ -46,6 +46,9 @@ class ParamPanel : public QWidget {
   std::string node_id_, node_type_;
   QLabel* title_;
   QLabel* doc_;
+  // Scrolled below the title: the params, then the node's description (long ones never squash
+  // the params' rows, and the params come first).
+  QWidget* body_;
   QWidget* form_host_ = nullptr;
   QFormLayout* form_ = nullptr;
   QComboBox* presets_ = nullptr;
