@@ -1,4 +1,4 @@
-// libFuzzer harness: an environment file (HDR, or EXR when the input starts with EXR's magic)
+// libFuzzer harness: an environment file (HDR, EXR or PNG: ImageReader follows the first bytes)
 // read as env.load and the CPU tracers read it: ImageReader, every texel, sanitize_equirect(),
 // then the path tracer's importance-sampled EnvironmentMap, whose samples must be finite.
 // Images over kMaxFuzzPixels stop after the header: the reader accepts up to 8192 x 8192, and

@@ -3,6 +3,7 @@
 // probe bake of two volumes (whole and a chunk), a reference part file and an EXR environment.
 // scripts/fuzz runs it into the seed corpora; usage: lumagraph-fuzz-seeds OUT_DIR (one folder
 // per harness is made in it).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -119,6 +120,8 @@ void write_environments(const fs::path& dir) {
   save_image((dir / "ramp.exr").string(), width, height, rgba, {.compress = false, .full_float = true});
   save_image((dir / "ramp-zip.exr").string(), width, height, rgba);
   save_image((dir / "ramp.hdr").string(), width, height, rgba);
+  for (float& v : rgba) v = std::min(v / 8.0f, 1.0f);  // PNG holds [0, 1]
+  save_image((dir / "ramp.png").string(), width, height, rgba);
 }
 
 }  // namespace

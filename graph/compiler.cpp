@@ -75,6 +75,7 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
     return assemble(graph, resolved, std::move(states), std::move(*lowered), *order_nodes, order, lives,
                     std::move(memory), std::move(barriers), {options.scene.name, options.frame, options.roots});
   });
+  result.plan->keeps_every_output = options.keep_optional_outputs;
   return result;
 }
 

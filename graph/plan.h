@@ -81,6 +81,9 @@ struct Plan {
   // The pixel grid the camera is jittered on each frame (a node whose schema has
   // "camera_jitter" runs, e.g. post.taa: the extent of the input it names); 0 x 0: no jitter.
   std::array<uint32_t, 2> jitter_grid{0, 0};
+  // Compiled with CompileOptions::keep_optional_outputs (a dump): every output is wanted, so a
+  // node that skips work for outputs nothing reads does not skip it.
+  bool keeps_every_output = false;
 
   const std::string& slot_of(const PlanAccess& a) const { return slot_names[a.slot]; }
   std::span<const PlanAccess> accesses_of(const PlanPass& p) const { return {accesses.data() + p.first_access, p.access_count}; }

@@ -34,7 +34,11 @@ std::string encode_vti(const VtiImage& image) {
   const double spacing[3] = {image.spacing.x, image.spacing.y, image.spacing.z};
   std::string out;
   out += "<?xml version=\"1.0\"?>\n";
-  if (!image.comment.empty()) out += "<!-- " + image.comment + " -->\n";
+  if (!image.comment.empty()) {
+    std::string comment = image.comment;  // XML comments may not hold "--" (a node id may)
+    for (size_t at; (at = comment.find("--")) != std::string::npos;) comment.replace(at, 2, "- -");
+    out += "<!-- " + comment + " -->\n";
+  }
   out += "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
   out += "  <ImageData WholeExtent=\"" + extent + "\" Origin=\"" + format_numbers(origin) + "\" Spacing=\"" +
          format_numbers(spacing) + "\" Direction=\"" + format_numbers(direction) + "\">\n";

@@ -20,7 +20,7 @@ struct VtiArray {
 };
 
 struct VtiImage {
-  std::string comment;  // one line, written as an XML comment (no "--")
+  std::string comment;  // one line, written as an XML comment (each "--" in it as "- -")
   std::array<uint32_t, 3> dims{1, 1, 1};
   glm::dvec3 origin{0.0}, spacing{1.0};
   glm::dmat3 direction{1.0};  // columns: the unit grid axes in world space

@@ -1,5 +1,8 @@
-// OpenEXR through its C++ library. The header was checked before (exr_header_check.h); the
-// pixels go straight into the caller's floats, OpenEXR converting from half or uint.
+// OpenEXR through its C++ library, after image_file.cpp checked the header (exr_header_check.h);
+// the pixels go straight into the caller's floats, OpenEXR converting from half or uint. The
+// channels R, G, B and A are read (missing ones 0, alpha 1), or Y as grey where none of R, G and
+// B is there (a luminance-chroma file reads as its luminance); a layered file whose channels
+// are all named "layer.R" and so on is refused naming the channels it lacks.
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>

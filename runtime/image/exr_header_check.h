@@ -1,4 +1,4 @@
-// A check of an OpenEXR file's header before OpenImageIO opens it: every attribute's declared
+// A check of an OpenEXR file's header before OpenEXR's library opens it: every attribute's declared
 // size must fit in the file, names must be of a length EXR allows, and the standard types must
 // declare the size their content has (channel lists included). OpenEXR 3.1 allocates and reads
 // whatever size a header declares, and reads fixed-size values and channel lists by content, so

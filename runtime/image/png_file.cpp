@@ -70,6 +70,10 @@ class PngReader final : public FormatReader {
     png_set_interlace_handling(png);
     png_read_update_info(png, info);
     width = w, height = h, bytes_ = sixteen ? 2 : 1;
+    if (png_get_rowbytes(png, info) != size_t(w) * 4 * bytes_) {  // the rows read_rgba() sizes
+      std::snprintf(message_.text, sizeof message_.text, "its rows do not expand to RGBA");
+      return false;
+    }
     return true;
   }
 

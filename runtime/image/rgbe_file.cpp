@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -19,6 +21,25 @@ namespace {
 
 constexpr size_t kMaxHeaderLine = 4096;
 constexpr int kMaxHeaderLines = 1024;
+
+struct Resolution {
+  uint32_t width, height;
+  bool bottom_up;  // "+Y": the first stored scan line is the bottom one
+};
+
+// "-Y height +X width" or "+Y height +X width", sizes 1 to 2^31 - 1; anything else: nullopt.
+std::optional<Resolution> parse_resolution(const std::string& line) {
+  std::istringstream in(line);
+  std::string y, h, x, w, rest;
+  if (!(in >> y >> h >> x >> w) || (in >> rest) || (y != "-Y" && y != "+Y") || x != "+X") return std::nullopt;
+  const auto size = [](const std::string& digits) -> uint64_t {
+    if (digits.empty() || digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+    return std::stoull(digits);
+  };
+  const uint64_t height = size(h), width = size(w);
+  if (height == 0 || width == 0 || height > 0x7fffffff || width > 0x7fffffff) return std::nullopt;
+  return Resolution{uint32_t(width), uint32_t(height), y == "+Y"};
+}
 
 class RgbeReader final : public FormatReader {
  public:
@@ -34,20 +55,16 @@ class RgbeReader final : public FormatReader {
         fail("the header's '" + line + "' is not supported; expected FORMAT=32-bit_rle_rgbe");
     }
     line = read_line();
-    char y_sign = 0, x_sign = 0, y_axis = 0, x_axis = 0, rest = 0;
-    long h = 0, w = 0;
-    if (std::sscanf(line.c_str(), "%c%c %ld %c%c %ld %c", &y_sign, &y_axis, &h, &x_sign, &x_axis, &w, &rest) != 6 ||
-        y_axis != 'Y' || x_axis != 'X' || (y_sign != '-' && y_sign != '+') || x_sign != '+' || h <= 0 || w <= 0 ||
-        h > 0x7fffffffL || w > 0x7fffffffL)
-      fail("the resolution line '" + line + "' is not '-Y height +X width' (or '+Y height +X width')");
-    width = uint32_t(w), height = uint32_t(h);
-    bottom_up_ = y_sign == '+';
+    const std::optional<Resolution> size = parse_resolution(line);
+    if (!size) fail("the resolution line '" + line + "' is not '-Y height +X width' (or '+Y height +X width')");
+    width = size->width, height = size->height;
+    bottom_up_ = size->bottom_up;
   }
 
   void read_rgba(std::span<float> rgba) override {
     std::vector<uint8_t> scan(size_t(width) * 4);
     for (uint32_t y = 0; y < height; ++y) {
-      read_scan_line(scan);
+      read_scan_line(scan, y);
       float* out = rgba.data() + size_t(bottom_up_ ? height - 1 - y : y) * width * 4;
       for (uint32_t x = 0; x < width; ++x) {
         const uint8_t* p = &scan[4 * size_t(x)];
@@ -60,8 +77,12 @@ class RgbeReader final : public FormatReader {
 
  private:
   [[noreturn]] void fail(const std::string& why) const { throw ImageFileError(path_ + ": error: " + why); }
-  [[noreturn]] void truncated() const {
-    fail("the pixels cannot be read (truncated or corrupt?): the file ends inside the pixels");
+  // Where a scan line failed, in the file's order (the first stored is line 0).
+  std::string where(uint32_t line) const {
+    return "scan line " + std::to_string(line) + " of " + std::to_string(height);
+  }
+  [[noreturn]] void truncated(uint32_t line) const {
+    fail("the pixels cannot be read (truncated or corrupt?): the file ends inside " + where(line));
   }
 
   std::string read_line() {
@@ -71,38 +92,41 @@ class RgbeReader final : public FormatReader {
       if (line.size() == kMaxHeaderLine) fail("a header line is longer than " + std::to_string(kMaxHeaderLine));
       line += char(c);
     }
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a header written with CR LF
     return line;
   }
 
-  uint8_t byte() {
+  uint8_t byte(uint32_t line) {
     const int c = std::fgetc(file_.handle);
-    if (c == EOF) truncated();
+    if (c == EOF) truncated(line);
     return uint8_t(c);
   }
 
-  void read_scan_line(std::vector<uint8_t>& scan) {
+  void read_scan_line(std::vector<uint8_t>& scan, uint32_t line) {
     uint8_t start[4];
-    if (std::fread(start, 1, 4, file_.handle) != 4) truncated();
+    if (std::fread(start, 1, 4, file_.handle) != 4) truncated(line);
     const bool encoded = width >= 8 && width <= 0x7fff && start[0] == 2 && start[1] == 2 && !(start[2] & 0x80);
     if (!encoded) {
       std::memcpy(scan.data(), start, 4);
-      if (std::fread(scan.data() + 4, 1, scan.size() - 4, file_.handle) != scan.size() - 4) truncated();
+      if (std::fread(scan.data() + 4, 1, scan.size() - 4, file_.handle) != scan.size() - 4) truncated(line);
       return;
     }
     if (((uint32_t(start[2]) << 8) | start[3]) != width)
-      fail("a scan line's run-length header gives width " + std::to_string((start[2] << 8) | start[3]) +
+      fail(where(line) + ": its run-length header gives width " + std::to_string((start[2] << 8) | start[3]) +
            ", not the image's " + std::to_string(width));
     for (int c = 0; c < 4; ++c)
       for (uint32_t x = 0; x < width;) {
-        const uint32_t count = byte();
+        const uint32_t count = byte(line);
         const bool run = count > 128;
         const uint32_t n = run ? count - 128 : count;
-        if (n == 0 || x + n > width) fail("a scan line's run of " + std::to_string(n) + " does not fit its width");
+        if (n == 0 || x + n > width)
+          fail(where(line) + ": a run of " + std::to_string(n) + " at pixel " + std::to_string(x) + " of component " +
+               std::to_string(c) + " does not fit its width " + std::to_string(width));
         if (run) {
-          const uint8_t value = byte();
+          const uint8_t value = byte(line);
           for (uint32_t i = 0; i < n; ++i) scan[4 * size_t(x + i) + c] = value;
         } else {
-          for (uint32_t i = 0; i < n; ++i) scan[4 * size_t(x + i) + c] = byte();
+          for (uint32_t i = 0; i < n; ++i) scan[4 * size_t(x + i) + c] = byte(line);
         }
         x += n;
       }

@@ -13,11 +13,34 @@
 
 #include "nodes/occlusion/bake/bake_file.h"
 #include "nodes/occlusion/bake/bake_outputs.h"
+#include "nodes/raytrace/vti_file.h"
 #include "runtime/scene/mesh_generators.h"
 #include "tests/occlusion/ray_test_scenes.h"
 
 namespace lg {
 namespace {
+
+// A comment from a node id such as "a--b" (ids may hold dashes): VTK refuses an XML comment that
+// holds "--", so the file must not.
+TEST(VtiFile, ACommentWithDoubleDashesStillMakesAFileVtkReads) {
+  VtiImage image;
+  image.comment = "dumped from node a--b---c";
+  image.dims = {2, 1, 1};
+  const std::vector<float> values = {1.0f, 2.0f};
+  image.arrays.push_back({"v", 1, values});
+  const std::string text = encode_vti(image);
+  EXPECT_EQ(text.find("--", text.find("<!--") + 4), text.find("-->")) << text.substr(0, 200);
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("lumagraph-vti-comment-" + std::to_string(::getpid()) + ".vti");
+  std::ofstream(path, std::ios::binary) << text;
+  auto reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  std::filesystem::remove(path);
+  int dims[3] = {0, 0, 0};
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 2);
+}
 
 TEST(VolumeBakeFile, VtkReadsTheGridAndEveryArray) {
   const WorldMesh mesh = make_world_mesh(test::scene_of(

@@ -144,11 +144,12 @@ TEST(ImageFormats, BrokenRadianceFilesAreRefusedNamingTheFileAndWhy) {
                : message;
   };
   EXPECT_EQ(error_of("cut.hdr", good.substr(0, good.size() - 10)),
-            "the pixels cannot be read (truncated or corrupt?): the file ends inside the pixels");
+            "the pixels cannot be read (truncated or corrupt?): the file ends inside scan line 3 of 4");
   const size_t first_run = good.find("+X 16\n") + 6 + 4;  // after the first scan line's 2, 2, 0, 16
   std::string long_run = good;
   long_run[first_run] = char(120);  // 120 literal bytes in a 16-pixel line
-  EXPECT_EQ(error_of("run.hdr", long_run), "a scan line's run of 120 does not fit its width");
+  EXPECT_EQ(error_of("run.hdr", long_run),
+            "scan line 0 of 4: a run of 120 at pixel 0 of component 0 does not fit its width 16");
   std::string xyz = good;
   xyz.replace(xyz.find("rle_rgbe"), 8, "rle_xyze");
   EXPECT_EQ(error_of("xyz.hdr", xyz),
@@ -157,6 +158,13 @@ TEST(ImageFormats, BrokenRadianceFilesAreRefusedNamingTheFileAndWhy) {
             "the resolution line '+X 4 -Y 2' is not '-Y height +X width' (or '+Y height +X width')");
   EXPECT_EQ(error_of("headless.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n"),
             "the header ends before the resolution line");
+  EXPECT_EQ(error_of("huge.hdr", "#?RADIANCE\n\n-Y 99999999999999999999 +X 4\n"),
+            "the resolution line '-Y 99999999999999999999 +X 4' is not '-Y height +X width' (or '+Y height +X width')");
+  const size_t pixels = good.find("+X 16\n") + 6;  // a header written with CR LF: the same image
+  std::string crlf;
+  for (char c : good.substr(0, pixels)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  write_bytes(folder.file("crlf.hdr"), crlf + good.substr(pixels));
+  EXPECT_EQ(load_image(folder.file("crlf.hdr")).rgba, load_image(folder.file("good.hdr")).rgba);
 }
 
 }  // namespace

@@ -71,9 +71,10 @@ bool static_resource(const Plan& plan, const PlanAccess& a) {
 }
 
 // Whether another node's pass, or the file's outputs, read what this node writes to its output
-// `slot` (an output nothing reads need not be computed).
+// `slot` (an output nothing reads need not be computed), or the plan keeps every output (a dump).
 bool output_read(PassContext& ctx, std::string_view slot) {
   const Plan& plan = ctx.plan();
+  if (plan.keeps_every_output) return true;
   const int self = ctx.pass().node;
   int resource = -1;
   for (const PlanPass& p : plan.passes)
