@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 namespace lg::bench {
@@ -97,6 +98,15 @@ std::vector<std::string> split_commas(const std::string& text) {
     start = end + 1;
   }
   return out;
+}
+
+bool example_worlds_exist(const char* tool, const std::string& source, const std::string& worlds) {
+  for (const std::string& name : split_commas(worlds))
+    if (!std::filesystem::exists(source + "/examples/worlds/" + name + ".json")) {
+      std::fprintf(stderr, "%s: --worlds: no world '%s' in examples/worlds/\n", tool, name.c_str());
+      return false;
+    }
+  return true;
 }
 
 }  // namespace lg::bench

@@ -44,4 +44,8 @@ class BenchFlags {
 // "a,b,c" -> {"a", "b", "c"}; "" -> {""}.
 std::vector<std::string> split_commas(const std::string& text);
 
+// Whether every name of the comma list `worlds` is a file examples/worlds/NAME.json under
+// `source`; else prints "TOOL: --worlds: no world 'NAME' in examples/worlds/" and answers false.
+bool example_worlds_exist(const char* tool, const std::string& source, const std::string& worlds);
+
 }  // namespace lg::bench

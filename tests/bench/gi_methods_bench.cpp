@@ -368,10 +368,6 @@ int main(int argc, char** argv) {
   flags.count("--probe-settle-frames", o.probe_settle_frames);
   flags.text("--worlds", o.worlds);
   if (const auto status = flags.parse(argc, argv)) return *status;
-  for (const std::string& name : lg::bench::split_commas(o.worlds))
-    if (!std::filesystem::exists(lg::bench::kSource + "/examples/worlds/" + name + ".json")) {
-      std::fprintf(stderr, "lumagraph-bench-gi-methods: --worlds: no world '%s' in examples/worlds/\n", name.c_str());
-      return 2;
-    }
+  if (!lg::bench::example_worlds_exist("lumagraph-bench-gi-methods", lg::bench::kSource, o.worlds)) return 2;
   return lg::bench::run(o);
 }

@@ -304,11 +304,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "lumagraph-bench-lpv: --methods: '%s' is neither lpv nor voxel\n", name.c_str());
       return 2;
     }
-  for (const std::string& name : lg::bench::split_commas(o.worlds))
-    if (!std::filesystem::exists(std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/worlds/" + name + ".json")) {
-      std::fprintf(stderr, "lumagraph-bench-lpv: --worlds: no world '%s' in examples/worlds/\n", name.c_str());
-      return 2;
-    }
+  if (!lg::bench::example_worlds_exist("lumagraph-bench-lpv", LUMAGRAPH_SOURCE_DIR, o.worlds)) return 2;
   if (!lpv.empty()) {
     o.lpv.clear();
     for (const std::string& setting : lg::bench::split_commas(lpv)) {
