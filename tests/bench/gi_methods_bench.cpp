@@ -70,6 +70,7 @@ struct Options {
   uint32_t spp = 512, bounces = 16, frames = 4;
   uint32_t settle_frames = 4, probe_settle_frames = 48;  // rendered after the turn
   std::string worlds = "cornell-box,two-rooms-sun,gallery";
+  std::string methods = "none,volume,lpv,voxel";  // which rows to run (the references are traced either way)
 };
 
 // One method at one quality: the example graph it runs in, its node's id there (its passes'
@@ -278,7 +279,9 @@ int run(const Options& o) {
                          [&] { return trace_reference(scene, ro); });
     const bool rooms = name == "two-rooms-sun";
 
+    const std::vector<std::string> chosen = split_commas(o.methods);
     for (const Method& m : all) {
+      if (std::find(chosen.begin(), chosen.end(), m.name) == chosen.end()) continue;
       Row row;
       row.world = name, row.method = &m;
       const World w = with_probe_density(world, m.probe_density);
@@ -356,6 +359,7 @@ int main(int argc, char** argv) {
       "usage: lumagraph-bench-gi-methods [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--frame-size WxH]\n"
       "                                  [--spp N] [--bounces N] [--frames N] [--settle-frames N]\n"
       "                                  [--probe-settle-frames N] [--worlds cornell-box,two-rooms-sun,gallery]\n"
+      "                                  [--methods none,volume,lpv,voxel]\n"
       "  --frames 0: no timing\n");
   flags.text("--results-dir", o.results_dir);
   flags.text("--cache-dir", o.cache_dir);
@@ -367,7 +371,14 @@ int main(int argc, char** argv) {
   flags.count("--settle-frames", o.settle_frames);
   flags.count("--probe-settle-frames", o.probe_settle_frames);
   flags.text("--worlds", o.worlds);
+  flags.text("--methods", o.methods);
   if (const auto status = flags.parse(argc, argv)) return *status;
   if (!lg::bench::example_worlds_exist("lumagraph-bench-gi-methods", lg::bench::kSource, o.worlds)) return 2;
+  for (const std::string& name : lg::bench::split_commas(o.methods))
+    if (name != "none" && name != "volume" && name != "lpv" && name != "voxel") {
+      std::fprintf(stderr, "lumagraph-bench-gi-methods: --methods: unknown method '%s' (expected none, volume, lpv or voxel)\n",
+                   name.c_str());
+      return 2;
+    }
   return lg::bench::run(o);
 }
