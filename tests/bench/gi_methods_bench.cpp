@@ -40,6 +40,7 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "graph/json_writer.h"
 #include "nodes/common/node_params.h"
 #include "nodes/env/common/sh_basis.h"
 #include "nodes/gi/path_tracer/path_transport.h"
@@ -126,6 +127,16 @@ Graph method_graph(const Method& m, const std::vector<std::pair<std::string, Jso
   if (m.name != "none") graph->outputs.push_back({{m.name, "irradiance"}, {}});
   graph->outputs.push_back({{"sh", "sh"}, {}});
   return std::move(*graph);
+}
+
+// What of the graphs the reference depends on besides the world: the environment node
+// plan_environment picks, with its params (an edit to a GI node elsewhere in the graph keeps the
+// cached reference).
+std::string environment_key(const Plan& plan) {
+  for (const PlanNode& node : plan.nodes)
+    if (node.state == NodeState::Kind::active && (node.type == "env.load" || node.type == "env.sky"))
+      return " " + node.type + "=" + write_json_compact(node.params);
+  return " no-environment";
 }
 
 World with_probe_density(World world, double density) {
@@ -275,7 +286,7 @@ int run(const Options& o) {
                   o.bounces, int(ro.cull_backfaces));
     std::snprintf(tag, sizeof tag, "%ux%u-%u-b%u", o.width, o.height, o.spp, o.bounces);
     const ReferenceImage reference =
-        cached_reference({o.cache_dir, name, {world_file, kSource + "/examples/gi-lpv.json"}, options, tag},
+        cached_reference({o.cache_dir, name, {world_file}, options + environment_key(base.plan()), tag},
                          [&] { return trace_reference(scene, ro); });
     const bool rooms = name == "two-rooms-sun";
 
