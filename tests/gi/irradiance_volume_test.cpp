@@ -202,8 +202,9 @@ TEST(IrradianceVolume, HalfResolutionUpsampleStaysNearFullResolution) {
 }
 
 // The Cornell box's sky around the room and a volume covering only the room's left part: where
-// the G-buffer has no surface, or the point lies outside the box grown by half a cell, the
-// coverage is exactly 0 (and the irradiance too); well inside, 1. At full resolution: below it the
+// the G-buffer has no surface, or the point lies beyond the volume's fade (the box grown by three
+// quarters of a cell), the coverage is exactly 0 (and the irradiance too); where it serves in
+// full, 1. At full resolution: below it the
 // upsample blends the coverage across a volume's border.
 TEST(IrradianceVolume, CoverageIsZeroOutsideEveryVolumeAndOnTheSky) {
   World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
@@ -217,10 +218,7 @@ TEST(IrradianceVolume, CoverageIsZeroOutsideEveryVolumeAndOnTheSky) {
     for (uint32_t x = 0; x < kFrame.width; ++x) {
       const float* gpu = &f.irradiance[4 * (size_t(y) * kFrame.width + x)];
       const PixelInput in = pixel_input(f, c, x, y);
-      const glm::dvec3 g = grid.grid_coordinates(in.position);
-      const glm::ivec3 n = grid.counts();
-      double margin = 1e9;
-      for (int a = 0; a < 3; ++a) margin = std::min({margin, g[a] + 0.5, n[a] - 0.5 - g[a]});
+      const double margin = volume_margin(grid.grid_coordinates(in.position), grid.counts());
       if (in.sky || margin < -1e-3) {
         (in.sky ? sky : outside) += 1;
         EXPECT_EQ(gpu[3], 0.0f) << x << ", " << y;
@@ -256,7 +254,7 @@ TEST(IrradianceVolume, OverlappingVolumesBlendContinuously) {
   const std::vector<ProbeGrid> grids = {constant_grid(0.0, 1.0f), constant_grid(1.5, 3.0f)};
   const double step = 0.001;  // cells are 1 wide
   double previous = 1.0, previous_coverage = 1.0, largest_jump = 0.0;
-  for (double x = 0.0; x <= 3.5; x += step) {
+  for (double x = -0.5; x <= 3.5; x += step) {  // from where the second volume's fade begins
     const VolumeIrradiance e = lookup_volumes(grids, {x, 0.0, 0.0}, {0, 1, 0}, {x, 5.0, 0.0}, {});
     ASSERT_TRUE(std::isfinite(e.irradiance.g));
     if (e.coverage > 0.0) {
@@ -267,15 +265,43 @@ TEST(IrradianceVolume, OverlappingVolumesBlendContinuously) {
     }
     EXPECT_LE(std::abs(e.coverage - previous_coverage), 1.5 / kVolumeBlendRamp * step + 1e-9) << x;
     previous_coverage = e.coverage;
-    if (x < 2.0) {
+    // Both volumes serve in full up to half a cell past the second's last probe (x = 2.5), and
+    // nothing reaches beyond the fade a quarter cell further.
+    if (x < 1.5 + 1.0 + kVolumeServedCells - 1e-6) {
       EXPECT_EQ(e.coverage, 1.0) << x;
     }
-    if (x > 1.5 + 1.0 + 0.5) {
+    if (x > 1.5 + 1.0 + kVolumeServedCells + kVolumeBlendRamp + 1e-6) {
       EXPECT_EQ(e.coverage, 0.0) << x;
     }
   }
   EXPECT_NEAR(previous, 3.0, 1e-9);
   EXPECT_LT(largest_jump, 0.05);
+}
+
+// The documented contract: walls up to half a cell beyond the outermost probes are served in
+// full. The Cornell box's volume (1.9 m of probes in a 2 m room, the walls 5 cm beyond its outer
+// probes) at half, one and twice its density: the walls lie 0.08, 0.18 and 0.37 cells out. With
+// the fade inside that half cell, the 15-probe grid's walls had coverage 0.54, and the sky's
+// ambient, mixed in for the rest, made the room a quarter too bright; also a point 0.499 cells
+// out.
+TEST(IrradianceVolume, WallsWithinHalfACellOfTheProbesAreServedInFull) {
+  for (int probes : {4, 8, 15}) {
+    IrradianceVolumeData v;
+    v.size = glm::vec3(1.9f);
+    v.probe_counts = glm::ivec3(probes);
+    ProbeGrid grid(v);
+    for (ProbeData& p : grid.probes) {
+      p.active = true;
+      p.irradiance.fill(glm::vec3(1.0f));
+      p.distance.fill(glm::vec2(10.0f, 100.0f));  // open space: nothing nearer than 10
+    }
+    const double edge = 0.95 + 0.499 * grid.min_spacing();
+    for (const glm::dvec3& wall : {glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, -1.0, 0.3), glm::dvec3(-1.0, 1.0, 1.0),
+                                   glm::dvec3(0.2, 0.1, edge)}) {
+      const VolumeIrradiance e = lookup_volumes(std::span(&grid, 1), wall, -glm::normalize(wall), {0, 0, 0}, {});
+      EXPECT_EQ(e.coverage, 1.0) << probes << " probes, at " << wall.x << ", " << wall.y << ", " << wall.z;
+    }
+  }
 }
 
 // Every probe off (inside geometry), or probes whose distance moments are all zero (a probe in a

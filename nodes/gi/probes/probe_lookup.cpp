@@ -24,15 +24,14 @@ glm::dvec3 sample_map(const std::array<T, N>& map, glm::dvec3 direction, int k) 
   return sum;
 }
 
-// Cells from grid coordinates `g` to the nearest face of the box grown by half a cell (negative
-// outside).
+}  // namespace
+
 double volume_margin(glm::dvec3 g, glm::ivec3 counts) {
-  double m = g.x + 0.5;
-  for (int a = 0; a < 3; ++a) m = std::min({m, g[a] + 0.5, counts[a] - 0.5 - g[a]});
+  constexpr double grow = kVolumeServedCells + kVolumeBlendRamp;
+  double m = g.x + grow;
+  for (int a = 0; a < 3; ++a) m = std::min({m, g[a] + grow, counts[a] - 1 + grow - g[a]});
   return m;
 }
-
-}  // namespace
 
 const char* probe_representation_name(ProbeRepresentation r) {
   switch (r) {
@@ -81,7 +80,7 @@ std::optional<glm::dvec3> lookup_irradiance(const ProbeGrid& grid, glm::dvec3 po
                                             const ProbeLookupSettings& settings) {
   const glm::dvec3 g = grid.grid_coordinates(position);
   const glm::ivec3 counts = grid.counts();
-  if (!(volume_margin(g, counts) >= 0.0)) return std::nullopt;  // the box and half a cell around it
+  if (!(volume_margin(g, counts) >= 0.0)) return std::nullopt;  // beyond the fade
   const double cell = grid.min_spacing();
   const glm::dvec3 to_eye = glm::normalize(eye - position);
   const glm::dvec3 biased = position + (n * settings.normal_bias + to_eye * settings.view_bias) * cell;

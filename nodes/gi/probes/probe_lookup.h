@@ -33,18 +33,26 @@ struct ProbeLookupSettings {
 // One probe's irradiance for normal n in the chosen form.
 glm::dvec3 probe_irradiance(const ProbeData& probe, glm::dvec3 n, ProbeRepresentation representation);
 
-// Irradiance at `position` with unit normal n, seen from `eye`; nullopt outside the grid's box
-// grown by half a cell (where the outermost probes still serve: a volume whose probes sit half a
-// cell inside a room's walls covers the room) or when no probe around the point is on.
+// A volume serves its box grown by half a cell in full (the outermost probes still serve there: a
+// volume whose probes sit half a cell inside a room's walls covers the walls) and fades out over
+// the next kVolumeBlendRamp cells, so that overlapping volumes blend continuously and each ends
+// without a seam. The fade lies outside the fully served box, so that a denser grid of the same
+// box, whose half cell is narrower, does not fade its walls toward the fallback.
+inline constexpr double kVolumeServedCells = 0.5;
+inline constexpr double kVolumeBlendRamp = 0.25;
+
+// Cells from grid coordinates `g` to the fade's outer edge (negative beyond it): at least
+// kVolumeBlendRamp where the volume serves in full.
+double volume_margin(glm::dvec3 g, glm::ivec3 counts);
+
+// Irradiance at `position` with unit normal n, seen from `eye`; nullopt beyond the fade's outer
+// edge or when no probe around the point is on.
 std::optional<glm::dvec3> lookup_irradiance(const ProbeGrid& grid, glm::dvec3 position, glm::dvec3 n, glm::dvec3 eye,
                                             const ProbeLookupSettings& settings);
 
-// Several volumes: each one's irradiance weighted by smoothstep(0, kVolumeBlendRamp, margin),
-// the margin being the cells from the point to the nearest face of its box grown by half a cell,
-// so that overlapping volumes blend continuously and each fades out at its border. coverage is
-// the weights' sum, at most 1: 0 outside every volume (or where none has a probe on), 1 from a
-// quarter cell inside a volume's served box.
-inline constexpr double kVolumeBlendRamp = 0.25;  // in cells
+// Several volumes: each one's irradiance weighted by smoothstep(0, kVolumeBlendRamp, margin).
+// coverage is the weights' sum, at most 1: 0 outside every volume (or where none has a probe on),
+// 1 wherever a volume serves in full.
 struct VolumeIrradiance {
   glm::dvec3 irradiance{0.0};
   double coverage = 0.0;

@@ -83,10 +83,14 @@ struct ProbeLookup {
   float normal_bias, view_bias;  // in cells
 };
 
-// Cells from grid coordinates `g` to the nearest face of the box grown by half a cell (negative
-// outside): where a volume serves.
+// volume_margin(): cells from grid coordinates `g` to the outer edge of a volume's fade (negative
+// beyond it); the volume serves its box grown by half a cell in full and fades over the next
+// quarter cell.
+const float LG_PROBE_VOLUME_RAMP = 0.25;   // kVolumeBlendRamp, in cells
+const float LG_PROBE_VOLUME_SERVED = 0.5;  // kVolumeServedCells
 float probe_volume_margin(vec3 g, ivec3 counts) {
-  vec3 m = min(g + 0.5, vec3(counts) - 0.5 - g);
+  const float grow = LG_PROBE_VOLUME_SERVED + LG_PROBE_VOLUME_RAMP;
+  vec3 m = min(g + grow, vec3(counts - 1) + grow - g);
   return min(m.x, min(m.y, m.z));
 }
 
@@ -145,7 +149,6 @@ vec4 lookup_irradiance(int v, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
 // lookup_volumes(): every volume's irradiance weighted by smoothstep(0, LG_PROBE_VOLUME_RAMP,
 // margin), so that a volume fades out toward its border; rgb the blend, a the coverage (the
 // weights' sum, at most 1). vec4(0) outside every volume.
-const float LG_PROBE_VOLUME_RAMP = 0.25;  // kVolumeBlendRamp, in cells
 vec4 lookup_volumes(int count, vec3 position, vec3 n, vec3 eye, ProbeLookup s) {
   vec3 sum = vec3(0.0);
   float total = 0.0;
