@@ -232,7 +232,9 @@ TEST_F(Flare, FramesThatAreNoMultipleOfTheBlocks) {
         for (size_t k = 0; k < 3; ++k) {
           const size_t i = (size_t(y) * width + x) * 4 + k;
           ASSERT_TRUE(std::isfinite(gpu.output[i]));
-          if (x >= covered_w || y >= covered_h) ASSERT_EQ(gpu.output[i], gpu.input[i]) << x << "," << y;
+          if (x >= covered_w || y >= covered_h) {
+            ASSERT_EQ(gpu.output[i], gpu.input[i]) << x << "," << y;
+          }
         }
   }
 }

@@ -29,7 +29,7 @@ constexpr FrameSize kFrame{96, 96};
 
 World asset(const std::string& name) {
   World world;
-  import_gltf(world, std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/gltf/" + name);
+  import_gltf(world, std::string(LUMAGRAPH_SOURCE_DIR "/examples/gltf/").append(name));
   return world;
 }
 
