@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "nodes/lighting/deferred/area_light_formulas.h"
 #include "nodes/lighting/deferred/area_light_math.h"
 #include "nodes/lighting/deferred/ltc_table.h"
 
@@ -171,9 +172,62 @@ float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 e
 
 }  // namespace
 
+float ltc_cone_integral(vec3 c, float radius, glm::mat3 to_cosine) {
+  // The sphere's cone of directions is the cone over the disk across the ray to its centre, of
+  // tangent r / sqrt(d^2 - r^2); M^-1 carries the disk to an ellipse and the cone to an
+  // elliptical cone (scaled so that the centre's image is a unit vector).
+  const float d2 = glm::dot(c, c);
+  const float tan_a = radius / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2));
+  const vec3 w = c / std::sqrt(d2);
+  const vec3 e1 = any_perpendicular(w), e2 = glm::cross(w, e1);
+  const vec3 centre = to_cosine * w;
+  const float scale = 1.0f / glm::length(centre);
+  const vec3 axis0 = centre * scale, v1 = to_cosine * e1 * (tan_a * scale), v2 = to_cosine * e2 * (tan_a * scale);
+  // Its directions x = A y with A = [v1 v2 axis0], y1^2 + y2^2 <= y3^2, J = diag(1, 1, -1): the
+  // cone x^T P^-1 x <= 0 with P = A J A^T, whose eigenvalues are (in the cone's frame, tangents
+  // a and b) a^2, b^2 and -1 up to scale. P, not P^-1: a far light's a^2 would be lost beside
+  // P^-1's 1 / a^2 in float; P's negative eigenvalue p3 dominates and is found accurately.
+  const glm::mat3 pm = glm::outerProduct(v1, v1) + glm::outerProduct(v2, v2) - glm::outerProduct(axis0, axis0);
+  // p3, the symmetric cubic's smallest root by its trigonometric solution, and its eigenvector,
+  // the cone's axis.
+  const float mean = (pm[0][0] + pm[1][1] + pm[2][2]) / 3.0f;
+  const float off = pm[1][0] * pm[1][0] + pm[2][0] * pm[2][0] + pm[2][1] * pm[2][1];
+  const vec3 diag = vec3(pm[0][0], pm[1][1], pm[2][2]) - mean;
+  const float spread = std::sqrt(std::max((glm::dot(diag, diag) + 2.0f * off) / 6.0f, 1e-30f));
+  const float half_det = std::min(std::max(0.5f * glm::determinant((pm - glm::mat3(mean)) / spread), -1.0f), 1.0f);
+  const float p3 = mean + 2.0f * spread * std::cos(std::acos(half_det) / 3.0f + 2.0f * kAreaLightPi / 3.0f);
+  const glm::mat3 shifted = pm - glm::mat3(p3);
+  const vec3 c01 = glm::cross(shifted[0], shifted[1]), c02 = glm::cross(shifted[0], shifted[2]),
+             c12 = glm::cross(shifted[1], shifted[2]);
+  const float l01 = glm::dot(c01, c01), l02 = glm::dot(c02, c02), l12 = glm::dot(c12, c12);
+  const vec3 axis = l01 > l02 ? (l01 > l12 ? c01 : c12) : (l02 > l12 ? c02 : c12);
+  const float cos_w = glm::dot(axis, axis0) < 0.0f ? -glm::normalize(axis).z : glm::normalize(axis).z;
+  // The elliptical cone's vector form factor lies along its axis, of length
+  // ab / sqrt((1 + a^2)(1 + b^2)) = sqrt(p1 p2 / ((p1 - p3)(p2 - p3))), where
+  // p1 p2 p3 = det P = -det(A)^2 and the product below is the characteristic polynomial's slope
+  // at p3. Its clamped cosine's integral is taken as the round cone's of the same vector form
+  // factor (Heitz and Hill 2017). Wholly above the cosine's horizon it is F.z exactly, where the
+  // round cone may cross the horizon and read more.
+  const float det_a = glm::dot(v1, glm::cross(v2, axis0));
+  const float minors = pm[0][0] * pm[1][1] + pm[0][0] * pm[2][2] + pm[1][1] * pm[2][2] - off;
+  const float slope = 3.0f * p3 * p3 - 6.0f * mean * p3 + minors;
+  const float form_factor = std::fabs(det_a) / std::sqrt(std::max(-p3 * slope, 1e-30f));
+  // The cone misses the plane z = 0 where P^-1's block on that plane is positive definite, i.e.
+  // (det P < 0) the same block of P's adjugate is negative definite.
+  const float adj00 = pm[1][1] * pm[2][2] - pm[1][2] * pm[1][2], adj11 = pm[0][0] * pm[2][2] - pm[0][2] * pm[0][2];
+  const float adj01 = pm[0][2] * pm[1][2] - pm[0][1] * pm[2][2];
+  const bool above = adj00 < 0.0f && adj00 * adj11 > adj01 * adj01 && cos_w > 0.0f;
+  const float f = clamp01(form_factor);
+  return above ? f * cos_w : sphere_form_factor(cos_w, f) / kAreaLightPi;
+}
+
 float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
   const vec3 c = light.center - p;
-  return specular_result(light.radiance, capsule_integral(c, c, light.radius, n, v, entry));
+  // Wholly above the surface's horizon (so also outside the sphere) the elliptical cone needs no
+  // clip but the cosine's; a sphere across it is clipped as a polygon (the 10-gon).
+  const bool above = light.radius > 0.0f && glm::dot(glm::normalize(n), c) >= light.radius;
+  return specular_result(light.radiance, above ? ltc_cone_integral(c, light.radius, ltc_to_cosine(n, v, entry))
+                                               : capsule_integral(c, c, light.radius, n, v, entry));
 }
 
 float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {

@@ -68,6 +68,14 @@ struct LtcOutline {
 bool ltc_capsule_outline(glm::vec3 a, glm::vec3 b, float radius, glm::vec3 n, LtcOutline& outline);
 glm::vec3 ltc_outline_vertex(const LtcOutline& outline, int j);
 
+// I of the cone of directions to a sphere of the given radius centred at c (relative to the
+// shaded point, outside it), wholly above the surface's horizon, without an outline: M^-1 makes
+// it an elliptical cone, whose vector form factor F follows from its quadratic form. Wholly
+// above the cosine's horizon I = F.z exactly; across it, the round cone's of the same F clipped
+// there (Heitz and Hill 2017). to_cosine is ltc_to_cosine's. ltc_sphere_specular uses it where
+// the sphere is wholly above the horizon of n, and the outline polygon elsewhere.
+float ltc_cone_integral(glm::vec3 c, float radius, glm::mat3 to_cosine);
+
 float ltc_sphere_specular(const SphereLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);
 float ltc_tube_specular(const TubeLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);
 float ltc_rect_specular(const RectLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);

@@ -4,6 +4,7 @@
 #ifndef LG_AREA_LIGHT_LTC_GLSL
 #define LG_AREA_LIGHT_LTC_GLSL
 
+#include "nodes/lighting/deferred/shaders/area_light_formulas.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_math.glsl"
 
 const int LG_LTC_ARC_SEGMENTS = 4;
@@ -199,9 +200,46 @@ float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 en
   return ltc_finish(poly);
 }
 
+// The elliptical cone M^-1 makes of a sphere's cone, as area_light_ltc.cpp's ltc_cone_integral
+// (which derives it): its axis and vector form factor F from the one negative eigenvalue of
+// P = A J A^T; F.z wholly above the cosine's horizon, else the round cone of the same F clipped.
+float ltc_cone_integral(vec3 c, float radius, mat3 to_cosine) {
+  float d2 = dot(c, c);
+  float tan_a = radius / sqrt(max(d2 - radius * radius, 1e-6 * d2));
+  vec3 w = c / sqrt(d2);
+  vec3 e1 = ltc_any_perpendicular(w), e2 = cross(w, e1);
+  vec3 centre = to_cosine * w;
+  float scale = 1.0 / length(centre);
+  vec3 axis0 = centre * scale, v1 = to_cosine * e1 * (tan_a * scale), v2 = to_cosine * e2 * (tan_a * scale);
+  mat3 pm = outerProduct(v1, v1) + outerProduct(v2, v2) - outerProduct(axis0, axis0);
+  float mean = (pm[0][0] + pm[1][1] + pm[2][2]) / 3.0;
+  float off = pm[1][0] * pm[1][0] + pm[2][0] * pm[2][0] + pm[2][1] * pm[2][1];
+  vec3 diag = vec3(pm[0][0], pm[1][1], pm[2][2]) - mean;
+  float spread = sqrt(max((dot(diag, diag) + 2.0 * off) / 6.0, 1e-30));
+  float half_det = clamp(0.5 * determinant((pm - mat3(mean)) / spread), -1.0, 1.0);
+  float p3 = mean + 2.0 * spread * cos(acos(half_det) / 3.0 + 2.0 * LG_PI / 3.0);
+  mat3 shifted = pm - mat3(p3);
+  vec3 c01 = cross(shifted[0], shifted[1]), c02 = cross(shifted[0], shifted[2]), c12 = cross(shifted[1], shifted[2]);
+  float l01 = dot(c01, c01), l02 = dot(c02, c02), l12 = dot(c12, c12);
+  vec3 axis = l01 > l02 ? (l01 > l12 ? c01 : c12) : (l02 > l12 ? c02 : c12);
+  float cos_w = dot(axis, axis0) < 0.0 ? -normalize(axis).z : normalize(axis).z;
+  float det_a = dot(v1, cross(v2, axis0));
+  float minors = pm[0][0] * pm[1][1] + pm[0][0] * pm[2][2] + pm[1][1] * pm[2][2] - off;
+  float slope = 3.0 * p3 * p3 - 6.0 * mean * p3 + minors;
+  float form_factor = abs(det_a) / sqrt(max(-p3 * slope, 1e-30));
+  float adj00 = pm[1][1] * pm[2][2] - pm[1][2] * pm[1][2], adj11 = pm[0][0] * pm[2][2] - pm[0][2] * pm[0][2];
+  float adj01 = pm[0][2] * pm[1][2] - pm[0][1] * pm[2][2];
+  bool above = adj00 < 0.0 && adj00 * adj11 > adj01 * adj01 && cos_w > 0.0;
+  float f = clamp(form_factor, 0.0, 1.0);
+  return above ? f * cos_w : sphere_form_factor(cos_w, f) / LG_PI;
+}
+
+// Wholly above the surface's horizon the cone, else the outline polygon (clipped to both horizons).
 float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
   vec3 c = center - p;
-  return ltc_specular_result(ltc_capsule_integral(c, c, radius, n, v, entry));
+  bool above = radius > 0.0 && dot(normalize(n), c) >= radius;
+  return ltc_specular_result(above ? ltc_cone_integral(c, radius, ltc_to_cosine(n, v, entry))
+                                   : ltc_capsule_integral(c, c, radius, n, v, entry));
 }
 
 float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
