@@ -59,7 +59,9 @@ float ltc_finish(LtcPolygon& poly);
 // of the disk's area. False for no outline (zero radius, or the point at the centre).
 struct LtcOutline {
   glm::vec3 ends[2];
-  float radii[2];      // of the polygons' corners
+  float radii[2];      // of the ends' disks (the round polygon's corners)
+  float spans[2];      // each end's arc: psi either side of its middle
+  float inner[2];      // its inner corners' radius over radii
   glm::vec3 along;     // end 0 to end 1 in the plane facing the centre
   glm::vec3 axes[2];   // each end's half circle: along, and sides, across the ray to that end
   glm::vec3 sides[2];
@@ -70,11 +72,10 @@ glm::vec3 ltc_outline_vertex(const LtcOutline& outline, int j);
 
 // I of the cone of directions to a sphere of the given radius centred at c (relative to the
 // shaded point, outside it), wholly above the surface's horizon, without an outline: M^-1 makes
-// it an elliptical cone, whose vector form factor F follows from its quadratic form. Wholly
-// above the cosine's horizon I = F.z exactly; across it, the round cone's of the same F clipped
-// there (Heitz and Hill 2017). to_cosine is ltc_to_cosine's. ltc_sphere_specular uses it where
-// the sphere is wholly above the horizon of n, and the outline polygon elsewhere.
-float ltc_cone_integral(glm::vec3 c, float radius, glm::mat3 to_cosine);
+// it an elliptical cone, whose vector form factor F follows from its quadratic form. Where that
+// cone is wholly above the cosine's horizon I = F.z exactly and this returns true; elsewhere
+// false (the caller clips a polygon). to_cosine is ltc_to_cosine's.
+bool ltc_cone_integral(glm::vec3 c, float radius, glm::mat3 to_cosine, float& integral);
 
 float ltc_sphere_specular(const SphereLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);
 float ltc_tube_specular(const TubeLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);
