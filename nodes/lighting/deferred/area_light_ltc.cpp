@@ -145,8 +145,10 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
   const vec3 foot = a - dir * glm::dot(a, dir);
   const float h = glm::length(foot);
   const bool beside = !o.round && h > radius * 1.0001f;
-  const vec3 toward = -foot / h, side = glm::cross(dir, toward);
-  const vec3 offset = radius * (radius / h * toward + std::sqrt(std::max(1.0f - radius * radius / (h * h), 0.0f)) * side);
+  // (Held finite where unused: on the axis line, or within the cylinder's reach.)
+  const vec3 toward = h > 0.0f ? -foot / h : vec3(0.0f), side = glm::cross(dir, toward);
+  const float ratio = radius / std::max(h, radius);
+  const vec3 offset = radius * (ratio * toward + std::sqrt(1.0f - ratio * ratio) * side);
   for (int k = 0; k < 2; ++k) {
     const vec3 touch = (k == 0 ? a : b) + offset;
     const float along_ray = glm::dot(touch, glm::normalize(o.ends[k]));

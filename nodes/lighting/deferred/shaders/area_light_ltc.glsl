@@ -186,8 +186,9 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
   vec3 foot = a - dir * dot(a, dir);
   float h = length(foot);
   bool beside = !o.round_ && h > radius * 1.0001;
-  vec3 toward = -foot / h, side = cross(dir, toward);
-  vec3 offset = radius * (radius / h * toward + sqrt(max(1.0 - radius * radius / (h * h), 0.0)) * side);
+  vec3 toward = h > 0.0 ? -foot / h : vec3(0.0), side = cross(dir, toward);
+  float ratio = radius / max(h, radius);
+  vec3 offset = radius * (ratio * toward + sqrt(1.0 - ratio * ratio) * side);
   o.span0 = ltc_end_span(a, offset, o.end0, o.axis0, o.side0, -1.0, beside);
   o.span1 = ltc_end_span(b, offset, o.end1, o.axis1, o.side1, 1.0, beside);
   o.inner0 = ltc_inner_radius(o.span0);
