@@ -103,13 +103,9 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
     const float depth = std::max(glm::dot(e, u), 1e-3f * dc);
     const float scale = dc / depth;
     o.ends[k] = e * scale + u * (dc - glm::dot(e, u) * scale);
-    // Its sphere's cone has tan = r / sqrt(d^2 - r^2) (held finite inside the sphere); a half
-    // polygon of k segments inscribed in radius R has area k R^2 sin(pi / k) / 2, a half disk's
-    // pi r^2 / 2 when R = r sqrt(pi / (k sin(pi / k))).
+    // Its sphere's cone has tan = r / sqrt(d^2 - r^2) (held finite inside the sphere).
     const float d2 = glm::dot(e, e);
-    const float segments = float(kLtcArcSegments);
-    o.radii[k] = radius * std::sqrt(d2) * scale / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2)) *
-                 std::sqrt(kAreaLightPi / (segments * std::sin(kAreaLightPi / segments)));
+    o.radii[k] = radius * std::sqrt(d2) * scale / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2));
   }
   const vec3 axis = o.ends[1] - o.ends[0];
   const float len = glm::length(axis);
@@ -117,21 +113,20 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
   if (!o.round) {
     o.along = axis / len;
   } else {
-    // A sphere, or a capsule seen end on: its outline is round; one half polygon's edge lies
-    // along the horizon's trace for symmetry.
+    // A sphere, or a capsule seen end on: its outline is round; one polygon edge lies along the
+    // horizon's trace for symmetry.
     const vec3 in_plane = n - u * glm::dot(n, u);
     o.along = glm::length(in_plane) > 1e-6f ? glm::normalize(in_plane) : any_perpendicular(u);
-    // Drawn whole as one polygon of kLtcOutlineVertices sides, none wasted on the two zero-length
-    // edges where the half polygons would meet (a sphere at roughness 0.15 that gathers 0.64 of
-    // the lobe read 4.4% high as an 8-gon); the same area: R^2 N sin(2 pi / N) / 2 = pi r^2.
-    const float sides = float(kLtcOutlineVertices), segments = float(kLtcArcSegments);
-    const float regrow = std::sqrt(2.0f * kAreaLightPi / (sides * std::sin(2.0f * kAreaLightPi / sides))) /
-                         std::sqrt(kAreaLightPi / (segments * std::sin(kAreaLightPi / segments)));
-    o.radii[0] = o.radii[1] = std::max(o.radii[0], o.radii[1]) * regrow;
+    // One polygon of kLtcOutlineVertices sides, none wasted on zero-length edges where two arcs
+    // would meet (a sphere at roughness 0.15 that gathers 0.64 of the lobe read 4.4% high as an
+    // 8-gon); the disk's area: R^2 N sin(2 pi / N) / 2 = pi r^2.
+    const float sides = float(kLtcOutlineVertices);
+    o.radii[0] = o.radii[1] = std::max(o.radii[0], o.radii[1]) *
+                              std::sqrt(2.0f * kAreaLightPi / (sides * std::sin(2.0f * kAreaLightPi / sides)));
   }
-  // Each end's half circle lies across the ray to that end (the cross-section of its sphere's
-  // cone), not in the plane facing the centre: seen obliquely and near, the flat outline read a
-  // capsule up to 18% low.
+  // Each end's arc lies across the ray to that end (the cross-section of its sphere's cone), not
+  // in the plane facing the centre: seen obliquely and near, the flat outline read a capsule up
+  // to 18% low.
   for (int k = 0; k < 2; ++k) {
     const vec3 w = glm::normalize(o.ends[k]);
     const vec3 across = o.along - w * glm::dot(o.along, w);
@@ -139,19 +134,46 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, LtcOutline& o) {
     o.axes[k] = across_len > 1e-6f ? across / across_len : o.along;
     o.sides[k] = glm::normalize(glm::cross(w, o.axes[k]));
   }
+  // The cylinder's silhouette is two of its lines, where the planes through the point and
+  // tangent to it touch: at h from the axis they lie r^2 / h towards the point and
+  // r sqrt(1 - r^2 / h^2) to each side. Each end's arc runs between those lines' ends, on the
+  // side away from the other end: psi either side of its middle, more than a half circle where
+  // the point is near and sees the tube obliquely (half circles there put the junctions off the
+  // silhouette: the benchmark's tubes across the horizon 0.45 -> 0.29). Within the cylinder's
+  // reach (h <= r; capsule_specular then passes a sphere) half circles.
+  const vec3 dir = o.round ? vec3(0.0f) : glm::normalize(b - a);
+  const vec3 foot = a - dir * glm::dot(a, dir);
+  const float h = glm::length(foot);
+  const bool beside = !o.round && h > radius * 1.0001f;
+  // (Held finite where unused: on the axis line, or within the cylinder's reach.)
+  const vec3 toward = h > 0.0f ? -foot / h : vec3(0.0f), side = glm::cross(dir, toward);
+  const float ratio = radius / std::max(h, radius);
+  const vec3 offset = radius * (ratio * toward + std::sqrt(1.0f - ratio * ratio) * side);
+  for (int k = 0; k < 2; ++k) {
+    const vec3 touch = (k == 0 ? a : b) + offset;
+    const float along_ray = glm::dot(touch, glm::normalize(o.ends[k]));
+    const vec3 q = touch * (glm::length(o.ends[k]) / along_ray) - o.ends[k];
+    const float psi = std::atan2(std::fabs(glm::dot(q, o.sides[k])), (k == 0 ? -1.0f : 1.0f) * glm::dot(q, o.axes[k]));
+    o.spans[k] = beside && along_ray > 0.0f ? psi : 0.5f * kAreaLightPi;
+    // The arc's inner corners at rho R, its ends on the lines at R: the fan of kLtcArcSegments
+    // triangles then has the sector's area, R^2 psi (sin(step) R^2 (2 rho + (K - 2) rho^2) / 2).
+    const float segments = float(kLtcArcSegments), step = 2.0f * o.spans[k] / segments;
+    o.inner[k] = (std::sqrt(1.0f + (segments - 2.0f) * 2.0f * o.spans[k] / std::sin(step)) - 1.0f) / (segments - 2.0f);
+  }
   return true;
 }
 
 vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
-  // End 0's half circle faces away from end 1 (through -along), end 1's through +along.
   if (o.round) {
     const float angle = 0.5f * kAreaLightPi + 2.0f * kAreaLightPi * float(j) / float(kLtcOutlineVertices);
     return o.ends[0] + o.radii[0] * (std::cos(angle) * o.axes[0] + std::sin(angle) * o.sides[0]);
   }
-  const int half = j / (kLtcArcSegments + 1);
-  const float start = half == 0 ? 0.5f * kAreaLightPi : -0.5f * kAreaLightPi;
-  const float angle = start + kAreaLightPi * float(j - half * (kLtcArcSegments + 1)) / float(kLtcArcSegments);
-  return o.ends[half] + o.radii[half] * (std::cos(angle) * o.axes[half] + std::sin(angle) * o.sides[half]);
+  // End 0's arc faces away from end 1 (about -along), end 1's about +along.
+  const int half = j / (kLtcArcSegments + 1), i = j - half * (kLtcArcSegments + 1);
+  const float middle = half == 0 ? kAreaLightPi : 0.0f;
+  const float angle = middle - o.spans[half] + 2.0f * o.spans[half] * float(i) / float(kLtcArcSegments);
+  const float r = o.radii[half] * (i == 0 || i == kLtcArcSegments ? 1.0f : o.inner[half]);
+  return o.ends[half] + r * (std::cos(angle) * o.axes[half] + std::sin(angle) * o.sides[half]);
 }
 
 namespace {
@@ -171,13 +193,82 @@ float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 e
 
 }  // namespace
 
+bool ltc_cone_integral(vec3 c, float radius, glm::mat3 to_cosine, float& integral) {
+  // The sphere's cone of directions is the cone over the disk across the ray to its centre, of
+  // tangent r / sqrt(d^2 - r^2); M^-1 carries the disk to an ellipse and the cone to an
+  // elliptical cone (scaled so that the centre's image is a unit vector).
+  const float d2 = glm::dot(c, c);
+  const float tan_a = radius / std::sqrt(std::max(d2 - radius * radius, 1e-6f * d2));
+  const vec3 w = c / std::sqrt(d2);
+  const vec3 e1 = any_perpendicular(w), e2 = glm::cross(w, e1);
+  const vec3 centre = to_cosine * w;
+  const float scale = 1.0f / glm::length(centre);
+  const vec3 axis0 = centre * scale, v1 = to_cosine * e1 * (tan_a * scale), v2 = to_cosine * e2 * (tan_a * scale);
+  // Its directions x = A y with A = [v1 v2 axis0], y1^2 + y2^2 <= y3^2, J = diag(1, 1, -1): the
+  // cone x^T P^-1 x <= 0 with P = A J A^T, whose eigenvalues are (in the cone's frame, tangents
+  // a and b) a^2, b^2 and -1 up to scale. P, not P^-1: a far light's a^2 would be lost beside
+  // P^-1's 1 / a^2 in float; P's negative eigenvalue p3 dominates and is found accurately.
+  const glm::mat3 pm = glm::outerProduct(v1, v1) + glm::outerProduct(v2, v2) - glm::outerProduct(axis0, axis0);
+  // p3, the symmetric cubic's smallest root by its trigonometric solution, and its eigenvector,
+  // the cone's axis.
+  const float mean = (pm[0][0] + pm[1][1] + pm[2][2]) / 3.0f;
+  const float off = pm[1][0] * pm[1][0] + pm[2][0] * pm[2][0] + pm[2][1] * pm[2][1];
+  const vec3 diag = vec3(pm[0][0], pm[1][1], pm[2][2]) - mean;
+  const float spread = std::sqrt(std::max((glm::dot(diag, diag) + 2.0f * off) / 6.0f, 1e-30f));
+  const float half_det = std::min(std::max(0.5f * glm::determinant((pm - glm::mat3(mean)) / spread), -1.0f), 1.0f);
+  const float p3 = mean + 2.0f * spread * std::cos(std::acos(half_det) / 3.0f + 2.0f * kAreaLightPi / 3.0f);
+  const glm::mat3 shifted = pm - glm::mat3(p3);
+  const vec3 c01 = glm::cross(shifted[0], shifted[1]), c02 = glm::cross(shifted[0], shifted[2]),
+             c12 = glm::cross(shifted[1], shifted[2]);
+  const float l01 = glm::dot(c01, c01), l02 = glm::dot(c02, c02), l12 = glm::dot(c12, c12);
+  const vec3 axis = l01 > l02 ? (l01 > l12 ? c01 : c12) : (l02 > l12 ? c02 : c12);
+  const float cos_w = glm::dot(axis, axis0) < 0.0f ? -glm::normalize(axis).z : glm::normalize(axis).z;
+  // The elliptical cone's vector form factor F lies along its axis, of length
+  // ab / sqrt((1 + a^2)(1 + b^2)) = sqrt(p1 p2 / ((p1 - p3)(p2 - p3))), where
+  // p1 p2 p3 = det P = -det(A)^2 and the product below is the characteristic polynomial's slope
+  // at p3 (Heitz and Hill 2017 integrate disks this way). Wholly above the cosine's horizon the
+  // clamped cosine's integral is F.z exactly.
+  const float det_a = glm::dot(v1, glm::cross(v2, axis0));
+  const float minors = pm[0][0] * pm[1][1] + pm[0][0] * pm[2][2] + pm[1][1] * pm[2][2] - off;
+  const float slope = 3.0f * p3 * p3 - 6.0f * mean * p3 + minors;
+  integral = clamp01(std::fabs(det_a) / std::sqrt(std::max(-p3 * slope, 1e-30f))) * cos_w;
+  // The cone misses the plane z = 0 where P^-1's block on that plane is positive definite, i.e.
+  // (det P < 0) the same block of P's adjugate is negative definite.
+  const float adj00 = pm[1][1] * pm[2][2] - pm[1][2] * pm[1][2], adj11 = pm[0][0] * pm[2][2] - pm[0][2] * pm[0][2];
+  const float adj01 = pm[0][2] * pm[1][2] - pm[0][1] * pm[2][2];
+  return adj00 < 0.0f && adj00 * adj11 > adj01 * adj01 && cos_w > 0.0f;
+}
+
+namespace {
+
+// A capsule with ends a and b (a = b for a sphere). Seen from within its cylinder's reach
+// (closer to the axis line than r, beyond an end), no plane through the point touches the
+// cylinder, and the nearer end's sphere hides the rest: its cone is the capsule's (tubes seen
+// nearly end on read 12 to 16% low as two half circles joined). A sphere wholly above the
+// surface's horizon whose elliptical cone is wholly above the cosine's is that cone, exactly;
+// anything else the outline polygon, clipped. (The round cone of the same vector form factor
+// clipped to the cosine's horizon, Heitz and Hill's approximation, read up to 11% high there.)
+float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
+  const vec3 axis = b - a;
+  const float len = glm::length(axis);
+  const vec3 dir = len > 0.0f ? axis / len : vec3(0.0f);
+  const bool end_on = !(len > 0.0f) || !(glm::length(a - dir * glm::dot(a, dir)) > radius);
+  const vec3 near = glm::dot(a, a) < glm::dot(b, b) ? a : b;
+  const bool cone = end_on && radius > 0.0f && glm::dot(glm::normalize(n), near) >= radius;
+  float integral = 0.0f;
+  const bool exact = cone && ltc_cone_integral(near, radius, ltc_to_cosine(n, v, entry), integral);
+  return exact ? integral : capsule_integral(end_on ? near : a, end_on ? near : b, radius, n, v, entry);
+}
+
+}  // namespace
+
 float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
   const vec3 c = light.center - p;
-  return specular_result(light.radiance, capsule_integral(c, c, light.radius, n, v, entry));
+  return specular_result(light.radiance, capsule_specular(c, c, light.radius, n, v, entry));
 }
 
 float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
-  return specular_result(light.radiance, capsule_integral(light.end0 - p, light.end1 - p, light.radius, n, v, entry));
+  return specular_result(light.radiance, capsule_specular(light.end0 - p, light.end1 - p, light.radius, n, v, entry));
 }
 
 float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {

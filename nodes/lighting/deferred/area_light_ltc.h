@@ -20,7 +20,7 @@
 
 namespace lg {
 
-// Segments of each half circle of a sphere's or capsule's outline (below), and its vertices.
+// Segments of each end's arc of a capsule's outline (below), and the outline's vertices.
 inline constexpr int kLtcArcSegments = 4;
 inline constexpr int kLtcOutlineVertices = 2 * (kLtcArcSegments + 1);
 
@@ -54,19 +54,30 @@ float ltc_finish(LtcPolygon& poly);
 // The outline of a capsule with ends a and b (relative to the shaded point; a = b for a sphere)
 // as it is seen: each end carried along its ray onto the plane through the centre facing the
 // point, its sphere as the disk across that ray that subtends the sphere's cone, the ends' disks
-// joined by their tangent lines; a half circle is a half polygon of kLtcArcSegments segments of
-// the same area. A sphere (or a capsule seen end on) is one polygon of kLtcOutlineVertices sides
-// of the disk's area. False for no outline (zero radius, or the point at the centre).
+// joined by the cylinder's silhouette lines; each end's arc runs between those lines' ends (a
+// half circle from within the cylinder's reach) in kLtcArcSegments segments, its inner corners
+// set out so that the arc's fan has the sector's area. A sphere (or a capsule seen end on) is one
+// polygon of kLtcOutlineVertices sides of the disk's area. False for no outline (zero radius,
+// or the point at the centre).
 struct LtcOutline {
   glm::vec3 ends[2];
-  float radii[2];      // of the polygons' corners
+  float radii[2];      // of the ends' disks (the round polygon's corners)
+  float spans[2];      // each end's arc: psi either side of its middle
+  float inner[2];      // its inner corners' radius over radii
   glm::vec3 along;     // end 0 to end 1 in the plane facing the centre
-  glm::vec3 axes[2];   // each end's half circle: along, and sides, across the ray to that end
+  glm::vec3 axes[2];   // each end's arc: along, and sides, across the ray to that end
   glm::vec3 sides[2];
   bool round;          // one polygon around ends[0]
 };
 bool ltc_capsule_outline(glm::vec3 a, glm::vec3 b, float radius, glm::vec3 n, LtcOutline& outline);
 glm::vec3 ltc_outline_vertex(const LtcOutline& outline, int j);
+
+// I of the cone of directions to a sphere of the given radius centred at c (relative to the
+// shaded point, outside it), wholly above the surface's horizon, without an outline: M^-1 makes
+// it an elliptical cone, whose vector form factor F follows from its quadratic form. Where that
+// cone is wholly above the cosine's horizon I = F.z exactly and this returns true; elsewhere
+// false (the caller clips a polygon). to_cosine is ltc_to_cosine's.
+bool ltc_cone_integral(glm::vec3 c, float radius, glm::mat3 to_cosine, float& integral);
 
 float ltc_sphere_specular(const SphereLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);
 float ltc_tube_specular(const TubeLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, glm::vec4 entry);

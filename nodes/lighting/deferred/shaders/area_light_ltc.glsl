@@ -118,11 +118,15 @@ struct LtcOutline {
   vec3 axis1;
   vec3 side0;
   vec3 side1;
+  float span0;  // each end's arc: psi either side of its middle
+  float span1;
+  float inner0;  // its inner corners' radius over the end's
+  float inner1;
   bool round_;
 };
 
-// End k's half circle across the ray to it (w): the outline's along direction made perpendicular
-// to w, and the side direction.
+// End k's arc across the ray to it (w): the outline's along direction made perpendicular to w,
+// and the side direction.
 void ltc_end_frame(vec3 end_, vec3 along, out vec3 axis, out vec3 side) {
   vec3 w = normalize(end_);
   vec3 across = along - w * dot(along, w);
@@ -131,24 +135,39 @@ void ltc_end_frame(vec3 end_, vec3 along, out vec3 axis, out vec3 side) {
   side = normalize(cross(w, axis));
 }
 
+// End k's arc's half-span: where the cylinder's silhouette line (at offset from the end's
+// centre e) meets the end's disk, psi from the arc's middle (middle_sign * axis), as
+// area_light_ltc.cpp's ltc_capsule_outline; a half circle where the point is within the
+// cylinder's reach.
+float ltc_end_span(vec3 e, vec3 offset, vec3 end_, vec3 axis, vec3 side, float middle_sign, bool beside) {
+  vec3 touch = e + offset;
+  float along_ray = dot(touch, normalize(end_));
+  vec3 q = touch * (length(end_) / along_ray) - end_;
+  float psi = atan(abs(dot(q, side)), middle_sign * dot(q, axis));
+  return beside && along_ray > 0.0 ? psi : 0.5 * LG_PI;
+}
+
+float ltc_inner_radius(float span) {
+  float segments = float(LG_LTC_ARC_SEGMENTS);
+  return (sqrt(1.0 + (segments - 2.0) * 2.0 * span / sin(2.0 * span / segments)) - 1.0) / (segments - 2.0);
+}
+
 bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o) {
-  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), false);
+  o = LtcOutline(a, b, 0.0, 0.0, vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0, 0.0, 0.0, 0.0, false);
   vec3 c = 0.5 * (a + b);
   float dc = length(c);
   if (!(dc > 0.0) || !(radius > 0.0)) return false;
   vec3 u = c / dc;
-  float segments = float(LG_LTC_ARC_SEGMENTS);
-  float grow = sqrt(LG_PI / (segments * sin(LG_PI / segments)));
   float depth = max(dot(a, u), 1e-3 * dc);
   float scale = dc / depth;
   o.end0 = a * scale + u * (dc - dot(a, u) * scale);
   float d2 = dot(a, a);
-  o.radius0 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
+  o.radius0 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2));
   depth = max(dot(b, u), 1e-3 * dc);
   scale = dc / depth;
   o.end1 = b * scale + u * (dc - dot(b, u) * scale);
   d2 = dot(b, b);
-  o.radius1 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2)) * grow;
+  o.radius1 = radius * sqrt(d2) * scale / sqrt(max(d2 - radius * radius, 1e-6 * d2));
   vec3 axis = o.end1 - o.end0;
   float len = length(axis);
   o.round_ = !(len > 1e-6 * dc);
@@ -158,54 +177,122 @@ bool ltc_capsule_outline(vec3 a, vec3 b, float radius, vec3 n, out LtcOutline o)
     vec3 in_plane = n - u * dot(n, u);
     o.along = length(in_plane) > 1e-6 ? normalize(in_plane) : ltc_any_perpendicular(u);
     float sides = float(LG_LTC_OUTLINE_VERTICES);
-    float regrow = sqrt(2.0 * LG_PI / (sides * sin(2.0 * LG_PI / sides))) / grow;
-    o.radius0 = max(o.radius0, o.radius1) * regrow;
+    o.radius0 = max(o.radius0, o.radius1) * sqrt(2.0 * LG_PI / (sides * sin(2.0 * LG_PI / sides)));
     o.radius1 = o.radius0;
   }
   ltc_end_frame(o.end0, o.along, o.axis0, o.side0);
   ltc_end_frame(o.end1, o.along, o.axis1, o.side1);
+  vec3 dir = o.round_ ? vec3(0.0) : normalize(b - a);
+  vec3 foot = a - dir * dot(a, dir);
+  float h = length(foot);
+  bool beside = !o.round_ && h > radius * 1.0001;
+  vec3 toward = h > 0.0 ? -foot / h : vec3(0.0), side = cross(dir, toward);
+  float ratio = radius / max(h, radius);
+  vec3 offset = radius * (ratio * toward + sqrt(1.0 - ratio * ratio) * side);
+  o.span0 = ltc_end_span(a, offset, o.end0, o.axis0, o.side0, -1.0, beside);
+  o.span1 = ltc_end_span(b, offset, o.end1, o.axis1, o.side1, 1.0, beside);
+  o.inner0 = ltc_inner_radius(o.span0);
+  o.inner1 = ltc_inner_radius(o.span1);
   return true;
 }
 
-// Corner (cos, sin) of end 0's (or end 1's) polygon, as area_light_ltc.cpp's ltc_outline_vertex.
-vec3 ltc_outline_point(LtcOutline o, bool end1, vec2 cs) {
-  return end1 ? o.end1 + o.radius1 * (cs.x * o.axis1 + cs.y * o.side1)
-              : o.end0 + o.radius0 * (cs.x * o.axis0 + cs.y * o.side0);
+// Corner (cos, sin) of end 0's (or end 1's) polygon at `radius` times the end's, as
+// area_light_ltc.cpp's ltc_outline_vertex.
+vec3 ltc_outline_point(LtcOutline o, bool end1, vec2 cs, float radius) {
+  return end1 ? o.end1 + radius * o.radius1 * (cs.x * o.axis1 + cs.y * o.side1)
+              : o.end0 + radius * o.radius0 * (cs.x * o.axis0 + cs.y * o.side0);
 }
 
-// The outline's corners in the C++ ltc_outline_vertex's order, each angle one constant step on from the
+// The outline's corners in the C++ ltc_outline_vertex's order, each angle one step on from the
 // last by a rotation, not a cos and a sin per corner (with both outlines' angles taken, since
-// lavapipe runs both sides of round_'s selects, that was 20 sines and cosines a light). Every
-// outline starts at pi / 2; a capsule's end 1 starts at end 0's last angle, 3 pi / 2 = -pi / 2.
+// lavapipe runs both sides of round_'s selects, that was 20 sines and cosines a light). A round
+// outline starts at pi / 2 and steps 2 pi / N; a capsule's end 0 runs from pi - span0 to
+// pi + span0, end 1's from -span1 to span1, each in LG_LTC_ARC_SEGMENTS steps.
 float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
   LtcOutline o;
   if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0;
   LtcPolygon poly = ltc_polygon(n, v, entry);
-  const float arc_step = LG_PI / float(LG_LTC_ARC_SEGMENTS);
   const float round_step = 2.0 * LG_PI / float(LG_LTC_OUTLINE_VERTICES);
-  vec2 step_ = o.round_ ? vec2(cos(round_step), sin(round_step)) : vec2(cos(arc_step), sin(arc_step));
-  // The last corner: a round outline's at pi / 2 - its step, a capsule's end 1's at pi / 2.
-  vec3 previous = ltc_outline_point(o, !o.round_, o.round_ ? step_.yx : vec2(0.0, 1.0));
-  vec2 cs = vec2(0.0, 1.0);
+  float step0 = 2.0 * o.span0 / float(LG_LTC_ARC_SEGMENTS), step1 = 2.0 * o.span1 / float(LG_LTC_ARC_SEGMENTS);
+  vec2 step_ = o.round_ ? vec2(cos(round_step), sin(round_step)) : vec2(cos(step0), sin(step0));
+  vec2 end1_step = vec2(cos(step1), sin(step1));
+  vec2 end1_start = vec2(cos(o.span1), -sin(o.span1));
+  // The last corner: a round outline's at pi / 2 - its step, a capsule's end 1's at span1.
+  vec3 previous = o.round_ ? ltc_outline_point(o, false, step_.yx, 1.0)
+                           : ltc_outline_point(o, true, end1_start * vec2(1.0, -1.0), 1.0);
+  vec2 cs = o.round_ ? vec2(0.0, 1.0) : vec2(-cos(o.span0), sin(o.span0));
   // A do-while: a `for` that lavapipe does not unroll runs one more body, every lane masked off.
   int j = 0;
   do {
-    vec3 next = ltc_outline_point(o, !o.round_ && j > LG_LTC_ARC_SEGMENTS, cs);
+    bool on_end1 = !o.round_ && j > LG_LTC_ARC_SEGMENTS;
+    int i = on_end1 ? j - (LG_LTC_ARC_SEGMENTS + 1) : j;
+    bool arc_end = i == 0 || i == LG_LTC_ARC_SEGMENTS;
+    float corner_radius = o.round_ || arc_end ? 1.0 : (on_end1 ? o.inner1 : o.inner0);
+    vec3 next = ltc_outline_point(o, on_end1, cs, corner_radius);
     ltc_add_edge(poly, previous, next);
     previous = next;
     bool to_end1 = !o.round_ && j == LG_LTC_ARC_SEGMENTS;
-    cs = to_end1 ? cs : vec2(cs.x * step_.x - cs.y * step_.y, cs.y * step_.x + cs.x * step_.y);
+    step_ = to_end1 ? end1_step : step_;
+    cs = to_end1 ? end1_start : vec2(cs.x * step_.x - cs.y * step_.y, cs.y * step_.x + cs.x * step_.y);
   } while (++j < LG_LTC_OUTLINE_VERTICES);
   return ltc_finish(poly);
 }
 
+// The elliptical cone M^-1 makes of a sphere's cone, as area_light_ltc.cpp's ltc_cone_integral
+// (which derives it): its axis and vector form factor F from the one negative eigenvalue of
+// P = A J A^T; F.z, and true where the cone is wholly above the cosine's horizon (exact there).
+bool ltc_cone_integral(vec3 c, float radius, mat3 to_cosine, out float integral) {
+  float d2 = dot(c, c);
+  float tan_a = radius / sqrt(max(d2 - radius * radius, 1e-6 * d2));
+  vec3 w = c / sqrt(d2);
+  vec3 e1 = ltc_any_perpendicular(w), e2 = cross(w, e1);
+  vec3 centre = to_cosine * w;
+  float scale = 1.0 / length(centre);
+  vec3 axis0 = centre * scale, v1 = to_cosine * e1 * (tan_a * scale), v2 = to_cosine * e2 * (tan_a * scale);
+  mat3 pm = outerProduct(v1, v1) + outerProduct(v2, v2) - outerProduct(axis0, axis0);
+  float mean = (pm[0][0] + pm[1][1] + pm[2][2]) / 3.0;
+  float off = pm[1][0] * pm[1][0] + pm[2][0] * pm[2][0] + pm[2][1] * pm[2][1];
+  vec3 diag = vec3(pm[0][0], pm[1][1], pm[2][2]) - mean;
+  float spread = sqrt(max((dot(diag, diag) + 2.0 * off) / 6.0, 1e-30));
+  float half_det = clamp(0.5 * determinant((pm - mat3(mean)) / spread), -1.0, 1.0);
+  float p3 = mean + 2.0 * spread * cos(acos(half_det) / 3.0 + 2.0 * LG_PI / 3.0);
+  mat3 shifted = pm - mat3(p3);
+  vec3 c01 = cross(shifted[0], shifted[1]), c02 = cross(shifted[0], shifted[2]), c12 = cross(shifted[1], shifted[2]);
+  float l01 = dot(c01, c01), l02 = dot(c02, c02), l12 = dot(c12, c12);
+  vec3 axis = l01 > l02 ? (l01 > l12 ? c01 : c12) : (l02 > l12 ? c02 : c12);
+  float cos_w = dot(axis, axis0) < 0.0 ? -normalize(axis).z : normalize(axis).z;
+  float det_a = dot(v1, cross(v2, axis0));
+  float minors = pm[0][0] * pm[1][1] + pm[0][0] * pm[2][2] + pm[1][1] * pm[2][2] - off;
+  float slope = 3.0 * p3 * p3 - 6.0 * mean * p3 + minors;
+  integral = clamp(abs(det_a) / sqrt(max(-p3 * slope, 1e-30)), 0.0, 1.0) * cos_w;
+  float adj00 = pm[1][1] * pm[2][2] - pm[1][2] * pm[1][2], adj11 = pm[0][0] * pm[2][2] - pm[0][2] * pm[0][2];
+  float adj01 = pm[0][2] * pm[1][2] - pm[0][1] * pm[2][2];
+  return adj00 < 0.0 && adj00 * adj11 > adj01 * adj01 && cos_w > 0.0;
+}
+
+// A capsule (a = b for a sphere) as area_light_ltc.cpp's capsule_specular: seen from within its
+// cylinder's reach the nearer end's sphere; a sphere wholly above the surface's horizon whose
+// elliptical cone is wholly above the cosine's that cone; anything else the outline polygon.
+float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
+  vec3 axis = b - a;
+  float len = length(axis);
+  vec3 dir = len > 0.0 ? axis / len : vec3(0.0);
+  bool end_on = !(len > 0.0) || !(length(a - dir * dot(a, dir)) > radius);
+  vec3 near_ = dot(a, a) < dot(b, b) ? a : b;
+  bool cone = end_on && radius > 0.0 && dot(normalize(n), near_) >= radius;
+  float integral = 0.0;
+  bool exact = false;
+  if (cone) exact = ltc_cone_integral(near_, radius, ltc_to_cosine(n, v, entry), integral);
+  return exact ? integral : ltc_capsule_integral(end_on ? near_ : a, end_on ? near_ : b, radius, n, v, entry);
+}
+
 float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
   vec3 c = center - p;
-  return ltc_specular_result(ltc_capsule_integral(c, c, radius, n, v, entry));
+  return ltc_specular_result(ltc_capsule_specular(c, c, radius, n, v, entry));
 }
 
 float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
-  return ltc_specular_result(ltc_capsule_integral(end0 - p, end1 - p, radius, n, v, entry));
+  return ltc_specular_result(ltc_capsule_specular(end0 - p, end1 - p, radius, n, v, entry));
 }
 
 float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, vec4 entry) {
