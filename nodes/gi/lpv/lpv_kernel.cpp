@@ -159,7 +159,7 @@ class LpvKernel final : public NodeKernel {
       return Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name, .size = cells * bytes_per_cell});
     };
     light_fixed_ = buffer("injected light", 48);
-    occlusion_fixed_ = buffer("injected occlusion", 32);  // lpv_voxelize.comp
+    occlusion_fixed_ = buffer("injected occlusion", 48);  // lpv_voxelize.comp
     sum_ = buffer("light sum", 48);
     auto image = [&](const std::string& name, VkFormat format, VkImageUsageFlags extra_usage = 0) {
       return Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name,
@@ -292,7 +292,7 @@ class LpvKernel final : public NodeKernel {
                                        storage_image(7, occlusion_grid_.view()),
                                        storage_image(8, sky_planes_.view())};
     dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_resolve.comp", resolve);
-    if (sky_) add_sky(ctx);
+    if (sky_) add_sky(ctx), add_sky_bounce(ctx);
   }
 
   // The sky's light through the geometry volume into its images (lpv_sky.comp), after the resolve
@@ -306,6 +306,19 @@ class LpvKernel final : public NodeKernel {
                                       storage_image(5, sky_images_[2].view()),
                                       storage_image(6, sky_images_[3].view())};
     dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_sky.comp", writes);
+  }
+
+  // The sky's light the surfaces reflect, into the injected light and the sum (lpv_sky_bounce.comp),
+  // after the march wrote the sky's images; the propagation's first barrier orders it before.
+  void add_sky_bounce(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());
+    const DescriptorWrite writes[] = {
+        uniform_buffer(0, constants_->handle()),          storage_buffer(1, occlusion_fixed_.handle()),
+        linear_general(ctx, 2, sky_images_[0]),           linear_general(ctx, 3, sky_images_[1]),
+        linear_general(ctx, 4, sky_images_[2]),           linear_general(ctx, 5, sky_images_[3]),
+        storage_buffer(6, sum_.handle()),                 storage_image(7, light_[0][0].view()),
+        storage_image(8, light_[0][1].view()),            storage_image(9, light_[0][2].view())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_sky_bounce.comp", writes);
   }
 
   // The geometry volume from every draw's triangles (lpv_voxelize.comp).
@@ -348,8 +361,7 @@ class LpvKernel final : public NodeKernel {
     for (uint32_t c = 0; c < 3; ++c)
       writes.push_back(sampled_image(4 + c, sum_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
     writes.push_back(storage_image(7, target.view()));
-    for (uint32_t c = 0; c < 4; ++c)
-      writes.push_back(sampled_image(8 + c, sky_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
+    for (uint32_t c = 0; c < 4; ++c) writes.push_back(linear_general(ctx, 8 + c, sky_images_[c]));
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)));
     if (ctx.has("out.volume")) write_volume(ctx);
@@ -382,6 +394,11 @@ class LpvKernel final : public NodeKernel {
   // A grid image read with texelFetch (kept in the GENERAL layout, as it is also written).
   static DescriptorWrite general_sampled(PassContext& ctx, uint32_t binding, Image& image) {
     return sampled_image(binding, image.view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL);
+  }
+
+  // A grid image filtered by the sampler (kept in the GENERAL layout, as it is also written).
+  static DescriptorWrite linear_general(PassContext& ctx, uint32_t binding, Image& image) {
+    return sampled_image(binding, image.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL);
   }
 
   // One invocation per cell: x across the grid, y down its rows of every slice (lpv_common.glsl).

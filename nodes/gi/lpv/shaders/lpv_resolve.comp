@@ -19,7 +19,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 1) readonly buffer LightFixed { ivec4 light_fixed[]; };          // 3 a cell
-layout(std430, binding = 2) readonly buffer OcclusionFixed { ivec4 occlusion_fixed[]; };  // 2 a cell, the lobe first
+layout(std430, binding = 2) readonly buffer OcclusionFixed { ivec4 occlusion_fixed[]; };  // 3 a cell, the lobe first
 layout(binding = 3, rgba32f) uniform writeonly image3D light_red;
 layout(binding = 4, rgba32f) uniform writeonly image3D light_green;
 layout(binding = 5, rgba32f) uniform writeonly image3D light_blue;
@@ -48,7 +48,7 @@ void main() {
   sum[3u * i] = red;
   sum[3u * i + 1u] = green;
   sum[3u * i + 2u] = blue;
-  vec4 blocking = vec4(occlusion_fixed[2u * i]) / lpv.scales.y;
+  vec4 blocking = vec4(occlusion_fixed[3u * i]) / lpv.scales.y;
   imageStore(occlusion, c, sh_l1_lobe_packed(sh_l1_lobe(blocking)));
-  imageStore(sky_planes, c, sky_plane(occlusion_fixed[2u * i + 1u], blocking));
+  imageStore(sky_planes, c, sky_plane(occlusion_fixed[3u * i + 1u], blocking));
 }
