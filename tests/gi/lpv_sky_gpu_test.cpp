@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -17,9 +16,9 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
-#include "nodes/env/common/sh_basis.h"
 #include "runtime/image/image_formats.h"
 #include "tests/gi/degenerate_world.h"
+#include "tests/gi/sky_irradiance.h"
 #include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
 #include "tests/runtime/gpu_test.h"
@@ -48,18 +47,6 @@ Graph lpv_sky_graph(const std::string& environment) {
 }
 
 const std::string kSky = R"({ "id": "sky", "type": "env.sky", "params": { "face_size": 16 } })";
-
-// The sky's irradiance at unit normal n from the node's SH input (green), as lighting.ibl reads it.
-double sky_irradiance_green(Renderer& renderer, glm::dvec3 n) {
-  const std::vector<std::byte> bytes = renderer.executor().read_buffer("sh.sh");
-  std::vector<float> sh(bytes.size() / sizeof(float));
-  std::memcpy(sh.data(), bytes.data(), sh.size() * sizeof(float));
-  double y[9];
-  sh_evaluate(2, n, y);
-  double e = 0;
-  for (int k = 0; k < 9 && 4 * k + 1 < int(sh.size()); ++k) e += sh[4 * k + 1] * y[k];
-  return std::max(e, 0.0);
-}
 
 // A camera at `eye` looking along `look`, a sun of zero intensity (gi.lpv needs a directional
 // light to run; this one adds nothing) and the environment the SH stands for.
