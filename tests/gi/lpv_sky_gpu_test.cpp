@@ -3,12 +3,13 @@
 // - inside a closed room under the sky the geometry volume hides it: the truth is 0;
 // - an open floor gets about the sky's irradiance at its normal (E_sky(up) from the same SH),
 //   its own reflection of the sky included;
-// - a degenerate sky (its SH from an environment of the largest floats, whose sums overflow) and
-//   the degenerate world: every output finite, validation clean.
+// - degenerate skies (an environment of the largest floats, and the same at intensity 0) on the
+//   degenerate world: every output finite, validation clean.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -122,28 +123,38 @@ TEST(LpvSky, GivesAnOpenFloorTheSkysIrradiance) {
   expect_no_validation_messages(renderer->context());
 }
 
-// An environment of the largest finite floats: env.sh_project's sums overflow, so the SH the node
-// reads holds Inf (or at best values no light can have); with the degenerate world's zero-area
-// triangles, NaN colour and 1e30 sun. Every output value finite, validation clean.
+// Degenerate skies on the degenerate world (zero-area triangles, a NaN colour, a 1e30 sun): an
+// environment of the largest finite floats (env.load keeps it within the half floats: the SH's
+// first coefficient reads 7.3e5, some 10^5 times a daylight sky's) and the same at intensity 0
+// (an SH of zeros). Every output value finite, validation clean; the graph's env nodes never
+// hand on a non-finite SH (env.sh_project counts such texels as 0), and lpv_sky.comp zeroes
+// non-finite coefficients besides.
 TEST(LpvSky, StaysFiniteOnADegenerateSky) {
   const std::filesystem::path path = std::filesystem::path(LUMAGRAPH_BINARY_DIR) / "lpv-sky-test-huge.exr";
   const float huge = std::numeric_limits<float>::max();
   std::vector<float> texels(8 * 4 * 4, huge);
   write_exr(path.string(), 8, 4, texels, false, true);
-  World world = degenerate_world();
-  world.add(world.create("environment"), EnvironmentLight{});
-  auto renderer = make_renderer(lpv_sky_graph(R"({ "id": "sky", "type": "env.load", "params": { "path": ")" +
-                                              path.string() + R"(", "face_size": 8 } })"));
-  renderer->render(world, kFrame);
-  const std::vector<float> out = renderer->executor().read_image("lpv.irradiance");
-  size_t bad = 0, covered = 0;
-  for (size_t i = 0; i < out.size(); ++i) {
-    bad += !std::isfinite(out[i]);
-    covered += i % 4 == 3 && out[i] > 0.5f;
+  for (const char* intensity : {"1", "0"}) {
+    World world = degenerate_world();
+    world.add(world.create("environment"), EnvironmentLight{});
+    auto renderer = make_renderer(lpv_sky_graph(R"({ "id": "sky", "type": "env.load", "params": { "path": ")" +
+                                                path.string() + R"(", "face_size": 8, "intensity": )" + intensity +
+                                                " } }"));
+    renderer->render(world, kFrame);
+    const std::vector<std::byte> sh = renderer->executor().read_buffer("sh.sh");
+    float first[4];
+    std::memcpy(first, sh.data(), sizeof(first));
+    std::printf("intensity %s: the SH's first coefficient %g %g %g\n", intensity, first[0], first[1], first[2]);
+    const std::vector<float> out = renderer->executor().read_image("lpv.irradiance");
+    size_t bad = 0, covered = 0;
+    for (size_t i = 0; i < out.size(); ++i) {
+      bad += !std::isfinite(out[i]);
+      covered += i % 4 == 3 && out[i] > 0.5f;
+    }
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(covered, 0u);
+    expect_no_validation_messages(renderer->context());
   }
-  EXPECT_EQ(bad, 0u);
-  EXPECT_GT(covered, 0u);
-  expect_no_validation_messages(renderer->context());
 }
 
 }  // namespace
