@@ -36,15 +36,16 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kFixedRange = 1073741824.0;  // 2^30: the most any fixed-point sum may reach
 constexpr double kLobePeak = 1.02332671;      // the largest coefficient of sh_l1_cosine_lobe
-// A triangle's blocking in a cell is at most 1 x kLobePeak (lpv_voxelize.comp): 2^16 units a unit
-// keeps 2^15 of them in a cell within an int, which no cell's surfaces come near.
+// A triangle's blocking in a cell is at most 1 x kLobePeak (lpv_voxelize.comp), its offset at most
+// sqrt(3) / 2: 2^16 units a unit keeps 2^15 of them in a cell within an int, which no cell's
+// surfaces come near.
 constexpr double kOcclusionUnit = 65536.0;
 
 struct Constants {  // shaders/lpv_common.glsl
   glm::vec4 origin_cell;
   glm::ivec4 counts;
   glm::vec4 light;
-  glm::vec4 scales;  // x, y: fixed-point scales; z: 1 when a light was injected (the coverage)
+  glm::vec4 scales;  // x, y: fixed-point scales; z: 1 when a light or the sky was injected (the coverage)
 };
 
 struct RsmLight {  // shaders/lpv_rsm.frag
@@ -135,6 +136,7 @@ class LpvKernel final : public NodeKernel {
       shadow_from_world_ = shadow_from_world(*scene_bounds_, d.direction);
     }
     c.scales = glm::vec4(float(scale), float(kOcclusionUnit), light_present_ ? 1.0f : 0.0f, 0.0f);
+    constants_value_ = c;
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       rsm_light_.emplace(ctx.gpu(), ctx.node().id + " rsm light", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -157,24 +159,27 @@ class LpvKernel final : public NodeKernel {
       return Buffer::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name, .size = cells * bytes_per_cell});
     };
     light_fixed_ = buffer("injected light", 48);
-    occlusion_fixed_ = buffer("injected occlusion", 16);
+    occlusion_fixed_ = buffer("injected occlusion", 48);  // lpv_voxelize.comp
     sum_ = buffer("light sum", 48);
-    auto image = [&](const std::string& name, VkFormat format) {
+    auto image = [&](const std::string& name, VkFormat format, VkImageUsageFlags extra_usage = 0) {
       return Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name,
                                           .kind = ImageKind::image3d,
                                           .format = format,
                                           .width = uint32_t(grid_.counts.x),
                                           .height = uint32_t(grid_.counts.y),
                                           .depth = uint32_t(grid_.counts.z),
-                                          .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
+                                          .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | extra_usage});
     };
     const char* channels[3] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {
       sum_images_[c] = image(std::string("light sum ") + channels[c], VK_FORMAT_R16G16B16A16_SFLOAT);
       light_[0][c] = image(std::string("light a ") + channels[c], VK_FORMAT_R32G32B32A32_SFLOAT);
       light_[1][c] = image(std::string("light b ") + channels[c], VK_FORMAT_R32G32B32A32_SFLOAT);
+      sky_images_[c] = image(std::string("sky ") + channels[c], VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     }
+    sky_images_[3] = image("sky openness", VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     occlusion_grid_ = image("occlusion", VK_FORMAT_R32G32B32A32_SFLOAT);
+    sky_planes_ = image("sky planes", VK_FORMAT_R32G32B32A32_SFLOAT);
     images_new_ = true;
     allocated_counts_ = grid_.counts;
   }
@@ -230,6 +235,12 @@ class LpvKernel final : public NodeKernel {
   // see, so it could not order separate passes by them).
   void record_volume(PassContext& ctx) {
     prepare(ctx);
+    // The sky's light: the environment's SH linked, in a scene with an environment. It lights the
+    // grid's box without the sun too, so it covers it.
+    sky_ = ctx.has("in.sh") && ctx.scene().has_environment;
+    Constants c = constants_value_;
+    c.scales.z = light_present_ || sky_ ? 1.0f : 0.0f;
+    constants_->write_value(c);
     inject(ctx);
     propagate(ctx);
     lookup(ctx);
@@ -239,25 +250,36 @@ class LpvKernel final : public NodeKernel {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_)
       for (const Image* image : {&sum_images_[0], &sum_images_[1], &sum_images_[2], &light_[0][0], &light_[0][1],
-                                 &light_[0][2], &light_[1][0], &light_[1][1], &light_[1][2], &occlusion_grid_})
+                                 &light_[0][2], &light_[1][0], &light_[1][1], &light_[1][2], &occlusion_grid_,
+                                 &sky_planes_, &sky_images_[0], &sky_images_[1], &sky_images_[2], &sky_images_[3]})
         image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    // Without the sky the lookup reads its images as zeros (cleared with the sums below).
+    const bool clear_sky = !sky_ && (images_new_ || sky_written_);
+    sky_written_ = sky_;
     images_new_ = false;
     // Last frame's resolve read the fixed-point sums; clear them for this frame's atomics.
     memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
                    {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     vkCmdFillBuffer(cmd, light_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, occlusion_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
+    if (clear_sky) {
+      const VkClearColorValue zero{};
+      const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+      for (const Image& image : sky_images_) vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+    }
     memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                   {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+                   {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                                                                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                                                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
     const uint32_t size = ctx.image("tmp.rsm_position").desc().width;
     const DescriptorWrite inject[] = {uniform_buffer(0, constants_->handle()),
                                       sampled_image(1, ctx.image("tmp.rsm_position").view(), ctx.nearest_sampler()),
                                       sampled_image(2, ctx.image("tmp.rsm_normal").view(), ctx.nearest_sampler()),
                                       sampled_image(3, ctx.image("tmp.rsm_flux").view(), ctx.nearest_sampler()),
                                       storage_buffer(4, light_fixed_.handle())};
-    // The first step is not blocked (propagate), so one step or no light needs no geometry volume.
-    if (occlusion_ && light_present_ && iterations_ > 1) voxelize(ctx);
+    // The first step is not blocked (propagate), so one step or no light needs no geometry volume;
+    // the sky's light always does.
+    if ((occlusion_ && light_present_ && iterations_ > 1) || sky_) voxelize(ctx);
     if (light_present_) dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_inject.comp", inject, size, size);
     compute_to_compute_barrier(cmd);
     const DescriptorWrite resolve[] = {uniform_buffer(0, constants_->handle()),
@@ -267,8 +289,36 @@ class LpvKernel final : public NodeKernel {
                                        storage_image(4, light_[0][1].view()),
                                        storage_image(5, light_[0][2].view()),
                                        storage_buffer(6, sum_.handle()),
-                                       storage_image(7, occlusion_grid_.view())};
+                                       storage_image(7, occlusion_grid_.view()),
+                                       storage_image(8, sky_planes_.view())};
     dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_resolve.comp", resolve);
+    if (sky_) add_sky(ctx), add_sky_bounce(ctx);
+  }
+
+  // The sky's light through the geometry volume into its images (lpv_sky.comp), after the resolve
+  // wrote the planes; the lookup's barrier orders it before the lookup reads them.
+  void add_sky(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), general_sampled(ctx, 1, sky_planes_),
+                                      storage_buffer(2, ctx.buffer("in.sh").handle()),
+                                      storage_image(3, sky_images_[0].view()),
+                                      storage_image(4, sky_images_[1].view()),
+                                      storage_image(5, sky_images_[2].view()),
+                                      storage_image(6, sky_images_[3].view())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_sky.comp", writes);
+  }
+
+  // The sky's light the surfaces reflect, into the injected light and the sum (lpv_sky_bounce.comp),
+  // after the march wrote the sky's images; the propagation's first barrier orders it before.
+  void add_sky_bounce(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());
+    const DescriptorWrite writes[] = {
+        uniform_buffer(0, constants_->handle()),          storage_buffer(1, occlusion_fixed_.handle()),
+        linear_general(ctx, 2, sky_images_[0]),           linear_general(ctx, 3, sky_images_[1]),
+        linear_general(ctx, 4, sky_images_[2]),           linear_general(ctx, 5, sky_images_[3]),
+        storage_buffer(6, sum_.handle()),                 storage_image(7, light_[0][0].view()),
+        storage_image(8, light_[0][1].view()),            storage_image(9, light_[0][2].view())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_sky_bounce.comp", writes);
   }
 
   // The geometry volume from every draw's triangles (lpv_voxelize.comp).
@@ -311,6 +361,7 @@ class LpvKernel final : public NodeKernel {
     for (uint32_t c = 0; c < 3; ++c)
       writes.push_back(sampled_image(4 + c, sum_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
     writes.push_back(storage_image(7, target.view()));
+    for (uint32_t c = 0; c < 4; ++c) writes.push_back(linear_general(ctx, 8 + c, sky_images_[c]));
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)));
     if (ctx.has("out.volume")) write_volume(ctx);
@@ -345,6 +396,11 @@ class LpvKernel final : public NodeKernel {
     return sampled_image(binding, image.view(), ctx.nearest_sampler(), VK_IMAGE_LAYOUT_GENERAL);
   }
 
+  // A grid image filtered by the sampler (kept in the GENERAL layout, as it is also written).
+  static DescriptorWrite linear_general(PassContext& ctx, uint32_t binding, Image& image) {
+    return sampled_image(binding, image.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL);
+  }
+
   // One invocation per cell: x across the grid, y down its rows of every slice (lpv_common.glsl).
   void dispatch_cells(PassContext& ctx, std::string_view shader, std::span<const DescriptorWrite> writes,
                       std::span<const std::byte> push = {}) {
@@ -359,6 +415,9 @@ class LpvKernel final : public NodeKernel {
   CellGrid grid_;
   glm::mat4 shadow_from_world_{1.0f};
   bool light_present_ = false;
+  bool sky_ = false;          // the sky's light added (record_volume)
+  bool sky_written_ = false;  // the sky's images hold last frame's sky
+  Constants constants_value_{};  // as prepare() wrote them
   glm::ivec3 allocated_counts_{0};  // none yet
   std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
   Buffer light_fixed_, occlusion_fixed_, sum_;
@@ -367,6 +426,9 @@ class LpvKernel final : public NodeKernel {
   std::array<std::array<Image, 3>, 2> light_;
   std::array<Image, 3> sum_images_;
   Image occlusion_grid_;
+  Image sky_planes_;  // per cell its surfaces' mean plane, for the sky's march (lpv_resolve.comp)
+  // The sky's light per channel (SH L1 radiance x openness, rgba16f) and the openness (r).
+  std::array<Image, 4> sky_images_;
   bool images_new_ = false;  // not yet in the GENERAL layout
 };
 

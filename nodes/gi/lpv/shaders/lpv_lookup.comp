@@ -3,7 +3,10 @@
 // gi.lpv's lookup, one invocation per G-buffer pixel: the summed intensity trilinearly half a
 // cell out along the normal (the sampler filters lpv_store.comp's images, edges clamped), as
 // radiance over a cell face (intensity / cell^2), read as a lobe (sh_l1_lobe) and convolved with
-// the cosine about the normal for the light arriving at it (travelling along -n). rgb: irradiance, W/m^2; a: coverage, 1
+// the cosine about the normal for the light arriving at it (travelling along -n); plus the sky's
+// light (lpv_sky.comp; zero images without it) at the same point: the filtered radiance over the
+// filtered openness, its L1 convolved with the cosine (linear: an open hemisphere gives pi L).
+// rgb: irradiance, W/m^2; a: coverage, 1
 // where the surface lies in the grid's box, 0 outside it, on the sky and in a frame without a
 // directional light (scales.z). The target is the output itself, or at resolution_scale 1/k below
 // 1 a smaller image whose texel i is the G-buffer's texel upsample_source_texel(i, k), which
@@ -23,6 +26,10 @@ layout(binding = 4) uniform sampler3D sum_red;
 layout(binding = 5) uniform sampler3D sum_green;
 layout(binding = 6) uniform sampler3D sum_blue;
 layout(binding = 7, rgba16f) uniform writeonly image2D irradiance;
+layout(binding = 8) uniform sampler3D sky_red;
+layout(binding = 9) uniform sampler3D sky_green;
+layout(binding = 10) uniform sampler3D sky_blue;
+layout(binding = 11) uniform sampler3D sky_openness;
 layout(push_constant) uniform Push {
   int k;  // the G-buffer's resolution over the target's
 };
@@ -46,5 +53,10 @@ void main() {
   // lpv_store.comp stored radiance; the light arriving travels along w with w . n < 0.
   vec3 e = vec3(sh_l1_lobe_convolve(sh_l1_lobe(sh[0]), -n), sh_l1_lobe_convolve(sh_l1_lobe(sh[1]), -n),
                 sh_l1_lobe_convolve(sh_l1_lobe(sh[2]), -n));
+  float open = textureLod(sky_openness, uvw, 0.0).r;
+  vec4 cosine = sh_l1_cosine_lobe(-n) / max(open, 1e-3);  // the light arriving travels along -n
+  vec3 sky = vec3(dot(textureLod(sky_red, uvw, 0.0), cosine), dot(textureLod(sky_green, uvw, 0.0), cosine),
+                  dot(textureLod(sky_blue, uvw, 0.0), cosine));
+  e += max(sky, vec3(0.0));
   imageStore(irradiance, texel, vec4(clamp(finite_or_zero(max(e, vec3(0.0))), 0.0, 65504.0), lpv.scales.z));
 }

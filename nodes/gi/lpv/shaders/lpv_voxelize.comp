@@ -4,7 +4,12 @@
 // slab of cell layers (as gi.voxel's voxelize.comp: the loop stays under lavapipe's 65,535
 // iterations): every cell the triangle overlaps (triangle_box.glsl) gets its blocking potential,
 // min(area / cell^2, 1) x the cosine lobe of its normal (Kaplanyan and Dachsbacher), in
-// fixed point with integer atomics (order-independent). Every surface blocks, lit or not and seen
+// fixed point with integer atomics (order-independent); beside it, for the sky's march
+// (lpv_sky.comp), the same weight times the triangle's plane: its normal turned to the side of
+// kPlaneSide (so that the two faces of a slab add up, not cancel) and its signed distance from
+// the cell's centre along that normal, summed into the cell's mean plane; and its diffuse colour
+// (base colour x the mean vertex colour x (1 - metalness), as gi.voxel's), for the sky's light
+// the cell's surfaces reflect (lpv_sky_bounce.comp). Every surface blocks, lit or not and seen
 // by the camera or not: from the RSM's surfels alone, a wall in shadow did not block, and light
 // leaked through it. The normal is the face's, turned to the side the vertex normals face.
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
@@ -17,7 +22,9 @@ layout(local_size_x = 8, local_size_y = 8) in;  // triangles x slabs (lpv_kernel
 layout(std430, binding = 1) readonly buffer Draws { Draw draws[]; };
 layout(std430, binding = 2) readonly buffer Vertices { float vertices[]; };  // GpuVertex: 18 floats
 layout(std430, binding = 3) readonly buffer Indices { uint indices[]; };
-layout(std430, binding = 4) buffer OcclusionFixed { int occlusion_fixed[]; };  // 4 a cell
+// 12 a cell: the lobe's four coefficients, the planes' weighted normals (x, y, z) and distances,
+// the weighted diffuse colour (r, g, b) and one unused.
+layout(std430, binding = 4) buffer OcclusionFixed { int occlusion_fixed[]; };
 layout(push_constant) uniform Push {
   uint draw_index;
   uint first_triangle;
@@ -25,7 +32,10 @@ layout(push_constant) uniform Push {
   uint slab_layers;
 };
 
-// GpuVertex's position (floats 0-2) or normal (3-5).
+// Off every axis and diagonal, so that no wall of a box turns its faces both ways.
+const vec3 kPlaneSide = vec3(0.48, 0.57, 0.67);
+
+// GpuVertex's position (floats 0-2), normal (3-5) or colour (14-16).
 vec3 vertex_vec3(uint v, uint offset) {
   uint o = 18u * v + offset;
   return vec3(vertices[o], vertices[o + 1u], vertices[o + 2u]);
@@ -52,7 +62,11 @@ void main() {
   vec3 unit_normal = n / len;
   vec3 vertex_normals = mat3(d.normal_matrix) * (vertex_vec3(i0, 3u) + vertex_vec3(i1, 3u) + vertex_vec3(i2, 3u));
   if (dot(vertex_normals, unit_normal) < 0.0) unit_normal = -unit_normal;
-  ivec4 v = ivec4(round(min(0.5 * len, 1.0) * sh_l1_cosine_lobe(unit_normal) * lpv.scales.y));
+  float weight = min(0.5 * len, 1.0) * lpv.scales.y;
+  ivec4 v = ivec4(round(weight * sh_l1_cosine_lobe(unit_normal)));
+  vec3 color = (vertex_vec3(i0, 14u) + vertex_vec3(i1, 14u) + vertex_vec3(i2, 14u)) / 3.0;
+  ivec3 albedo = ivec3(round(weight * clamp(finite_or_zero(d.base_color.rgb * color * (1.0 - d.material.y)), 0.0, 1.0)));
+  vec3 side_normal = dot(unit_normal, kPlaneSide) < 0.0 ? -unit_normal : unit_normal;
 
   ivec3 counts = lpv.counts.xyz;
   if (any(greaterThan(min(a, min(b, c)), vec3(counts))) || any(lessThan(max(a, max(b, c)), vec3(0.0)))) return;
@@ -63,8 +77,14 @@ void main() {
       for (int x = lo.x; x <= hi.x; ++x) {
         if (!triangle_overlaps_box(a - (vec3(x, y, z) + 0.5), b - (vec3(x, y, z) + 0.5), c - (vec3(x, y, z) + 0.5), n))
           continue;
-        uint base = 4u * lpv_cell_index(ivec3(x, y, z));
+        uint base = 12u * lpv_cell_index(ivec3(x, y, z));
         for (int k = 0; k < 4; ++k)
           if (v[k] != 0) atomicAdd(occlusion_fixed[base + uint(k)], v[k]);
+        // The distance is within sqrt(3) / 2 cells: the plane crosses the cell.
+        ivec4 plane = ivec4(round(weight * vec4(side_normal, dot(a - (vec3(x, y, z) + 0.5), side_normal))));
+        for (int k = 0; k < 4; ++k)
+          if (plane[k] != 0) atomicAdd(occlusion_fixed[base + 4u + uint(k)], plane[k]);
+        for (int k = 0; k < 3; ++k)
+          if (albedo[k] != 0) atomicAdd(occlusion_fixed[base + 8u + uint(k)], albedo[k]);
       }
 }
