@@ -19,6 +19,7 @@
 #include "nodes/gi/common/main_light.h"
 #include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/gi/lpv/lpv_model.h"
+#include "nodes/lighting/deferred/shadow_depth_pipeline.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
@@ -50,12 +51,6 @@ struct Constants {  // shaders/lpv_common.glsl
 
 struct RsmLight {  // shaders/lpv_rsm.frag
   glm::vec4 direction, irradiance;
-};
-
-struct RsmPush {  // lighting.deferred's shadow_draw.glsl
-  glm::mat4 shadow_from_world;
-  uint32_t draw_index;
-  uint32_t pad[3];
 };
 
 // lpv_model.h's face table as shaders/lpv_propagate.comp reads it: 30 bases, then 30 lobes.
@@ -141,13 +136,16 @@ class LpvKernel final : public NodeKernel {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       rsm_light_.emplace(ctx.gpu(), ctx.node().id + " rsm light", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      draw_blocks_.emplace(ctx.gpu(), ctx.node().id + " draw blocks", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       faces_.emplace(ctx.gpu(), ctx.node().id + " faces", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       faces_->write(face_table());
     }
     constants_->write_value(c);
     rsm_light_->write_value(l);
-    draws_->write(draw_constants(scene));
+    const std::vector<DrawConstants> draws = draw_constants(scene);
+    draws_->write(draws);
+    draw_blocks_->write(draw_blocks(draws));  // the reflective shadow map's (shadow_draw.glsl)
   }
 
   // The grids, sized when the counts change (the box of a moving world may change them). The
@@ -200,11 +198,12 @@ class LpvKernel final : public NodeKernel {
     if (light_present_) {
       const Pipeline& pipeline = rsm_pipeline(ctx, position.desc().format, depth.desc().format);
       set_viewport(cmd, size, size);
-      const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle()), uniform_buffer(1, rsm_light_->handle())};
-      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       const SceneView& scene = ctx.scene();
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-        push_constants(cmd, pipeline, RsmPush{shadow_from_world_, i, {}});
+        const DescriptorWrite writes[] = {shadow_draw_block(draw_blocks_->handle(), i),
+                                          uniform_buffer(1, rsm_light_->handle())};
+        bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+        push_constants(cmd, pipeline, ShadowDrawPush{shadow_from_world_});
         draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
       }
     }
@@ -218,8 +217,8 @@ class LpvKernel final : public NodeKernel {
     desc.name = ctx.pass().name;
     desc.vertex_shader = node_shader("nodes/gi/lpv/shaders/lpv_rsm.vert");
     desc.fragment_shader = node_shader("nodes/gi/lpv/shaders/lpv_rsm.frag");
-    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
-    desc.push_constant_bytes = sizeof(RsmPush);
+    desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+    desc.push_constant_bytes = sizeof(ShadowDrawPush);
     // Exactly the attributes lpv_rsm.vert reads.
     desc.vertex_bindings = {{0, sizeof(GpuVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(GpuVertex, position)},
@@ -419,7 +418,7 @@ class LpvKernel final : public NodeKernel {
   bool sky_written_ = false;  // the sky's images hold last frame's sky
   Constants constants_value_{};  // as prepare() wrote them
   glm::ivec3 allocated_counts_{0};  // none yet
-  std::optional<HostBuffer> constants_, rsm_light_, draws_, camera_, faces_;
+  std::optional<HostBuffer> constants_, rsm_light_, draws_, draw_blocks_, camera_, faces_;
   Buffer light_fixed_, occlusion_fixed_, sum_;
   // Per channel: the light each step sends on, in turn (rgba32f, lpv_outflow's form), and the sum
   // the lookup filters (rgba16f radiance); the occlusion.

@@ -161,12 +161,14 @@ class VoxelKernel final : public NodeKernel {
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      draw_blocks_.emplace(ctx.gpu(), ctx.node().id + " draw blocks", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       no_sh_.emplace(ctx.gpu(), ctx.node().id + " no SH", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
       no_sh_->write(std::vector<float>(4, 0.0f));
     }
     constants_->write_value(c);
     draws_->write(draws);
+    draw_blocks_->write(draw_blocks(draws));  // the shadow pass's (shadow_depth_pipeline.h)
   }
 
   // The sums and the chain, sized when the counts change (the box of a moving world may change
@@ -212,11 +214,11 @@ class VoxelKernel final : public NodeKernel {
     if (light_present_ && rebuild_) {
       const Pipeline& pipeline = shadow_depth_pipeline(ctx, map.desc().format, false);
       set_viewport(cmd, size, size);
-      const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle())};
-      bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
       const SceneView& scene = ctx.scene();
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-        push_constants(cmd, pipeline, ShadowDrawPush{shadow_from_world_, i, {}});
+        const DescriptorWrite writes[] = {shadow_draw_block(draw_blocks_->handle(), i)};
+        bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+        push_constants(cmd, pipeline, ShadowDrawPush{shadow_from_world_});
         draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));
       }
     }
@@ -412,7 +414,7 @@ class VoxelKernel final : public NodeKernel {
   bool light_present_ = false;
   glm::ivec3 allocated_counts_{0};  // none yet
   uint32_t levels_ = 1;
-  std::optional<HostBuffer> constants_, draws_, camera_;
+  std::optional<HostBuffer> constants_, draws_, draw_blocks_, camera_;
   std::optional<HostBuffer> no_sh_;  // bound in place of the SH where the sky is not injected
   Buffer grid_sums_;
   std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)

@@ -65,7 +65,7 @@ class DeferredKernel final : public NodeKernel {
     prepared_frame_ = ctx.frame_index();
     if (!lights_) {
       lights_.emplace(ctx.gpu(), ctx.node().id);
-      draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      draw_blocks_.emplace(ctx.gpu(), ctx.node().id + " draw blocks", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     }
     const SceneView& scene = ctx.scene();
     if (bounds_version_ != scene.version || !bounds_) {
@@ -81,7 +81,7 @@ class DeferredKernel final : public NodeKernel {
     if (caster >= 0) c.shadow_from_world = shadow_from_world(*bounds_, scene.directional_lights[caster].direction);
     lights_->write_lights(lights, caster, local_, c);
     constants_ = c;
-    draws_->write(draw_constants(scene));
+    draw_blocks_->write(draw_blocks(draw_constants(scene)));
   }
 
   void record_shadows(PassContext& ctx) {
@@ -121,8 +121,7 @@ class DeferredKernel final : public NodeKernel {
 
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBeginRendering(cmd, &rendering);
-    // Opaque draws share one binding; each alpha-tested draw binds its own texture.
-    const Pipeline* bound = nullptr;
+    // Each draw binds its own block (shadow_draw.glsl), an alpha-tested one its texture too.
     for (const DepthView& view : views) {
       const VkViewport viewport{float(view.origin.x), float(view.origin.y), float(view.size), float(view.size), 0, 1};
       const VkRect2D scissor{{int32_t(view.origin.x), int32_t(view.origin.y)}, {view.size, view.size}};
@@ -132,17 +131,12 @@ class DeferredKernel final : public NodeKernel {
         const PbrMaterial& m = scene.material_of(scene.draws[i]);
         const bool tested = light_alpha_cutoff(m) > 0.0f;
         const Pipeline& pipeline = tested ? alpha_tested : opaque;
-        if (tested) {
-          const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle()),
-                                            sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
-                                                          gpu_scene.sampler(m.base_color_texture.sampling))};
-          bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
-        } else if (bound != &opaque) {
-          const DescriptorWrite writes[] = {storage_buffer(0, draws_->handle())};
-          bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
-        }
-        bound = &pipeline;
-        push_constants(cmd, pipeline, ShadowDrawPush{view.clip_from_world, i, {}});
+        std::vector<DescriptorWrite> writes = {shadow_draw_block(draw_blocks_->handle(), i)};
+        if (tested)
+          writes.push_back(sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
+                                         gpu_scene.sampler(m.base_color_texture.sampling)));
+        bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+        push_constants(cmd, pipeline, ShadowDrawPush{view.clip_from_world});
         draw_mesh(cmd, gpu_scene.mesh(scene.draws[i].mesh));
       }
     }
@@ -226,7 +220,7 @@ class DeferredKernel final : public NodeKernel {
   const uint32_t shadow_budget_, atlas_size_, area_shadow_samples_;
   const bool cull_lights_, area_specular_ltc_;
   std::optional<LightBuffers> lights_;
-  std::optional<HostBuffer> draws_;
+  std::optional<HostBuffer> draw_blocks_;
   LightConstants constants_{};
   std::optional<Bounds> bounds_;
   uint64_t bounds_version_ = 0;

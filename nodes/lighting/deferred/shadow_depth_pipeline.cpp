@@ -3,11 +3,16 @@
 #include <cstddef>
 
 #include "nodes/common/node_shaders.h"
+#include "nodes/scene/gbuffer/draw_constants.h"
 #include "runtime/exec/gpu_scene.h"
 #include "runtime/exec/node_kernel.h"
 #include "runtime/gpu/pipeline.h"
 
 namespace lg {
+
+DescriptorWrite shadow_draw_block(VkBuffer blocks, uint32_t draw) {
+  return uniform_buffer(0, blocks, draw * draw_block_stride, sizeof(DrawConstants));
+}
 
 const Pipeline& shadow_depth_pipeline(PassContext& ctx, VkFormat depth_format, bool alpha_tested) {
   GraphicsPipelineDesc desc;
@@ -16,7 +21,7 @@ const Pipeline& shadow_depth_pipeline(PassContext& ctx, VkFormat depth_format, b
                                                 : "nodes/lighting/deferred/shaders/shadow.vert");
   desc.fragment_shader = node_shader(alpha_tested ? "nodes/lighting/deferred/shaders/shadow_masked.frag"
                                                   : "nodes/lighting/deferred/shaders/shadow.frag");
-  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+  desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
   if (alpha_tested) desc.bindings.push_back({1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
   desc.push_constant_bytes = sizeof(ShadowDrawPush);
   // Exactly the attributes shadow_vertex.glsl reads: validation flags any other.

@@ -1,5 +1,5 @@
 // Depth from a light through lighting.deferred's shadow shaders (shaders/shadow_draw.glsl): the
-// push constants of one draw and the pipeline, shared by lighting.deferred's shadow maps and
+// push constants and the block of one draw and the pipeline, shared by lighting.deferred's shadow maps and
 // gi.voxel's.
 #pragma once
 
@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 
+#include "runtime/gpu/descriptors.h"
+
 namespace lg {
 
 class PassContext;
@@ -15,13 +17,14 @@ struct Pipeline;
 
 struct ShadowDrawPush {  // shaders/shadow_draw.glsl
   glm::mat4 shadow_from_world;
-  uint32_t draw_index;
-  uint32_t pad[3];
 };
 
+// Draw `draw`'s block at binding 0: its range of `blocks`, a uniform buffer of draw_blocks().
+DescriptorWrite shadow_draw_block(VkBuffer blocks, uint32_t draw);
+
 // Depth of `depth_format` from positions (shaders/shadow.vert), or alpha-tested against the
-// draw's base colour (shaders/shadow_masked.*), binding the draws at 0 (and the base colour at 1
-// when alpha-tested). Both sides of every face: a wall modelled as one single-sided plane must not
+// draw's base colour (shaders/shadow_masked.*), binding the draw's block at 0 (and the base
+// colour at 1 when alpha-tested). Both sides of every face: a wall modelled as one single-sided plane must not
 // let light through from behind.
 const Pipeline& shadow_depth_pipeline(PassContext& ctx, VkFormat depth_format, bool alpha_tested);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
@@ -41,6 +42,13 @@ std::vector<DrawConstants> draw_constants(const SceneView& scene) {
     for (int t = 0; t < material_map_count; ++t) uv_transform_rows(*maps[size_t(t)], &c.uv_transforms[2 * t]);
   }
   return out;
+}
+
+std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants) {
+  std::vector<std::byte> bytes(std::max<size_t>(constants.size(), 1) * draw_block_stride);
+  for (size_t i = 0; i < constants.size(); ++i)
+    std::memcpy(bytes.data() + i * draw_block_stride, &constants[i], sizeof(DrawConstants));
+  return bytes;
 }
 
 }  // namespace lg

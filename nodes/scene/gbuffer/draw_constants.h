@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 #include <vector>
@@ -42,5 +43,13 @@ void uv_transform_rows(const TextureRef& ref, glm::vec4 rows[2]);
 
 // One per SceneView::draws entry, in order.
 std::vector<DrawConstants> draw_constants(const SceneView& scene);
+
+// Each draw's constants as a uniform block bound per draw (draw.glsl's DrawBlock, the shadow
+// passes' shadow_draw.glsl): lavapipe loads a storage buffer one lane at a time even where every
+// lane reads the same draw (docs/lavapipe-costs.md). Draw i's block starts at i times this
+// stride, a multiple of 256 bytes, the largest minUniformBufferOffsetAlignment Vulkan allows, so
+// any device takes it.
+inline constexpr size_t draw_block_stride = (sizeof(DrawConstants) + 255) / 256 * 256;
+std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants);
 
 }  // namespace lg

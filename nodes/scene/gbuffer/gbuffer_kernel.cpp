@@ -1,7 +1,6 @@
 #include "nodes/scene/gbuffer/gbuffer_kernel.h"
 
 #include <algorithm>
-#include <cstring>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -62,7 +61,7 @@ class GbufferKernel final : public NodeKernel {
       const PbrMaterial& m = scene.material_of(d);
       if (m.alpha_mode == AlphaMode::blend) continue;  // scene.forward_transparent draws it
       std::vector<DescriptorWrite> writes = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
-                                             uniform_buffer(6, draw_blocks_->handle(), i * kDrawBlockStride,
+                                             uniform_buffer(6, draw_blocks_->handle(), i * draw_block_stride,
                                                             sizeof(DrawConstants))};
       add_material_textures(gpu_scene, m, writes);
       Variant kind = m.alpha_mode == AlphaMode::mask ? masked : textured;
@@ -84,18 +83,6 @@ class GbufferKernel final : public NodeKernel {
   // Depth, then the colour targets: normal, albedo, material, motion, emissive (graph/port_type.cpp).
   static constexpr int gbuffer_targets = 6;
 
-  // One draw's uniform block (draw.glsl's DrawBlock: the fragment stage, and the vertex stage of
-  // plain draws) starts at a multiple of 256 bytes, the largest minUniformBufferOffsetAlignment
-  // Vulkan allows, so any device takes it.
-  static constexpr size_t kDrawBlockStride = (sizeof(DrawConstants) + 255) / 256 * 256;
-
-  static std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants) {
-    std::vector<std::byte> bytes(std::max<size_t>(constants.size(), 1) * kDrawBlockStride);
-    for (size_t i = 0; i < constants.size(); ++i)
-      std::memcpy(bytes.data() + i * kDrawBlockStride, &constants[i], sizeof(DrawConstants));
-    return bytes;
-  }
-
   // Shader variants (gbuffer_surface.glsl): factors only for draws without textures or vertex
   // colours (fewer inputs to interpolate), the whole material, or the whole material with the
   // alpha test.
@@ -110,7 +97,7 @@ class GbufferKernel final : public NodeKernel {
     GraphicsPipelineDesc desc;
     desc.name = ctx.pass().name;
     desc.vertex_shader = node_shader(kind == plain ? "nodes/scene/gbuffer/shaders/gbuffer_plain.vert"
-                                                   : "nodes/scene/gbuffer/shaders/gbuffer.vert");
+                                                   : "nodes/scene/gbuffer/shaders/gbuffer_maps.vert");
     desc.fragment_shader = node_shader(fragment_shaders[kind]);
     desc.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},

@@ -22,7 +22,7 @@ layout(location = 1) out vec4 out_normal;
 layout(location = 2) out vec4 out_flux;
 
 void main() {
-  Draw d = draws[draw_index];
+  Draw d = this_draw;
   // A degenerate vertex normal: the face's own, from the position's screen derivatives (taken
   // outside any branch, where derivatives are defined).
   vec3 face = cross(dFdx(world_position), dFdy(world_position));

@@ -11,7 +11,7 @@ layout(location = 0) in vec4 texcoords;
 layout(location = 1) in float vertex_alpha;
 
 void main() {
-  Draw d = draws[draw_index];
+  Draw d = this_draw;
   float alpha = d.base_color.a * vertex_alpha;
   if (draw_has_map(d, LG_BASE_COLOR_MAP))
     alpha *= texture(base_color_texture, draw_map_uv(d, LG_BASE_COLOR_MAP, texcoords)).a;

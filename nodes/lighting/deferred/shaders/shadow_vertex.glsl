@@ -12,7 +12,7 @@ layout(location = 1) out float vertex_alpha;
 #endif
 
 void main() {
-  gl_Position = shadow_from_world * (draws[draw_index].world * vec4(position, 1.0));
+  gl_Position = shadow_from_world * (this_draw.world * vec4(position, 1.0));
 #ifdef LG_ALPHA_TEST
   texcoords = vec4(uv, uv1);
   vertex_alpha = color.a;

@@ -126,10 +126,7 @@ void main() {
   vec3 r = reflect(-v, n);
   float mips = float(textureQueryLevels(specular_map));
   vec3 reflected = intensity * textureLod(specular_map, sky ? -v : r, sky ? 0.0 : roughness * (mips - 1.0)).rgb;
-  if (sky) {
-    imageStore(color, texel, vec4(direct + reflected, 1.0));
-    return;
-  }
+  vec3 sky_color = direct + reflected;
   if ((flags & 256u) != 0u) {
     vec4 probes = texelFetch(probes_tex, texel, 0);
     reflected = mix(reflected, probes.rgb, clamp(probes.a, 0.0, 1.0));
@@ -145,5 +142,7 @@ void main() {
     specular *= specular_occlusion_from_ao(n_dot_v, visibility, roughness);
   if (material_occlusion < 1.0) specular *= specular_occlusion_from_ao(n_dot_v, material_occlusion, roughness);
 
-  imageStore(color, texel, vec4(direct + diffuse + specular, 1.0));
+  // One store for sky and surface: lavapipe runs both sides of a branch, so a store on each
+  // side cost two a pixel.
+  imageStore(color, texel, vec4(sky ? sky_color : direct + diffuse + specular, 1.0));
 }

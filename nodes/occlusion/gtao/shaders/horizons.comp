@@ -126,12 +126,7 @@ void main() {
   vec2 uv = (vec2(pixel) + 0.5) * viewport.zw;
   float device_depth = texelFetch(depth_mips, texel, 0).r;
   float z = linear_depth(device_depth);
-  if (!(z < 1e7)) {  // no surface: nothing occludes the sky
-    store_visibility(texel, 1.0, 0.0, vec3(0.0, 0.0, 1.0));
-    imageStore(edges, texel, vec4(1.0));
-    imageStore(bent_normals, texel, vec4(0.0, 0.0, 0.0, 0.0));
-    return;
-  }
+  bool sky = !(z < 1e7);  // no surface: nothing occludes the sky (its lanes' arithmetic below is unused)
   vec3 p = view_position(uv, z);
   vec3 view_vec = normalize(-p);
   vec3 world_n = decode_normal(texelFetch(gbuffer_normal, pixel, 0).rgb);
@@ -219,7 +214,9 @@ void main() {
   vec3 world_bent = bent_length > 1e-6 ? normalize(mat3(world_from_view) * (bent / bent_length)) : world_n;
   // A cosine-weighted visible cone of half-angle a has visibility sin^2 a: its cosine is
   // sqrt(1 - visibility).
-  store_visibility(texel, visibility, device_depth, world_n);
-  imageStore(edges, texel, vec4(pack_edges(texel, grid, z)));
-  imageStore(bent_normals, texel, vec4(world_bent, sqrt(max(1.0 - visibility, 0.0))));
+  // One set of stores for sky and surface: lavapipe runs both sides of a branch, so the sky's
+  // early return cost a second set every pixel.
+  store_visibility(texel, sky ? 1.0 : visibility, sky ? 0.0 : device_depth, sky ? vec3(0.0, 0.0, 1.0) : world_n);
+  imageStore(edges, texel, vec4(sky ? 1.0 : pack_edges(texel, grid, z)));
+  imageStore(bent_normals, texel, sky ? vec4(0.0) : vec4(world_bent, sqrt(max(1.0 - visibility, 0.0))));
 }

@@ -18,7 +18,7 @@ layout(push_constant) uniform DrawIndex { uint draw_index; };
 // The G-buffer's stages read their draw as a uniform block (gbuffer_kernel.cpp binds each
 // draw's range of a buffer of them): lavapipe loads a storage buffer one lane at a time even
 // where every lane reads the same draw (docs/lavapipe-costs.md); draws[draw_index] was about
-// half of the G-buffer pass. The vertex stage of textured draws (gbuffer.vert) is shared with
+// half of the G-buffer pass. gbuffer.vert, the textured vertex stage without it, serves
 // scene.forward_transparent and the reflection capture, which bind only the storage buffer.
 layout(std140, binding = 6) uniform DrawBlock { Draw this_draw; };
 #endif

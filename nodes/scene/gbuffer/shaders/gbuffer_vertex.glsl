@@ -1,7 +1,8 @@
 // The G-buffer's vertex stage: one mesh into clip space, passing on what the fragment stage
 // (gbuffer_surface.glsl) stores; with LG_MATERIAL_MAPS also both uv sets, the tangent frame,
 // the vertex colour and the world position its material needs. With LG_DRAW_BLOCK (the
-// G-buffer's own variant, gbuffer_plain.vert) the draw comes from draw.glsl's uniform block.
+// G-buffer's own variants, gbuffer_plain.vert and gbuffer_maps.vert) the draw comes from
+// draw.glsl's uniform block.
 #include "nodes/scene/gbuffer/shaders/draw.glsl"
 
 layout(location = 0) in vec3 position;
