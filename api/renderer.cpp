@@ -32,7 +32,8 @@ Renderer::Renderer(const RendererOptions& options)
   if (options.pipeline_cache_on_disk && !pipeline_cache_disabled_by_environment() && !folder.empty()) {
     pipeline_store_ = std::make_unique<PipelineCacheStore>(*context_, folder);
     static_store_ = std::make_unique<StaticResultsStore>(
-        folder, StaticResultsIdentity{device_identity(context_->properties()), node_code_identity()});
+        folder, StaticResultsIdentity{device_identity(context_->properties()), node_code_identity()},
+        options.static_results_max_bytes);
   }
 }
 

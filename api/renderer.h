@@ -61,6 +61,8 @@ struct RendererOptions {
   // LUMAGRAPH_PIPELINE_CACHE=off in the environment turns both off too.
   bool pipeline_cache_on_disk = true;
   std::string pipeline_cache_folder{};
+  // The most bytes of static results the folder keeps: the least recently used go first.
+  uint64_t static_results_max_bytes = StaticResultsStore::default_max_bytes;
 };
 
 // What temporal nodes need of a frame beyond the world (post.exposure adapts over it): the time

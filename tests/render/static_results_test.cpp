@@ -38,6 +38,40 @@ RendererOptions options_with_cache(const fs::path& folder) {
   return options;
 }
 
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void write_file(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+// `text` with its first `from` replaced by `to`.
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// examples/default.json with small cubes and a sampled prefilter, so that the many first frames
+// here (each runs the static passes) stay quick; every static node and its resources are kept.
+const std::string& quick_graph_text() {
+  static const std::string text = [] {
+    std::string graph = with(read_file(kExamples + "default.json"), "\"sun_intensity\": 20 }",
+                             "\"sun_intensity\": 20, \"face_size\": 32 }");
+    return with(graph, "{ \"face_size\": 128, \"mips\": 6 }",
+                "{ \"face_size\": 32, \"mips\": 4, \"method\": \"sampled\", \"samples\": 16 }");
+  }();
+  return text;
+}
+
+// That graph written into `folder`: its path.
+std::string quick_graph(const fs::path& folder) {
+  write_file(folder / "quick.json", quick_graph_text());
+  return (folder / "quick.json").string();
+}
+
 struct Frame {
   std::vector<float> pixels;
   size_t static_passes = 0, cached = 0;  // of the first frame
@@ -64,15 +98,6 @@ std::vector<fs::path> results_files(const fs::path& folder) {
   for (const auto& entry : fs::directory_iterator(folder))
     if (entry.path().filename().string().starts_with("static-results-")) files.push_back(entry.path());
   return files;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 // The key a results file's name gives.
@@ -107,7 +132,7 @@ const Primed& primed() {
   static const Primed primed = [] {
     const fs::path folder = fresh_folder("primed");
     Primed p;
-    p.frame = first_frame(folder, kExamples + "default.json");
+    p.frame = first_frame(folder, quick_graph(folder));
     p.files = results_files(folder);
     if (p.files.size() == 1) p.bytes = read_file(p.files[0]);
     return p;
@@ -131,7 +156,7 @@ TEST(StaticResults, ASecondRendererLoadsThemAndRendersTheSameBytes) {
   ASSERT_EQ(primed().files.size(), 1u) << "written after the first frame";
 
   const fs::path folder = primed_folder("warm").parent_path();
-  const Frame warm = first_frame(folder, kExamples + "default.json");
+  const Frame warm = first_frame(folder, quick_graph(folder));
   EXPECT_EQ(warm.cached, warm.static_passes) << "every static pass skipped: its results came from the file";
   EXPECT_TRUE(warm.warnings.empty());
   EXPECT_EQ(warm.pixels, cold.pixels);
@@ -141,9 +166,7 @@ TEST(StaticResults, ASecondRendererLoadsThemAndRendersTheSameBytes) {
 // own is written beside the first.
 TEST(StaticResults, AChangedParamMisses) {
   const fs::path folder = primed_folder("param").parent_path();
-  std::string graph = read_file(kExamples + "default.json");
-  graph.replace(graph.find("\"sun_intensity\": 20"), 19, "\"sun_intensity\": 30");
-  write_file(folder / "brighter.json", graph);
+  write_file(folder / "brighter.json", with(quick_graph_text(), "\"sun_intensity\": 20", "\"sun_intensity\": 30"));
   const Frame changed = first_frame(folder, (folder / "brighter.json").string());
   EXPECT_EQ(changed.cached, 0u);
   EXPECT_TRUE(changed.warnings.empty());
@@ -178,7 +201,7 @@ TEST(StaticResults, AnotherShaderBuildHasAnotherKey) {
   options.device.validation = true;
   options.pipeline_cache_on_disk = false;
   Renderer renderer(options);
-  renderer.load_graph(kExamples + "default.json");
+  renderer.load_graph(quick_graph(fresh_folder("shader")));
   renderer.render(default_world(), kSmall);
   const DeviceIdentity device = device_identity(renderer.context().properties());
   const StaticResultsStore built("folder", {device, node_code_identity()});
@@ -198,6 +221,10 @@ struct BrokenFile {
   const char* reason;
 };
 
+void PrintTo(const BrokenFile& broken, std::ostream* out) {
+  *out << broken.name;
+}
+
 class StaticResultsBroken : public testing::TestWithParam<BrokenFile> {};
 
 TEST_P(StaticResultsBroken, IsIgnoredWithOneWarningAndTheFrameIsTheSame) {
@@ -205,7 +232,7 @@ TEST_P(StaticResultsBroken, IsIgnoredWithOneWarningAndTheFrameIsTheSame) {
   const DeviceIdentity device = this_device();
   const uint64_t key = key_of(file);
   write_file(file, GetParam().bytes(primed().bytes, device, key));
-  const Frame frame = first_frame(file.parent_path(), kExamples + "default.json");
+  const Frame frame = first_frame(file.parent_path(), quick_graph(file.parent_path()));
   ASSERT_EQ(frame.warnings.size(), 1u);
   EXPECT_NE(frame.warnings[0].find(file.string()), std::string::npos) << frame.warnings[0];
   EXPECT_NE(frame.warnings[0].find(GetParam().reason), std::string::npos) << frame.warnings[0];
@@ -248,6 +275,23 @@ INSTANTIATE_TEST_SUITE_P(
       std::erase(name, '-');
       return name;
     });
+
+// Room for one file only: writing the brighter sky's results removes the default's, the least
+// recently used, and never the file just written.
+TEST(StaticResults, TheFolderKeepsTheMostRecentlyUsedWithinItsBound) {
+  const fs::path older = primed_folder("bound");
+  const fs::path folder = older.parent_path();
+  write_file(folder / "brighter.json", with(quick_graph_text(), "\"sun_intensity\": 20", "\"sun_intensity\": 30"));
+  RendererOptions options = options_with_cache(folder);
+  options.static_results_max_bytes = fs::file_size(older) * 3 / 2;
+  Renderer renderer(options);
+  renderer.load_graph((folder / "brighter.json").string());
+  renderer.render(default_world(), kSmall);
+  const std::vector<fs::path> kept = results_files(folder);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_NE(kept[0], older);
+  EXPECT_EQ(decode(kept[0], this_device()).problem, "");
+}
 
 // env.sky with sun_turn_speed renders a new sky every frame: its cube, SH and prefiltered cube
 // are not static, and only the BRDF table (static in every graph) is kept.
