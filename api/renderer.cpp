@@ -4,6 +4,7 @@
 #include <malloc.h>
 #endif
 
+#include "api/static_results_identity.h"
 #include "graph/graph_io.h"
 #include "nodes/builtin_kernels.h"
 #include "nodes/builtin_schemas.h"
@@ -13,14 +14,27 @@
 #include "runtime/scene/make_scene_view.h"
 
 namespace lg {
+namespace {
+
+bool ran_static_passes(const Plan& plan, const FrameStats& stats) {
+  for (size_t p = 0; p < plan.passes.size(); ++p)
+    if (plan.passes[p].is_static && !stats.passes[p].cached) return true;
+  return false;
+}
+
+}  // namespace
 
 Renderer::Renderer(const RendererOptions& options)
     : options_(options),
       context_(options.host ? std::make_unique<Context>(*options.host) : std::make_unique<Context>(options.device)) {
   const std::string folder =
       options.pipeline_cache_folder.empty() ? default_pipeline_cache_folder() : options.pipeline_cache_folder;
-  if (options.pipeline_cache_on_disk && !pipeline_cache_disabled_by_environment() && !folder.empty())
+  if (options.pipeline_cache_on_disk && !pipeline_cache_disabled_by_environment() && !folder.empty()) {
     pipeline_store_ = std::make_unique<PipelineCacheStore>(*context_, folder);
+    static_store_ = std::make_unique<StaticResultsStore>(
+        folder, StaticResultsIdentity{device_identity(context_->properties()), node_code_identity()},
+        options.static_results_max_bytes);
+  }
 }
 
 Renderer::~Renderer() {
@@ -28,7 +42,10 @@ Renderer::~Renderer() {
 }
 
 std::vector<std::string> Renderer::take_warnings() {
-  return pipeline_store_ ? pipeline_store_->take_warnings() : std::vector<std::string>{};
+  if (!pipeline_store_) return {};
+  std::vector<std::string> warnings = pipeline_store_->take_warnings();
+  for (std::string& w : static_store_->take_warnings()) warnings.push_back(std::move(w));
+  return warnings;
 }
 
 void Renderer::load_graph(const std::string& path) {
@@ -66,9 +83,17 @@ void Renderer::compile_for(const SceneSummary& summary, FrameSize frame) {
   // The new executor is built before the old one goes, so a failure leaves the last good one;
   // static results the new plan would compute again with the same keys are carried over.
   auto executor = std::make_unique<Executor>(*context_, builtin_kernels(), std::move(*result.plan));
-  if (executor_) executor->adopt_cached_results(*executor_);
+  // Else from the disk, whose key hashes the input files' contents: not read for results carried
+  // over, which are never saved again either.
+  const bool adopted = executor_ && executor->adopt_cached_results(*executor_);
+  const uint64_t static_key =
+      static_store_ && !adopted
+          ? static_store_->key_for(executor->plan(), static_input_files(executor->plan(), builtin_registry()))
+          : 0;
+  if (static_key) static_store_->load(*executor, static_key);
   if (!gpu_scene_) gpu_scene_ = std::make_unique<GpuScene>(*context_);
   executor_ = std::move(executor);
+  static_key_ = static_key;
 #if defined(__GLIBC__)
   // The old executor's memory, and what the driver freed with it, goes back to the system:
   // glibc keeps freed heap pages resident, and the soak saw them add up (docs/reliability.md).
@@ -90,7 +115,10 @@ const FrameStats& Renderer::render(const World& world, FrameSize frame, FrameTim
   stats_ = executor_->run_frame(view, *gpu_scene_);
   // A new plan's first frame made whatever pipelines it needs: keep them for the next run now,
   // not only at shutdown, which a crash or a killed editor never reaches.
-  if (compile && pipeline_store_) pipeline_store_->save();
+  // Static results too, when this frame computed them; not when the folder just refused the
+  // pipeline cache (one warning for it).
+  if (compile && pipeline_store_ && pipeline_store_->save() && ran_static_passes(executor_->plan(), stats_))
+    static_store_->save(*executor_, static_key_);
   view_ = std::move(view);
   has_view_ = true;
   return stats_;

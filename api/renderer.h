@@ -14,7 +14,9 @@
 //
 // A failed load_graph() or reload_graph() keeps the last good graph running (hot reload).
 // Pipelines are shared by every plan the renderer compiles, and their driver cache is saved to
-// disk after the first frame of each plan that made new ones and when the renderer goes.
+// disk after the first frame of each plan that made new ones and when the renderer goes. Static
+// results are kept on disk beside it (runtime/exec/static_results_store.h): written after the
+// first frame of a plan that ran its static passes, loaded by a later run's plan of the same key.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -32,6 +34,7 @@
 #include "graph/graph.h"
 #include "runtime/exec/executor.h"
 #include "runtime/exec/gpu_scene.h"
+#include "runtime/exec/static_results_store.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/pipeline_cache_store.h"
 #include "runtime/scene/scene_view.h"
@@ -52,11 +55,14 @@ struct RendererOptions {
   AssetRoots asset_roots{};          // where file paths in graphs may point
   bool alias = true;                 // false: every transient resource keeps its own memory
   bool keep_optional_outputs = false;  // write optional outputs nothing links (a dump: gi.lpv's volume)
-  // The driver's pipeline cache kept on disk between runs (runtime/gpu/pipeline_cache_store.h),
-  // in `pipeline_cache_folder` or, when that is empty, $XDG_CACHE_HOME/lumagraph (~/.cache/...).
-  // LUMAGRAPH_PIPELINE_CACHE=off in the environment turns it off too.
+  // The driver's pipeline cache and the plans' static results kept on disk between runs
+  // (runtime/gpu/pipeline_cache_store.h, runtime/exec/static_results_store.h), in
+  // `pipeline_cache_folder` or, when that is empty, $XDG_CACHE_HOME/lumagraph (~/.cache/...).
+  // LUMAGRAPH_PIPELINE_CACHE=off in the environment turns both off too.
   bool pipeline_cache_on_disk = true;
   std::string pipeline_cache_folder{};
+  // The most bytes of static results the folder keeps: the least recently used go first.
+  uint64_t static_results_max_bytes = StaticResultsStore::default_max_bytes;
 };
 
 // What temporal nodes need of a frame beyond the world (post.exposure adapts over it): the time
@@ -99,7 +105,9 @@ class Renderer {
 
   // The pipeline cache on disk; null when it is off (options, environment, no cache folder).
   const PipelineCacheStore* pipeline_cache_store() const { return pipeline_store_.get(); }
-  // Warnings since the last call (an ignored or unsaved pipeline cache file), one line each.
+  // The static results on disk; null when the disk cache is off.
+  const StaticResultsStore* static_results_store() const { return static_store_.get(); }
+  // Warnings since the last call (an ignored or unsaved cache file), one line each.
   std::vector<std::string> take_warnings();
 
  private:
@@ -108,6 +116,8 @@ class Renderer {
   RendererOptions options_;
   std::unique_ptr<Context> context_;
   std::unique_ptr<PipelineCacheStore> pipeline_store_;  // after the context: goes before it
+  std::unique_ptr<StaticResultsStore> static_store_;
+  uint64_t static_key_ = 0;  // the executor's plan's, in static_store_; 0: nothing kept
   std::optional<Graph> graph_;
   bool graph_changed_ = false;
   std::optional<SceneSummary> summary_;

@@ -44,8 +44,8 @@ options:
   --asset-root DIR    allow file paths in params and in the scene file under DIR
                       (repeatable; the scene file's own folder stays allowed)
   --no-alias          give every transient resource its own memory
-  --no-pipeline-cache do not read or write the pipeline cache on disk
-                      ($XDG_CACHE_HOME/lumagraph; LUMAGRAPH_PIPELINE_CACHE=off does the same)
+  --no-pipeline-cache do not read or write the pipeline cache and static results on
+                      disk ($XDG_CACHE_HOME/lumagraph; LUMAGRAPH_PIPELINE_CACHE=off does the same)
 
 exit status: 0 rendered, 1 usage error, 2 invalid graph or scene, 3 the GPU or a node failed
 )";

@@ -1,5 +1,6 @@
 // Executor::adopt_cached_results: static results carried from one executor to the next, so a
-// recompiled plan does not recompute environment convolutions and lookup tables.
+// recompiled plan does not recompute environment convolutions and lookup tables; and their
+// bytes read and loaded for keeping them on disk between runs.
 #include <algorithm>
 #include <optional>
 
@@ -7,6 +8,7 @@
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image_copy.h"
 #include "runtime/gpu/plan_barriers.h"
+#include "runtime/gpu/transfer.h"
 
 namespace lg {
 namespace {
@@ -38,12 +40,11 @@ bool Executor::adopt_cached_results(Executor& previous) {
   }
   if (!any) return false;
   std::vector<std::pair<int, int>> copies;  // (ours, theirs)
-  for (size_t r = 0; r < plan_.resources.size(); ++r) {
+  for (int r : stored_resources()) {
     const PlanResource& ours = plan_.resources[r];
-    if (ours.desc.lifetime != ResourceLifetime::cached || ours.placement.block < 0) continue;
     std::optional<int> theirs = find_resource(previous.plan_, ours.desc.name);
     if (!theirs || !same_shape(ours.desc, previous.plan_.resources[*theirs].desc)) return false;
-    copies.emplace_back(int(r), *theirs);
+    copies.emplace_back(r, *theirs);
   }
   submitter_.run([&](VkCommandBuffer cmd) {
     for (auto [r, t] : copies) {
@@ -62,6 +63,56 @@ bool Executor::adopt_cached_results(Executor& previous) {
   for (size_t p = 0; p < plan_.passes.size(); ++p)
     if (plan_.passes[p].is_static) ran_keys_[p] = plan_.passes[p].cache_key;
   return true;
+}
+
+std::vector<int> Executor::stored_resources() const {
+  std::vector<int> out;
+  for (size_t r = 0; r < plan_.resources.size(); ++r)
+    if (plan_.resources[r].desc.lifetime == ResourceLifetime::cached && plan_.resources[r].placement.block >= 0)
+      out.push_back(int(r));
+  return out;
+}
+
+std::vector<StoredResult> Executor::read_cached_results() {
+  if (frames_ == 0 || !caches_valid()) return {};
+  std::vector<StoredResult> out;
+  for (int r : stored_resources()) {
+    StoredResult& result = out.emplace_back();
+    result.name = plan_.resources[r].desc.name;
+    const PlacedResource& placed = memory_.resources[r];
+    if (auto* image = std::get_if<Image>(&placed))
+      result.bytes = read_image_bytes(submitter_, *image, vk_layout(layouts_[r]));
+    else
+      result.bytes = lg::read_buffer(submitter_, std::get<Buffer>(placed));
+  }
+  return out;
+}
+
+std::string Executor::load_cached_results(std::span<const StoredResult> results) {
+  if (frames_ > 0) return "the executor has run frames already";
+  const std::vector<int> stored = stored_resources();
+  if (results.size() != stored.size())
+    return "it holds " + std::to_string(results.size()) + " results, the plan keeps " + std::to_string(stored.size());
+  for (size_t i = 0; i < stored.size(); ++i) {
+    const std::string& name = plan_.resources[stored[i]].desc.name;
+    const PlacedResource& placed = memory_.resources[stored[i]];
+    const auto* image = std::get_if<Image>(&placed);
+    const uint64_t size = image ? image_byte_size(*image) : std::get<Buffer>(placed).size();
+    if (results[i].name != name) return "it holds '" + results[i].name + "' where the plan keeps '" + name + "'";
+    if (results[i].bytes.size() != size)
+      return "it holds " + std::to_string(results[i].bytes.size()) + " bytes of '" + name + "', the plan keeps " +
+             std::to_string(size);
+  }
+  for (size_t i = 0; i < stored.size(); ++i) {
+    const int r = stored[i];
+    if (auto* image = std::get_if<Image>(&memory_.resources[r]))
+      upload_image_bytes(submitter_, *image, results[i].bytes, vk_layout(layouts_[r]));
+    else
+      upload_buffer(submitter_, std::get<Buffer>(memory_.resources[r]), results[i].bytes);
+  }
+  for (size_t p = 0; p < plan_.passes.size(); ++p)
+    if (plan_.passes[p].is_static) ran_keys_[p] = plan_.passes[p].cache_key;
+  return {};
 }
 
 }  // namespace lg

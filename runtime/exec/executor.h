@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "runtime/exec/frame_stats.h"
 #include "runtime/exec/node_kernel.h"
 #include "runtime/exec/plan_memory.h"
+#include "runtime/exec/static_results_file.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/sampler.h"
 #include "runtime/gpu/submit.h"
@@ -67,6 +69,13 @@ class Executor {
   // is: false, and nothing taken, unless every static pass of this plan ran in `previous` with
   // its key and wrote resources of the same name and description there. Copies on the GPU.
   bool adopt_cached_results(Executor& previous);
+  // The bytes of every cached resource, in plan order, for keeping on disk (static_results_store.h);
+  // empty unless the static passes have run (or their results were taken) with this plan's keys.
+  std::vector<StoredResult> read_cached_results();
+  // Takes such results (before the first frame): the next frame skips the static passes. All or
+  // nothing: when they do not match this plan's cached resources by name and size, nothing is
+  // taken and the reason is returned; empty when taken.
+  std::string load_cached_results(std::span<const StoredResult> results);
 
   // Resources by name ("bloom.color", "gtao.ao@previous", "bloom/chain"), between frames.
   // Unknown names throw ExecutorError listing the known ones. After frame N, X holds what
@@ -97,6 +106,7 @@ class Executor {
   void clear_history(VkCommandBuffer cmd);
   void swap_history();
   bool caches_valid() const;
+  std::vector<int> stored_resources() const;  // the cached resources with memory, in plan order
   const PlacedResource& readable(std::string_view resource) const;
 
   Context& context_;

@@ -1,9 +1,9 @@
 #include "runtime/gpu/pipeline_cache_file.h"
 
-#include <cstdio>
 #include <cstring>
 
 #include "graph/fnv1a.h"
+#include "runtime/gpu/byte_stream.h"
 
 namespace lg {
 namespace {
@@ -11,82 +11,16 @@ namespace {
 constexpr char magic[8] = {'L', 'G', 'P', 'C', 'A', 'C', 'H', 'E'};
 constexpr uint32_t format_version = 1;
 // magic, version, vendor, device, driver version, UUID, payload size, payload checksum.
-constexpr size_t header_bytes = sizeof magic + 4 * 4 + VK_UUID_SIZE + 8 + 8;
+constexpr size_t header_bytes = sizeof magic + 4 + device_identity_bytes + 8 + 8;
 // VkPipelineCacheHeaderVersionOne: headerSize, headerVersion, vendorID, deviceID, UUID.
 constexpr size_t driver_header_bytes = 4 * 4 + VK_UUID_SIZE;
-
-// Host byte order: the file never leaves the machine (its name and header name the device).
-class Writer {
- public:
-  template <typename T>
-  void put(const T& value) {
-    out_.append(reinterpret_cast<const char*>(&value), sizeof value);
-  }
-  void put_bytes(const void* data, size_t size) { out_.append(static_cast<const char*>(data), size); }
-  std::string take() { return std::move(out_); }
-
- private:
-  std::string out_;
-};
-
-class Reader {
- public:
-  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
-  template <typename T>
-  T get() {
-    T value;
-    std::memcpy(&value, bytes_.data() + at_, sizeof value);
-    at_ += sizeof value;
-    return value;
-  }
-  std::string_view get_bytes(size_t size) {
-    std::string_view out = bytes_.substr(at_, size);
-    at_ += size;
-    return out;
-  }
-
- private:
-  std::string_view bytes_;
-  size_t at_ = 0;
-};
-
-std::span<const std::byte> as_bytes(std::string_view text) {
-  return {reinterpret_cast<const std::byte*>(text.data()), text.size()};
-}
-
-std::string hex(uint64_t value, int digits) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%0*llx", digits, static_cast<unsigned long long>(value));
-  return text;
-}
-
-std::string describe(const DeviceIdentity& d) {
-  return "vendor 0x" + hex(d.vendor_id, 4) + ", device 0x" + hex(d.device_id, 4) + ", driver version 0x" +
-         hex(d.driver_version, 8);
-}
-
-void put_identity(Writer& out, const DeviceIdentity& d) {
-  out.put(d.vendor_id);
-  out.put(d.device_id);
-  out.put(d.driver_version);
-  out.put_bytes(d.cache_uuid.data(), VK_UUID_SIZE);
-}
-
-DeviceIdentity read_identity(Reader& in) {
-  DeviceIdentity d;
-  d.vendor_id = in.get<uint32_t>();
-  d.device_id = in.get<uint32_t>();
-  d.driver_version = in.get<uint32_t>();
-  std::memcpy(d.cache_uuid.data(), in.get_bytes(VK_UUID_SIZE).data(), VK_UUID_SIZE);
-  return d;
-}
 
 // What is wrong with the driver's own header, which the spec lets the driver trust.
 std::string driver_header_problem(std::string_view data, const DeviceIdentity& device) {
   if (data.size() < driver_header_bytes)
     return "the driver data (" + std::to_string(data.size()) + " bytes) is shorter than its " +
            std::to_string(driver_header_bytes) + "-byte header";
-  Reader in(data);
+  ByteReader in(data);
   const auto size = in.get<uint32_t>();
   const auto version = in.get<uint32_t>();
   if (size < driver_header_bytes || size > data.size())
@@ -104,6 +38,27 @@ std::string driver_header_problem(std::string_view data, const DeviceIdentity& d
 
 }  // namespace
 
+std::string describe_device(const DeviceIdentity& d) {
+  return "vendor 0x" + hex_digits(d.vendor_id, 4) + ", device 0x" + hex_digits(d.device_id, 4) + ", driver version 0x" +
+         hex_digits(d.driver_version, 8);
+}
+
+void put_device_identity(ByteWriter& out, const DeviceIdentity& d) {
+  out.put(d.vendor_id);
+  out.put(d.device_id);
+  out.put(d.driver_version);
+  out.put_bytes(d.cache_uuid.data(), VK_UUID_SIZE);
+}
+
+DeviceIdentity get_device_identity(ByteReader& in) {
+  DeviceIdentity d;
+  d.vendor_id = in.get<uint32_t>();
+  d.device_id = in.get<uint32_t>();
+  d.driver_version = in.get<uint32_t>();
+  std::memcpy(d.cache_uuid.data(), in.get_bytes(VK_UUID_SIZE).data(), VK_UUID_SIZE);
+  return d;
+}
+
 DeviceIdentity device_identity(const VkPhysicalDeviceProperties& properties) {
   DeviceIdentity d;
   d.vendor_id = properties.vendorID;
@@ -114,16 +69,16 @@ DeviceIdentity device_identity(const VkPhysicalDeviceProperties& properties) {
 }
 
 std::string pipeline_cache_file_name(const DeviceIdentity& device) {
-  Writer identity;
-  put_identity(identity, device);
-  return "pipeline-cache-" + hex(fnv1a(as_bytes(identity.take())), 16) + ".bin";
+  ByteWriter identity;
+  put_device_identity(identity, device);
+  return "pipeline-cache-" + hex_digits(fnv1a(as_byte_span(identity.take())), 16) + ".bin";
 }
 
 std::string encode_pipeline_cache(const DeviceIdentity& device, std::span<const std::byte> driver_data) {
-  Writer out;
+  ByteWriter out;
   out.put_bytes(magic, sizeof magic);
   out.put(format_version);
-  put_identity(out, device);
+  put_device_identity(out, device);
   out.put(static_cast<uint64_t>(driver_data.size()));
   out.put(fnv1a(driver_data));
   out.put_bytes(driver_data.data(), driver_data.size());
@@ -135,13 +90,14 @@ DecodedPipelineCache decode_pipeline_cache(std::string_view file, const DeviceId
   if (file.size() < header_bytes)
     return refuse("truncated: " + std::to_string(file.size()) + " bytes, shorter than the " +
                   std::to_string(header_bytes) + "-byte header");
-  Reader in(file);
+  ByteReader in(file);
   if (in.get_bytes(sizeof magic) != std::string_view(magic, sizeof magic))
     return refuse("not a Lumagraph pipeline cache (wrong magic)");
   if (const auto version = in.get<uint32_t>(); version != format_version)
     return refuse("format version " + std::to_string(version) + ", this build reads " + std::to_string(format_version));
-  if (const DeviceIdentity made_on = read_identity(in); !(made_on == device))
-    return refuse("made on another device or driver (" + describe(made_on) + "; this is " + describe(device) +
+  if (const DeviceIdentity made_on = get_device_identity(in); !(made_on == device))
+    return refuse("made on another device or driver (" + describe_device(made_on) + "; this is " +
+                  describe_device(device) +
                   (made_on.cache_uuid != device.cache_uuid ? ", another pipeline cache UUID)" : ")"));
   const auto payload_size = in.get<uint64_t>();
   const auto checksum = in.get<uint64_t>();
@@ -149,9 +105,9 @@ DecodedPipelineCache decode_pipeline_cache(std::string_view file, const DeviceId
     return refuse("truncated or padded: the header promises " + std::to_string(payload_size) +
                   " bytes of driver data, the file holds " + std::to_string(file.size() - header_bytes));
   const std::string_view payload = in.get_bytes(payload_size);
-  if (fnv1a(as_bytes(payload)) != checksum) return refuse("corrupt: the driver data's checksum does not match");
+  if (fnv1a(as_byte_span(payload)) != checksum) return refuse("corrupt: the driver data's checksum does not match");
   if (std::string problem = driver_header_problem(payload, device); !problem.empty()) return refuse(problem);
-  const auto bytes = as_bytes(payload);
+  const auto bytes = as_byte_span(payload);
   return {{bytes.begin(), bytes.end()}, {}};
 }
 

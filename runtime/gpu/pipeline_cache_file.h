@@ -27,6 +27,14 @@ struct DeviceIdentity {
 
 DeviceIdentity device_identity(const VkPhysicalDeviceProperties& properties);
 
+// The identity in cache files' headers (byte_stream.h), and in messages.
+constexpr size_t device_identity_bytes = 3 * 4 + VK_UUID_SIZE;
+class ByteWriter;
+class ByteReader;
+void put_device_identity(ByteWriter& out, const DeviceIdentity& device);
+DeviceIdentity get_device_identity(ByteReader& in);  // device_identity_bytes of them
+std::string describe_device(const DeviceIdentity& device);
+
 // "pipeline-cache-<16 hex digits>.bin", the digits a hash of the identity: one file per device
 // and driver, so two GPUs (or a driver update) never overwrite each other's cache.
 std::string pipeline_cache_file_name(const DeviceIdentity& device);

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <utility>
 
+#include "graph/fnv1a.h"
 #include "graph/json_writer.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/pipeline.h"
@@ -60,6 +61,7 @@ void PipelineCacheStore::load() {
   if (!decoded.problem.empty()) return ignored(decoded.problem);
   if (!context_.pipelines().merge(decoded.driver_data)) return ignored("the driver refused its data");
   loaded_bytes_ = decoded.driver_data.size();
+  file_data_hash_ = fnv1a(decoded.driver_data);
 }
 
 bool PipelineCacheStore::save() {
@@ -68,14 +70,20 @@ bool PipelineCacheStore::save() {
   std::string error;
   try {
     const std::vector<std::byte> data = context_.pipelines().driver_data();
+    const uint64_t hash = fnv1a(data);
+    if (file_data_hash_ == hash) {  // the file has it all: no write, no fsync
+      compiled_at_save_ = compiled();
+      return true;
+    }
+    file_data_hash_.reset();  // until written
     std::error_code made;
     std::filesystem::create_directories(folder_, made);
     if (made)
       error = "cannot make the folder " + folder_ + ": " + made.message();
-    else if (write_file_atomically(path_, encode_pipeline_cache(device_identity(context_.properties()), data), &error))
-      error.clear();
-    else if (error.empty())
-      error = "cannot write it";
+    else if (!write_file_atomically(path_, encode_pipeline_cache(device_identity(context_.properties()), data), &error))
+      error = error.empty() ? "cannot write it" : error;
+    else
+      file_data_hash_ = hash;
   } catch (const std::exception& e) {  // vkGetPipelineCacheData failed: the device is lost
     error = e.what();
   }

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,8 @@ class PipelineCacheStore {
   const std::string& path() const { return path_; }
   // Bytes of driver data read from the file and handed to the driver; 0 when none was.
   size_t loaded_bytes() const { return loaded_bytes_; }
-  // Writes the driver's cache when the driver made pipelines since the last save (or the load).
+  // Writes the driver's cache when the driver made pipelines since the last save (or the load)
+  // and its data differs from the file's (lavapipe's never holds more than its header).
   // False when writing failed: the first failure adds a warning, later saves do not try again.
   bool save();
   // Warnings since the last call, one line each.
@@ -40,6 +42,7 @@ class PipelineCacheStore {
   std::string folder_, path_;
   size_t loaded_bytes_ = 0;
   uint64_t compiled_at_save_ = 0;
+  std::optional<uint64_t> file_data_hash_;  // of the driver data the file holds, once read or written
   bool unwritable_ = false;
   std::vector<std::string> warnings_;
 };

@@ -34,7 +34,64 @@ Buffer staging(Submitter& submitter, const std::string& what, uint64_t bytes, Me
       {"staging for " + what, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT}, use);
 }
 
+// One region per mip, each covering every layer, packed in that order.
+std::vector<VkBufferImageCopy> whole_image_regions(const Image& image) {
+  const ImageDesc& d = image.desc();
+  const bool volume = d.kind == ImageKind::image3d;
+  std::vector<VkBufferImageCopy> regions;
+  uint64_t offset = 0;
+  for (uint32_t mip = 0; mip < d.mips; ++mip) {
+    VkBufferImageCopy& region = regions.emplace_back(copy_region(image, {mip, 0}));
+    region.bufferOffset = offset;
+    region.imageSubresource.layerCount = volume ? 1 : d.layers;
+    offset += texel_count(image, mip) * (volume ? 1 : d.layers) * format_info(d.format).bytes_per_texel;
+  }
+  return regions;
+}
+
 }  // namespace
+
+uint64_t image_byte_size(const Image& image) {
+  const ImageDesc& d = image.desc();
+  uint64_t texels = 0;
+  for (uint32_t mip = 0; mip < d.mips; ++mip) texels += texel_count(image, mip);
+  return texels * (d.kind == ImageKind::image3d ? 1 : d.layers) * format_info(d.format).bytes_per_texel;
+}
+
+std::vector<std::byte> read_image_bytes(Submitter& submitter, const Image& image, VkImageLayout layout) {
+  if (layout == VK_IMAGE_LAYOUT_UNDEFINED)
+    throw GpuError("reading image '" + image.desc().name + "' in the UNDEFINED layout: it holds nothing yet");
+  const uint64_t size = image_byte_size(image);
+  const std::vector<VkBufferImageCopy> regions = whole_image_regions(image);
+  Buffer stage = staging(submitter, "image '" + image.desc().name + "'", size, MemoryUse::readback);
+  submitter.run([&](VkCommandBuffer cmd) {
+    image_barrier(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, stage.handle(),
+                           uint32_t(regions.size()), regions.data());
+    image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+    memory_barrier(cmd, {}, {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT});  // to the host
+  });
+  std::vector<std::byte> out(size);
+  std::memcpy(out.data(), stage.mapped(), size);
+  return out;
+}
+
+void upload_image_bytes(Submitter& submitter, const Image& image, std::span<const std::byte> bytes,
+                        VkImageLayout new_layout) {
+  const uint64_t size = image_byte_size(image);
+  if (bytes.size() != size)
+    throw GpuError("upload to image '" + image.desc().name + "': " + std::to_string(bytes.size()) + " bytes given, " +
+                   std::to_string(size) + " expected");
+  const std::vector<VkBufferImageCopy> regions = whole_image_regions(image);
+  Buffer stage = staging(submitter, "image '" + image.desc().name + "'", size, MemoryUse::upload);
+  std::memcpy(stage.mapped(), bytes.data(), size);
+  submitter.run([&](VkCommandBuffer cmd) {
+    image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    vkCmdCopyBufferToImage(cmd, stage.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           uint32_t(regions.size()), regions.data());
+    image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, new_layout);
+  });
+}
 
 uint64_t texel_count(const Image& image, uint32_t mip) {
   const ImageDesc& d = image.desc();

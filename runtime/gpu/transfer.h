@@ -31,6 +31,14 @@ void upload_image(Submitter& submitter, const Image& image, std::span<const floa
 // Reads `where` as float RGBA; the image is in `layout` (not UNDEFINED) before and after.
 std::vector<float> read_image(Submitter& submitter, const Image& image, VkImageLayout layout, ImageLocation where = {});
 
+// Every mip and layer of an image as the format stores them, mip after mip (a mip's layers, or
+// its 3D slices, back to back): for keeping results byte for byte, with no float conversion.
+uint64_t image_byte_size(const Image& image);
+std::vector<std::byte> read_image_bytes(Submitter& submitter, const Image& image, VkImageLayout layout);
+// Writes those bytes (image_byte_size of them), moving the image from UNDEFINED to `new_layout`.
+void upload_image_bytes(Submitter& submitter, const Image& image, std::span<const std::byte> bytes,
+                        VkImageLayout new_layout);
+
 void upload_buffer(Submitter& submitter, const Buffer& buffer, std::span<const std::byte> bytes, uint64_t offset = 0);
 std::vector<std::byte> read_buffer(Submitter& submitter, const Buffer& buffer, uint64_t offset = 0,
                                    uint64_t size = VK_WHOLE_SIZE);

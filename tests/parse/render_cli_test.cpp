@@ -130,6 +130,47 @@ TEST(RenderCli, ACorruptPipelineCacheFileIsIgnoredWithAWarning) {
   EXPECT_FALSE(fs::exists(dir.path() / "cache" / "lumagraph"));
 }
 
+// Static results on disk beside it: a warm run prints the static passes as cached and writes the
+// same image; a corrupt results file is ignored with a warning naming it, and the image is the same.
+TEST(RenderCli, StaticResultsAreReusedAndACorruptFileIsIgnoredWithAWarning) {
+  TempDir dir;
+  // The default graph with small cubes and a sampled prefilter: three cold-ish runs stay quick.
+  std::string graph = read_text("examples/default.json");
+  const std::pair<std::string, std::string> quick[] = {
+      {"\"sun_intensity\": 20 }", "\"sun_intensity\": 20, \"face_size\": 32 }"},
+      {"{ \"face_size\": 128, \"mips\": 6 }", "{ \"face_size\": 32, \"mips\": 4, \"method\": \"sampled\" }"}};
+  for (const auto& [from, to] : quick) {
+    ASSERT_NE(graph.find(from), std::string::npos) << from;
+    graph.replace(graph.find(from), from.size(), to);
+  }
+  write_text(dir.file("quick.json"), graph);
+  const std::string cache_home = "XDG_CACHE_HOME=" + dir.file("cache");
+  auto render = [&](const std::string& out) {
+    return lumagraph({"render", dir.file("quick.json"), "--size", "64x36", "--validate", "--out", dir.file(out)},
+                     cache_home);
+  };
+  Outcome cold = render("cold.png");
+  ASSERT_EQ(cold.status, 0) << cold.err;
+  EXPECT_FALSE(contains(cold.out, "cached")) << cold.out;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "cache" / "lumagraph"))
+    if (entry.path().filename().string().starts_with("static-results-")) files.push_back(entry.path());
+  ASSERT_EQ(files.size(), 1u);
+
+  Outcome warm = render("warm.png");
+  ASSERT_EQ(warm.status, 0) << warm.err;
+  EXPECT_TRUE(contains(warm.out, "specular/prefilter          cached")) << warm.out;
+  EXPECT_FALSE(contains(warm.err, "warning")) << warm.err;
+  EXPECT_EQ(read_text(dir.file("warm.png")), read_text(dir.file("cold.png")));
+
+  write_text(files[0].string(), "not static results, but long enough to hold a header of them........");
+  Outcome corrupt = render("corrupt.png");
+  ASSERT_EQ(corrupt.status, 0) << corrupt.err;
+  EXPECT_TRUE(contains(corrupt.err, "warning: static results " + files[0].string() + " ignored")) << corrupt.err;
+  EXPECT_FALSE(contains(corrupt.out, "cached")) << corrupt.out;
+  EXPECT_EQ(read_text(dir.file("corrupt.png")), read_text(dir.file("cold.png")));
+}
+
 TEST(RenderCli, BadOptionsAreUsageErrors) {
   for (std::vector<std::string> args : {std::vector<std::string>{"render", "--frames", "0"},
                                         {"render", "--frame-seconds", "-1"},

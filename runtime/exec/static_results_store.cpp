@@ -1,0 +1,140 @@
+#include "runtime/exec/static_results_store.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <utility>
+
+#include "graph/fnv1a.h"
+#include "graph/json_writer.h"
+#include "runtime/exec/executor.h"
+
+namespace lg {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view file_prefix = "static-results-", file_suffix = ".bin";
+
+bool is_results_file(const fs::directory_entry& entry) {
+  const std::string name = entry.path().filename().string();
+  std::error_code error;
+  return name.starts_with(file_prefix) && name.ends_with(file_suffix) && entry.is_regular_file(error);
+}
+
+// The hash of a file's contents, read in blocks; false when it cannot be read.
+bool hash_file(const std::string& path, uint64_t& hash) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::vector<char> block(1 << 20);
+  while (in) {
+    in.read(block.data(), std::streamsize(block.size()));
+    hash = fnv1a(block.data(), size_t(in.gcount()), hash);
+  }
+  return !in.bad();
+}
+
+}  // namespace
+
+StaticResultsStore::StaticResultsStore(std::string folder, const StaticResultsIdentity& identity, uint64_t max_bytes)
+    : folder_(std::move(folder)), identity_(identity), max_bytes_(max_bytes) {}
+
+uint64_t StaticResultsStore::key_for(const Plan& plan, std::span<const std::string> input_files) const {
+  StaticResultsIdentity identity = identity_;
+  identity.inputs = fnv1a_basis;
+  for (const std::string& file : input_files) {
+    identity.inputs = fnv1a(file, identity.inputs);
+    if (!hash_file(file, identity.inputs)) return 0;
+  }
+  return static_results_key(plan, identity);
+}
+
+std::string StaticResultsStore::path(uint64_t key) const {
+  return folder_ + "/" + static_results_file_name(key);
+}
+
+bool StaticResultsStore::load(Executor& executor, uint64_t key) {
+  const std::string file = path(key);
+  std::error_code error;
+  if (key == 0 || !fs::exists(file, error)) return false;  // the first run of this plan
+  auto ignored = [&](const std::string& why) {
+    warnings_.push_back("static results " + file + " ignored (the static passes run again): " + why);
+    return false;
+  };
+  if (!fs::is_regular_file(file, error)) return ignored("it is not a regular file");
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (!in.is_open() || in.bad()) return ignored(std::string("cannot read it: ") + std::strerror(errno));
+  DecodedStaticResults decoded = decode_static_results(bytes, identity_.device, key);
+  if (!decoded.problem.empty()) return ignored(decoded.problem);
+  if (std::string problem = executor.load_cached_results(decoded.results); !problem.empty()) return ignored(problem);
+  fs::last_write_time(file, fs::file_time_type::clock::now(), error);  // used: the last to go
+  return true;
+}
+
+bool StaticResultsStore::save(Executor& executor, uint64_t key) {
+  if (key == 0 || unwritable_) return false;
+  const std::string file = path(key);
+  std::string error;
+  try {
+    const std::vector<StoredResult> results = executor.read_cached_results();
+    if (results.empty()) return false;
+    const std::string bytes = encode_static_results(identity_.device, key, results);
+    if (bytes.size() > max_bytes_) {
+      warnings_.push_back("static results " + file + " not saved: " + std::to_string(bytes.size() >> 20) +
+                          " MiB, more than the folder may hold (" + std::to_string(max_bytes_ >> 20) + " MiB)");
+      return false;
+    }
+    std::error_code made;
+    fs::create_directories(folder_, made);
+    if (made)
+      error = "cannot make the folder " + folder_ + ": " + made.message();
+    else if (write_file_atomically(file, bytes, &error))
+      error.clear();
+    else if (error.empty())
+      error = "cannot write it";
+  } catch (const std::exception& e) {  // a readback failed: the device is lost
+    error = e.what();
+  }
+  if (!error.empty()) {
+    unwritable_ = true;
+    warnings_.push_back("static results " + file + " not saved (the static passes run again next run): " + error);
+    return false;
+  }
+  bound_folder(file);
+  return true;
+}
+
+void StaticResultsStore::bound_folder(const std::string& keep) {
+  struct Entry {
+    fs::file_time_type used;
+    uint64_t bytes;
+    fs::path path;
+  };
+  std::vector<Entry> entries;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder_, error)) {
+    if (!is_results_file(entry)) continue;
+    std::error_code e1, e2;
+    Entry e{entry.last_write_time(e1), entry.file_size(e2), entry.path()};
+    if (!e1 && !e2) entries.push_back(std::move(e));
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used > b.used; });
+  uint64_t total = 0;  // of the files kept, the most recently used first
+  for (const Entry& e : entries) {
+    if (total + e.bytes > max_bytes_ && e.path != fs::path(keep))
+      fs::remove(e.path, error);
+    else
+      total += e.bytes;
+  }
+}
+
+std::vector<std::string> StaticResultsStore::take_warnings() {
+  return std::exchange(warnings_, {});
+}
+
+}  // namespace lg

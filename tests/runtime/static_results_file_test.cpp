@@ -1,0 +1,125 @@
+// The static results file (runtime/exec/static_results_file.h) without a device: what it encodes
+// decodes to the same results; every way a file goes wrong (cut short at any length, any byte
+// flipped, made on another device or for another key) is refused with its reason; and the key
+// changes with each thing that changes the results' bytes.
+#include "runtime/exec/static_results_file.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+#include <string>
+
+namespace lg {
+namespace {
+
+DeviceIdentity test_device() {
+  DeviceIdentity d;
+  d.vendor_id = 0x10005;
+  d.device_id = 0x1234;
+  d.driver_version = 0x00580006;
+  for (size_t i = 0; i < d.cache_uuid.size(); ++i) d.cache_uuid[i] = uint8_t(17 * i + 3);
+  return d;
+}
+
+std::vector<StoredResult> test_results() {
+  std::mt19937 random(11);
+  std::vector<StoredResult> results{{"sky.cube", std::vector<std::byte>(3000)}, {"sh.sh", std::vector<std::byte>(112)}};
+  for (StoredResult& r : results)
+    for (std::byte& b : r.bytes) b = std::byte(random());
+  return results;
+}
+
+// Two static passes and the cached resources they write, as the compiler places them.
+Plan static_plan() {
+  Plan plan;
+  plan.passes.push_back({.name = "sky/render", .pass = "render", .cache_key = 0x1111, .node = 0, .is_static = true});
+  plan.passes.push_back({.name = "sh/project", .pass = "project", .cache_key = 0x2222, .node = 1, .is_static = true});
+  plan.passes.push_back({.name = "tonemap/apply", .pass = "apply", .node = 2});
+  PlanResource cube;
+  cube.desc.name = "sky.cube", cube.desc.format = "rgba16f", cube.desc.kind = ResourceKind::cube;
+  cube.desc.width = cube.desc.height = 64, cube.desc.layers = 6, cube.desc.mips = 7, cube.desc.bytes = 262136;
+  cube.desc.lifetime = ResourceLifetime::cached;
+  cube.placement.block = 1;
+  plan.resources.push_back(cube);
+  PlanResource color;
+  color.desc.name = "tonemap.color", color.desc.format = "rgba8";
+  color.placement.block = 0;
+  plan.resources.push_back(color);
+  return plan;
+}
+
+bool same(const std::vector<StoredResult>& a, const std::vector<StoredResult>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].name != b[i].name || a[i].bytes != b[i].bytes) return false;
+  return true;
+}
+
+TEST(StaticResultsFile, RoundTripsTheResults) {
+  const std::string file = encode_static_results(test_device(), 42, test_results());
+  const DecodedStaticResults decoded = decode_static_results(file, test_device(), 42);
+  EXPECT_EQ(decoded.problem, "");
+  EXPECT_TRUE(same(decoded.results, test_results()));
+}
+
+TEST(StaticResultsFile, RefusesEveryTruncationAndEveryFlippedByte) {
+  const std::string file = encode_static_results(test_device(), 42, test_results());
+  for (size_t size = 0; size < file.size(); ++size) {
+    const DecodedStaticResults decoded = decode_static_results(file.substr(0, size), test_device(), 42);
+    ASSERT_TRUE(decoded.results.empty()) << size;
+    ASSERT_NE(decoded.problem.find("truncated"), std::string::npos) << size << ": " << decoded.problem;
+  }
+  for (size_t at = 0; at < file.size(); ++at) {
+    std::string flipped = file;
+    flipped[at] = char(flipped[at] ^ 0x10);
+    const DecodedStaticResults decoded = decode_static_results(flipped, test_device(), 42);
+    ASSERT_TRUE(decoded.results.empty()) << at;
+    ASSERT_FALSE(decoded.problem.empty()) << at;
+  }
+}
+
+TEST(StaticResultsFile, RefusesAnotherDeviceOrKey) {
+  DeviceIdentity newer = test_device();
+  newer.driver_version += 1;
+  const std::string file = encode_static_results(test_device(), 42, test_results());
+  EXPECT_NE(decode_static_results(file, newer, 42).problem.find("another device or driver"), std::string::npos);
+  EXPECT_NE(decode_static_results(file, test_device(), 43).problem.find("another key"), std::string::npos);
+  EXPECT_NE(decode_static_results(std::string(4096, 'x'), test_device(), 42).problem.find("wrong magic"),
+            std::string::npos);
+}
+
+TEST(StaticResultsFile, TheKeyChangesWithEverythingThatChangesTheBytes) {
+  const StaticResultsIdentity identity{test_device(), 7, 9};
+  const uint64_t key = static_results_key(static_plan(), identity);
+  EXPECT_NE(key, 0u);
+  EXPECT_EQ(static_results_key(static_plan(), identity), key) << "the same inputs, the same key";
+
+  const std::pair<const char*, std::function<void(Plan&, StaticResultsIdentity&)>> changes[] = {
+      {"a pass's cache key (a param)", [](Plan& p, StaticResultsIdentity&) { p.passes[1].cache_key ^= 1; }},
+      {"the format", [](Plan& p, StaticResultsIdentity&) { p.resources[0].desc.format = "rgba32f"; }},
+      {"the extent", [](Plan& p, StaticResultsIdentity&) { p.resources[0].desc.width = 128; }},
+      {"the mips", [](Plan& p, StaticResultsIdentity&) { p.resources[0].desc.mips = 6; }},
+      {"the driver", [](Plan&, StaticResultsIdentity& i) { i.device.driver_version ^= 1; }},
+      {"the shaders", [](Plan&, StaticResultsIdentity& i) { i.code ^= 1; }},
+      {"an input file", [](Plan&, StaticResultsIdentity& i) { i.inputs ^= 1; }},
+  };
+  for (const auto& [what, change] : changes) {
+    Plan plan = static_plan();
+    StaticResultsIdentity changed = identity;
+    change(plan, changed);
+    EXPECT_NE(static_results_key(plan, changed), key) << what;
+  }
+  Plan other = static_plan();
+  other.resources[1].desc.width = 4096;  // not a static result: its shape is not the results'
+  EXPECT_EQ(static_results_key(other, identity), key);
+}
+
+TEST(StaticResultsFile, APlanWithoutStaticPassesHasNothingToKeep) {
+  Plan plan = static_plan();
+  for (PlanPass& p : plan.passes) p.is_static = false;
+  EXPECT_EQ(static_results_key(plan, {test_device(), 7, 9}), 0u);
+}
+
+}  // namespace
+}  // namespace lg
