@@ -140,11 +140,12 @@ struct Probe {
 
 std::vector<std::unique_ptr<Probe>> load_probes() {
   std::vector<std::unique_ptr<Probe>> probes;
-  probes.push_back(std::make_unique<Probe>(Probe{"random", test::round_to_half(test::random_environment(kFace, 500))}));
+  probes.push_back(std::make_unique<Probe>(
+      Probe{"random", test::round_to_half(test::random_environment(kFace, 500)), {}, {}, {}, {}}));
   for (const char* name : {"grace.hdr", "pisa.hdr"}) {
     std::optional<CubeImage> env = test::load_probe(name, kFace);
     if (env)
-      probes.push_back(std::make_unique<Probe>(Probe{name, test::round_to_half(std::move(*env))}));
+      probes.push_back(std::make_unique<Probe>(Probe{name, test::round_to_half(std::move(*env)), {}, {}, {}, {}}));
     else
       std::printf("skipping %s: ../shared/data/env/%s is missing\n", name, name);
   }

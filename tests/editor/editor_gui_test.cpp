@@ -244,7 +244,8 @@ class FlatPreview : public PreviewRenderer {
   PreviewImage render(const Graph& graph, QSize size, const PreviewPort&, QString*) override {
     nodes = graph.nodes.size();
     renderer_thread = std::this_thread::get_id();
-    PreviewImage image{size.width(), size.height(), {}, PreviewEncoding::display, 4, {}, {}};
+    PreviewImage image;
+    image.width = size.width(), image.height = size.height(), image.encoding = PreviewEncoding::display;
     image.rgba.assign(size_t(size.width()) * size.height() * 4, 0.5f);
     return image;
   }

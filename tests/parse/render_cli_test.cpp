@@ -183,10 +183,11 @@ TEST(RenderCli, BadOptionsAreUsageErrors) {
     Outcome r = lumagraph(args);
     EXPECT_EQ(r.status, 1) << args[1] << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "lumagraph render:")) << r.err;
-    if (args[1] == "--frame-seconds")
+    if (args[1] == "--frame-seconds") {
       EXPECT_TRUE(contains(r.err, "--frame-seconds expects a time in seconds above 0") &&
                   contains(r.err, "got '" + args[2] + "'"))
           << r.err;
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 // the file is written afresh; results that change every frame (an animated sky) are never kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -130,7 +131,12 @@ struct Primed {
 
 const Primed& primed() {
   static const Primed primed = [] {
-    const fs::path folder = fresh_folder("primed");
+    // A folder of the first test that asks: ctest runs each test in a process of its own, two
+    // at a time, and a shared folder was emptied under another process's feet.
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string("primed-") + test->test_suite_name() + "-" + test->name();
+    std::replace(name.begin(), name.end(), '/', '-');
+    const fs::path folder = fresh_folder(name);
     Primed p;
     p.frame = first_frame(folder, quick_graph(folder));
     p.files = results_files(folder);
