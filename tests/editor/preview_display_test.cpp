@@ -36,7 +36,7 @@ TEST(PreviewPorts, MainOutputThenEveryOutputPortAndEachGBufferComponent) {
 }
 
 PreviewImage one_pixel(float r, float g, float b, float a, PreviewEncoding encoding) {
-  return PreviewImage{1, 1, {r, g, b, a}, encoding, 4, {}, {}};
+  return PreviewImage{1, 1, {r, g, b, a}, encoding, 4, {}, {}, {}};
 }
 
 QRgb shown(const PreviewImage& image, double ev = 0, PreviewChannel channel = PreviewChannel::rgb) {
@@ -68,7 +68,7 @@ TEST(PreviewDisplay, NonFinitePixelsShowMagenta) {
 }
 
 TEST(PreviewDisplay, TheReadOutGivesThePixelsOwnValues) {
-  PreviewImage image{2, 1, {0, 0, 0, 1, 0.123456789f, 2.5f, -1, 1}, PreviewEncoding::colour, 4, {}, {}};
+  PreviewImage image{2, 1, {0, 0, 0, 1, 0.123456789f, 2.5f, -1, 1}, PreviewEncoding::colour, 4, {}, {}, {}};
   EXPECT_EQ(pixel_readout(image, 1, 0), "x 1, y 0: 0.123457 2.5 -1 1");
   EXPECT_TRUE(pixel_readout(image, 2, 0).isEmpty());
   EXPECT_TRUE(pixel_readout(image, 0, -1).isEmpty());
