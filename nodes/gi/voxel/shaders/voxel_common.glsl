@@ -13,13 +13,19 @@ struct VoxelConstants {
   vec4 irradiance;         // rgb: the light's irradiance, W/m^2; w: ao_distance, m
   mat4 shadow_from_world;  // into the shadow map's clip space (reversed depth, 1 nearest the light)
   ivec4 chain;             // x: the axis (0, 1, 2) along which the chain's images hold two halves
+  // x: 1 with the directional light, y: 1 with the sky (the SH linked: injected, and gathered by
+  // the cones that leave the grid), z: the local lights injected, w: 1 when any of those lights
+  // the voxels (else the cones write nothing: no coverage)
+  ivec4 sources;
 };
 
 layout(std140, binding = 0) uniform ConstantsBlock { VoxelConstants voxel; };
 
-// The voxelization's sums, 8 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, unused.
-// Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two million triangles a voxel.
-#define LG_VOXEL_INTS 8
+// The voxelization's sums, 11 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, then as
+// float bits the sky's visibility (voxel_sky.comp) and the local lights' irradiance (rgb,
+// voxel_local_lights.comp). Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two
+// million triangles a voxel.
+#define LG_VOXEL_INTS 11
 const float kVoxelUnit = 1024.0;
 
 uint voxel_index(ivec3 c) {
