@@ -38,11 +38,6 @@ namespace {
 
 constexpr uint64_t kGridBytesPerVoxel = 11 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
 
-struct ConesPush {  // shaders/voxel_cones.comp
-  int32_t k;
-  int32_t specular;
-};
-
 struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 origin_cell;
   glm::ivec4 counts;
@@ -397,9 +392,10 @@ class VoxelKernel final : public NodeKernel {
         storage_buffer(13, grid_sums_.handle())};
     // The specular cone only where its output is read (examples/gi-voxel.json does not link it).
     if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
-    const ConesPush push{k_, *specular_read_ ? 1 : 0};
+    // kTraceSpecular and kGatherSky.
+    const uint32_t constants[] = {*specular_read_ ? 1u : 0u, sky_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
-                     std::as_bytes(std::span(&push, 1)));
+                     std::as_bytes(std::span(&k_, 1)), kTileSize, constants);
     keep_cones(ctx, targets);
     kept_camera_ = camera;
   }
@@ -434,8 +430,11 @@ class VoxelKernel final : public NodeKernel {
                                       storage_image(5, ctx.image("out.ao").view()),
                                       sampled_image(6, ctx.image("tmp.specular_lowres").view(), ctx.nearest_sampler()),
                                       storage_image(7, ctx.image("out.specular").view())};
+    // kSpecular: the upsample writes the specular output only where the cones traced it.
+    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
+    const uint32_t constants[] = {*specular_read_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_upsample.comp", writes, low.desc().width, low.desc().height,
-                     std::as_bytes(std::span(&k_, 1)));
+                     std::as_bytes(std::span(&k_, 1)), kTileSize, constants);
   }
 
   const int resolution_;

@@ -55,9 +55,13 @@ layout(binding = 11, rgba16f) uniform writeonly image2D specular;
 // The voxelization's sums (voxel_common.glsl): a voxel's triangles and sky visibility.
 layout(std430, binding = 13) readonly buffer Grid { int grid[]; };
 layout(push_constant) uniform Push {
-  int k;               // the G-buffer's resolution over the targets'
-  int trace_specular;  // 0 where nothing reads the specular output: it stays 0
+  int k;  // the G-buffer's resolution over the targets'
 };
+// Specialization constants (lavapipe runs both sides of a branch on a run-time flag,
+// docs/lavapipe-costs.md): 0 where nothing reads the specular output (it stays 0), and 0 where the
+// sky is not linked (no sky to gather).
+layout(constant_id = 0) const int kTraceSpecular = 1;
+layout(constant_id = 1) const int kGatherSky = 1;
 
 // The tangent of the specular cone's half-angle for perceptual roughness r (GGX, alpha = r^2):
 // the reflected lobe's half width at half maximum. GGX's D(h) falls to half its peak where
@@ -132,15 +136,15 @@ void main() {
   for (int i = 0; i < kHemisphereCones; ++i) {
     Cone cone = trace_hemisphere_cone(origin, n, i, voxel.irradiance.w, kAllLevels, 1.0);
     light += hemisphere_cone_weight(i) * cone.light;
-    sky_light += hemisphere_cone_weight(i) * cone.open * sky_radiance(sky, cone.direction);
+    if (kGatherSky == 1) sky_light += hemisphere_cone_weight(i) * cone.open * sky_radiance(sky, cone.direction);
     occluded += hemisphere_cone_weight(i) * cone.occluded;
     open += hemisphere_cone_weight(i) * cone.open;
   }
-  light += sky_light * min(1.0, surface_sky_visibility(p, n) / max(open, 1e-6));
+  if (kGatherSky == 1) light += sky_light * min(1.0, surface_sky_visibility(p, n) / max(open, 1e-6));
   vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
   imageStore(irradiance, texel, vec4(e, 1.0));
   imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
   vec4 reflected = vec4(0.0);
-  if (trace_specular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
+  if (kTraceSpecular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
   imageStore(specular, texel, reflected);
 }

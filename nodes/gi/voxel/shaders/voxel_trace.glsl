@@ -16,6 +16,7 @@ const float kTanHalfAngle = 0.57735027;  // tan 30 deg
 const float kCentreWeight = 0.25, kSideWeight = 0.15;
 const float kCrossing = 4.0;
 const int kAllLevels = 1 << 30;
+const float kCoarseStep = 1.5;
 
 // What a ray travelling along `negative` (0 or 1) of `image`'s axis sees at `uvw` (the grid's
 // box in [0, 1]^3) of `level`: within its half, clamped half a voxel inside it so the filter does
@@ -73,7 +74,10 @@ Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle, floa
   float opacity = 0.0, occluded = 0.0, blocked = 0.0;
   float t = cell;
   int steps = int(128.0 / step_scale);  // as far at any step
-  for (int s = 0; s < steps && opacity < 0.99 && blocked < 0.99; ++s) {
+  // A do-while: its test at the bottom saves the body that llvmpipe's `for` runs once more with
+  // every lane masked (docs/lavapipe-costs.md, rule 2); the first step always runs.
+  int s = 0;
+  do {
     // The level whose voxels are at most that wide: a whole level, as blending in the next one
     // would reach twice as far.
     float level = min(floor(log2(max(min(2.0 * t * tan_half_angle, (cell + t * cosine) / 1.5), cell) / cell)), top);
@@ -93,8 +97,9 @@ Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle, floa
     // of the surface the cone starts from, which the filter reaches within 2.5 voxels of it. A
     // march ended by facing opacity alone went on through every surface's back.
     if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
-    t += width * step_scale;
-  }
+    t += width * (level >= 2.0 ? kCoarseStep : step_scale);
+    ++s;
+  } while (s < steps && opacity < 0.99 && blocked < 0.99);
   // A march stopped at 99% (below) lets nothing through: a closed room's 1% would be a leak.
   float closed = clamp(max(opacity, blocked), 0.0, 1.0);
   return Cone(light, opacity, occluded, closed < 0.99 ? 1.0 - closed : 0.0, direction);
