@@ -8,10 +8,12 @@
 // window of lighting.deferred and s the squared size of an area light (area / pi: a disk's
 // on-axis irradiance exactly, L pi R^2 / (d^2 + R^2)), at least a quarter voxel squared so that a
 // light inside a voxel stays finite. Visibility from the voxels' own opacity (not the shadow
-// atlas: the volume is rebuilt without lighting.deferred's passes): a ray through level 0 of the
-// chain's opacity from 1.5 voxels out along the normal (where the trilinear filter no longer
-// reaches the surface's own voxels) to 1.5 voxels short of the light (a lamp lies in its
-// ceiling's voxels), transmittance the product of (1 - opacity) at one-voxel steps.
+// atlas: the volume is rebuilt without lighting.deferred's passes): a ray through the chain's
+// opacity at voxel_ray_level() (voxel_common.glsl), from 1.5 of its voxels out along the normal (where the trilinear filter no longer
+// reaches the surface's own voxels) to 1.5 short of the light (a lamp lies in its ceiling's
+// voxels), transmittance the product of (1 - opacity) at steps of one of those voxels. A coarser
+// level keeps a wall opaque along its normal (the chain composites front to back along each
+// axis) but lets a ray past a thin object's edge more easily.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/gi/voxel/shaders/voxel_trace.glsl"
 #include "nodes/common/shaders/finite.glsl"
@@ -31,11 +33,12 @@ struct LocalLight {
 const int kMaxLocalLights = 16;  // voxel_kernel.cpp's kMaxLocalLights
 layout(std140, binding = 10) uniform LightsBlock { LocalLight lights[kMaxLocalLights]; };
 
-const int kMaxSteps = 256;  // a 128-voxel grid's diagonal is 222 voxels
+const int kMaxSteps = 64;  // voxel_ray_level()'s grid's diagonal is 56 voxels
 
-// The share of the light that passes from `from` to `to` through the opacity of level 0.
+// The share of the light that passes from `from` to `to` through the opacity of voxel_ray_level().
 float transmittance(vec3 from, vec3 to) {
-  float cell = voxel.origin_cell.w;
+  int level = voxel_ray_level();
+  float cell = voxel.origin_cell.w * exp2(float(level));
   vec3 grid_size = cell * vec3(voxel.counts.xyz);
   vec3 d = to - from;
   float length_left = length(d) - 1.5 * cell;
@@ -49,7 +52,7 @@ float transmittance(vec3 from, vec3 to) {
     vec3 uvw = (from + d * t - voxel.origin_cell.xyz) / grid_size;
     // Outside the grid (a light beyond the scene's box) nothing blocks.
     float inside = float(all(greaterThanEqual(uvw, vec3(0.0))) && all(lessThanEqual(uvw, vec3(1.0))));
-    passed *= 1.0 - inside * clamp(dot(w, seen(opacity_image, uvw, 0, 0).rgb), 0.0, 1.0);
+    passed *= 1.0 - inside * clamp(dot(w, seen(opacity_image, uvw, level, 0).rgb), 0.0, 1.0);
     t += cell;
     ++s;
   } while (t < length_left && passed > 1e-3 && s < kMaxSteps);
@@ -86,7 +89,7 @@ void main() {
   n /= len;
   float cell = voxel.origin_cell.w;
   vec3 p = voxel.origin_cell.xyz + (vec3(c) + 0.5) * cell;
-  vec3 from = p + n * (1.5 * cell);
+  vec3 from = p + n * (1.5 * cell * exp2(float(voxel_ray_level())));
   vec3 e = vec3(0.0);
   int count = min(voxel.sources.z, kMaxLocalLights);
   for (int i = 0; i < count; ++i) e += irradiance(lights[i], p, n, from);
