@@ -54,14 +54,16 @@ ivec3 voxel_level_counts(int level) {
   return max(voxel.counts.xyz >> level, ivec3(1));
 }
 
-// The level whose voxels are those of a 32-voxel grid (0 at resolution 32 or less, 1 at 64, 2 at
-// 128): the finest the rebuild's per-voxel rays read (the sky's visibility, voxel_sky.comp; the
-// local lights', voxel_local_lights.comp). At level 0 they cost a 128-voxel grid's rebuild 64
-// times a 32-voxel grid's (8 times the voxels, 8 times the steps): the Cornell box's rebuild at 128
-// ran past the 60 s fence timeout at load 15. The chain composites front to back along each axis,
-// so a wall stays opaque along its normal at the coarser level.
+// The level whose voxels are those of a 64-voxel grid (0 at resolution 64 or less, 1 at 128): the
+// finest the rebuild's per-voxel rays read (the sky's visibility, voxel_sky.comp; the local
+// lights', voxel_local_lights.comp). At level 0 they cost a 128-voxel grid's rebuild 16 times a
+// 64-voxel grid's (8 times the voxels, twice the steps): the Cornell box's rebuild at 128 ran
+// past lavapipe's 60 s fence timeout at load 15. The chain composites front to back along each
+// axis, so a wall stays opaque along its normal at the coarser level. (The level of a 32-voxel
+// grid, 1 at 64, made the Cornell box's error at 64 0.539 -> 0.580: the lamp and sky more
+// shadowed.)
 int voxel_ray_level() {
-  return max(0, voxel.counts.w - 6);  // counts.w - 1 = log2 of the longest count; 5 = log2 32
+  return max(0, voxel.counts.w - 7);  // counts.w - 1 = log2 of the longest count; 6 = log2 64
 }
 
 // Where voxel c of a level of `counts` lies in its image: in the first half for rays travelling

@@ -33,7 +33,7 @@ struct LocalLight {
 const int kMaxLocalLights = 16;  // voxel_kernel.cpp's kMaxLocalLights
 layout(std140, binding = 10) uniform LightsBlock { LocalLight lights[kMaxLocalLights]; };
 
-const int kMaxSteps = 64;  // voxel_ray_level()'s grid's diagonal is 56 voxels
+const int kMaxSteps = 128;  // voxel_ray_level()'s grid's diagonal is 111 voxels
 
 // The share of the light that passes from `from` to `to` through the opacity of voxel_ray_level().
 float transmittance(vec3 from, vec3 to) {

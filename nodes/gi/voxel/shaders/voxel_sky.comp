@@ -17,7 +17,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = 1) buffer Grid { int grid[]; };
 
 const float kWholeGrid = 1e30;  // occlusion counted all the way out of the grid
-// Levels up to voxel_ray_level() (voxel_common.glsl: 0 at resolution 32), a voxel of it a step at
+// Levels up to voxel_ray_level() (voxel_common.glsl: 0 at resolution 64), a voxel of it a step at
 // most (at most 128 steps, voxel_trace.glsl): with every level a cone crossing a ceiling took one
 // partly opaque sample of it and left the grid, so a closed room's inside faces saw part of the
 // sky (VoxelGpu test at 32: 2.9% of the sky's light inside with every level, 1.1% with levels
