@@ -3,14 +3,22 @@
 // --frames frames after a first one (it JIT-compiles the pipelines). Prints each pass's median and
 // fastest GPU time, the whole frame's, and the process's CPU time a frame, which a loaded machine
 // disturbs far less than lavapipe's timestamps (they can land a pass's time on its neighbour).
+// --world FILE draws a world file instead; --orbit DEGREES turns the camera about the vertical
+// by +DEGREES and back in turn, so that no frame sees the last one's view (a moving camera: what
+// a node keeps while the camera stands still, as gi.voxel's cones, is computed every frame).
 #include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "api/renderer.h"
+#include "api/world_loading.h"
+#include "runtime/scene/components.h"
 #include "runtime/scene/default_world.h"
+#include "runtime/scene/load_world.h"
 #include "tests/bench/bench_flags.h"
 #include "tests/bench/renderer_pass_timing.h"
 
@@ -21,9 +29,17 @@ struct Options {
   uint32_t width = 1280, height = 720;
   uint32_t frames = 8;
   bool area_lights = true;
+  std::string world;    // empty: the default world
+  double orbit = 0.0;   // degrees the camera turns each frame, back and forth
 };
 
-// The default world without its sphere, tube and rect lights: light/area is most of the frame,
+// The world's cameras turned by `degrees` about the vertical, in place.
+void turn_cameras(lg::World& world, double degrees) {
+  const glm::quat turn = glm::angleAxis(float(glm::radians(degrees)), glm::vec3(0.0f, 1.0f, 0.0f));
+  world.each<lg::Camera, lg::Transform>([&](lg::Entity, lg::Camera&, lg::Transform& t) { t.rotation = turn * t.rotation; });
+}
+
+// The world without its sphere, tube and rect lights: light/area is most of the default frame,
 // and without it the process's CPU time a frame is the other passes', so a change to one of them
 // shows above a loaded machine's noise.
 void remove_area_lights(lg::World& world) {
@@ -46,7 +62,7 @@ double median(std::vector<double> v) {
 int run(const Options& o) {
   lg::Renderer renderer;
   renderer.load_graph(o.graph);
-  lg::World world = lg::default_world();
+  lg::World world = o.world.empty() ? lg::default_world() : lg::load_world(o.world, lg::renderer_world_options(o.world));
   if (!o.area_lights) remove_area_lights(world);
   renderer.render(world, {o.width, o.height});
   std::vector<std::string> order;  // schedule order
@@ -54,6 +70,7 @@ int run(const Options& o) {
   std::vector<double> frame_ms;
   const double cpu_start = lg::bench::process_cpu_ms();
   for (uint32_t f = 0; f < o.frames; ++f) {
+    if (o.orbit != 0.0) turn_cameras(world, f % 2 == 0 ? o.orbit : -o.orbit);
     const lg::FrameStats& stats = renderer.render(world, {o.width, o.height});
     frame_ms.push_back(stats.gpu_ms);
     for (const lg::PassStats& p : stats.passes) {
@@ -70,7 +87,8 @@ int run(const Options& o) {
   }
   std::printf("%-22s %10.1f %10.1f\n", "frame (GPU)", median(frame_ms),
               *std::min_element(frame_ms.begin(), frame_ms.end()));
-  std::printf("process CPU a frame: %.1f ms over %u frames at %ux%u\n", cpu_per_frame, o.frames, o.width, o.height);
+  std::printf("process CPU a frame: %.1f ms over %u frames at %ux%u%s\n", cpu_per_frame, o.frames, o.width, o.height,
+              o.orbit != 0.0 ? ", the camera turning" : "");
   return 0;
 }
 
@@ -79,14 +97,20 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   lg::bench::BenchFlags flags(
-      "usage: lumagraph-bench-frame [--graph FILE] [--size WxH] [--frames N] [--no-area-lights]\n"
+      "usage: lumagraph-bench-frame [--graph FILE] [--world FILE] [--size WxH] [--frames N] [--orbit DEGREES]\n"
+      "                             [--no-area-lights]\n"
       "  per pass, the median and fastest GPU time over N frames (default 8) after the first, of\n"
-      "  the graph (default examples/default.json) on the default world at WxH (default 1280x720);\n"
+      "  the graph (default examples/default.json) on the world (default: the default world) at WxH\n"
+      "  (default 1280x720); --orbit turns the camera by +DEGREES and back in turn every frame;\n"
       "  --no-area-lights leaves out the world's sphere, tube and rect lights (and light/area)\n");
   flags.text("--graph", o.graph);
   flags.size("--size", o.width, o.height);
   flags.count("--frames", o.frames);
+  flags.text("--world", o.world);
+  std::vector<double> orbit;
+  flags.numbers("--orbit", orbit);
   flags.set_switch("--no-area-lights", o.area_lights, false);
   if (auto status = flags.parse(argc, argv)) return *status;
+  if (!orbit.empty()) o.orbit = orbit.front();
   return run(o);
 }

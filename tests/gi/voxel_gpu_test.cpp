@@ -8,10 +8,14 @@
 // - the sky's light in the voxels (the environment's SH linked): the wall beside the floor lit by
 //   the sky alone gives the floor what its face gets from the sky, and nothing reaches the inside
 //   of a closed room under that sky;
+// - a cone that leaves the grid gathers the sky: an open floor under the sky alone gets the sky's
+//   irradiance;
+// - a point light in the voxels: each floor voxel holds the radiance of the analytic irradiance;
 // - the frame after the sun turns and the wall moves equals a fresh renderer's, and so does the
 //   frame after a draw changes only its mesh, and the frame after the camera moves (the cones kept
 //   while neither changes);
-// - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright):
+// - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright, a
+//   point light 1e30 bright on the floor, a rectangle light of no area, a spot of no ramp):
 //   every output finite, validation clean;
 // - a scene without a directional light drops the node from examples/gi-voxel.json, with the
 //   reason in the plan.
@@ -27,6 +31,7 @@
 
 #include "api/renderer.h"
 #include "nodes/env/common/sh_basis.h"
+#include "nodes/gi/common/cell_grid.h"
 #include "graph/graph_io.h"
 #include "nodes/gi/path_tracer/path_transport.h"
 #include "nodes/raytrace/camera_pixels.h"
@@ -106,12 +111,15 @@ constexpr glm::vec3 kSunFromTheEast{-0.6f, -1.0f, -0.2f}, kSunFromTheWest{0.6f, 
 constexpr float kWhite = 0.8f, kWallFace = -2.0f, kWallHeight = 2.0f, kWallHalfLength = 2.0f;
 
 // A white 4 m floor of perceptual roughness `floor_roughness` and, standing on it along its west
-// edge, a white wall 2 m high facing east.
-World floor_and_wall(glm::vec3 sun_direction, float sun_intensity, float floor_roughness = 0.5f) {
+// edge, a wall 2 m high facing east (white unless `wall_albedo` says otherwise).
+World floor_and_wall(glm::vec3 sun_direction, float sun_intensity, float floor_roughness = 0.5f,
+                     float wall_albedo = kWhite) {
   World world;
   PbrMaterial white;
   white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
-  const int material = world.add_material(white);
+  PbrMaterial wall_material = white;
+  wall_material.base_color = glm::vec4(glm::vec3(wall_albedo), 1.0f);
+  const int material = world.add_material(wall_material);
   PbrMaterial floor_material = white;
   floor_material.roughness = floor_roughness;
   Entity floor = world.create("floor");
@@ -364,7 +372,8 @@ TEST(Voxel, ClosedRoomLitFromOutsideLeaksBelowItsBound) {
 // 0.5 x 0.6 and 1.0 x 1.4 of the integral over the face at V = 1 (the 40% of the sun's test above:
 // the same cones and voxels). Measured 0.520 of it; with V forced to 1, 0.704 (the cones'
 // quadrature error alone, as the sun's -31%), so the node's V is about 0.74. Without the sky in
-// the voxels it reads 0.
+// the voxels it reads 0. The node's irradiance also holds the sky's own light (the cones that
+// leave the grid gather it), the same with a black wall: the wall's bounce is the difference.
 TEST(Voxel, SkyLightsTheWallItReaches) {
   auto renderer = make_renderer(voxel_sky_graph());
   World world = floor_and_wall(kSunFromTheEast, 0.0f);
@@ -373,11 +382,20 @@ TEST(Voxel, SkyLightsTheWallItReaches) {
   const double face_full = kWhite * sky_irradiance_green(*renderer, {1, 0, 0}) / kPi;  // V = 1
   const FloorStrips lit = floor_strips(world, renderer->executor().read_image("voxel.irradiance"),
                                        renderer->executor().read_image("voxel.ao"), face_full);
-  std::printf("sky alone: floor beside the wall E %.4f, the face at V = 1 gives %.4f (ratio %.3f)\n", lit.near_wall,
-              lit.near_expected, lit.near_wall / lit.near_expected);
-  EXPECT_GT(lit.near_wall, 0.5 * 0.6 * lit.near_expected);
-  EXPECT_LT(lit.near_wall, 1.0 * 1.4 * lit.near_expected);
+  World black_wall = floor_and_wall(kSunFromTheEast, 0.0f, 0.5f, 0.0f);
+  black_wall.add(black_wall.create("environment"), EnvironmentLight{});
+  auto black_renderer = make_renderer(voxel_sky_graph());
+  black_renderer->render(black_wall, kFrame);
+  const FloorStrips dark = floor_strips(black_wall, black_renderer->executor().read_image("voxel.irradiance"),
+                                        black_renderer->executor().read_image("voxel.ao"), face_full);
+  const double bounce = lit.near_wall - dark.near_wall;
+  std::printf("sky alone: floor beside the wall E %.4f (black wall %.4f), the bounce %.4f, the face at V = 1 gives "
+              "%.4f (ratio %.3f)\n",
+              lit.near_wall, dark.near_wall, bounce, lit.near_expected, bounce / lit.near_expected);
+  EXPECT_GT(bounce, 0.5 * 0.6 * lit.near_expected);
+  EXPECT_LT(bounce, 1.0 * 1.4 * lit.near_expected);
   expect_no_validation_messages(renderer->context());
+  expect_no_validation_messages(black_renderer->context());
 }
 
 // The closed room of ClosedRoomLitFromOutsideLeaksBelowItsBound with 0.5 m slabs (so that the
@@ -405,6 +423,102 @@ TEST(Voxel, SkyLeavesTheInsideOfAClosedRoomDark) {
   ASSERT_EQ(n, size_t(kFrame.width) * kFrame.height);
   EXPECT_GT(sky_up, 0.0);
   EXPECT_LT(sum / double(n), 0.01 * kWhite * sky_up);
+  expect_no_validation_messages(renderer->context());
+}
+
+// A white 4 m floor alone under the sky (the sun at zero): every cone from it leaves the grid at
+// once, so it gathers the sky's radiance (the SH deconvolved by the cosine kernel) over the six
+// cones, and must give the sky's irradiance at the floor's normal, E_sky(up), lighting.ibl's
+// ambient there. The six-cone quadrature is exact for the SH's band 0 and gathers band 1 at
+// 93.75% and band 2 at 62.5% of their share of E_sky(up) (sum w_i P_l(cos theta_i) over the
+// cones is 0.625 and 0.15625, times the deconvolution's 3/2 and 4, with pi), so the bound is
+// 6.25% of band 1's share plus 37.5% of band 2's plus 2% (half floats, the floor voxel's sky
+// visibility, which may cap the cones' sky: voxel_cones.comp). env.sky's SH: measured 0.98.
+TEST(Voxel, AConeLeavingTheGridGathersTheSky) {
+  World world;
+  PbrMaterial white;
+  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
+  Entity floor = world.create("floor");
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(white)});
+  world.add(floor, Transform{});
+  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, kSunFromTheEast, 0.0f);
+  world.add(world.create("environment"), EnvironmentLight{});
+  auto renderer = make_renderer(voxel_sky_graph());
+  renderer->render(world, kFrame);
+  const double sky_up = sky_irradiance_green(*renderer, {0, 1, 0});
+  const std::vector<std::byte> bytes = renderer->executor().read_buffer("sh.sh");
+  std::vector<float> sh(bytes.size() / sizeof(float));
+  std::memcpy(sh.data(), bytes.data(), sh.size() * sizeof(float));
+  double y[9];
+  sh_evaluate(2, glm::dvec3(0, 1, 0), y);
+  double band1 = 0, band2 = 0;  // green
+  for (int k = 1; k < 4; ++k) band1 += sh[4 * k + 1] * y[k];
+  for (int k = 4; k < 9; ++k) band2 += sh[4 * k + 1] * y[k];
+  const std::vector<float> e = renderer->executor().read_image("voxel.irradiance");
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < e.size(); i += 4)
+    if (e[i + 3] > 0.5f) sum += e[i + 1], ++n;
+  const double mean = sum / double(std::max<size_t>(n, 1));
+  const double bound = 0.0625 * std::abs(band1) + 0.375 * std::abs(band2) + 0.02 * sky_up;
+  std::printf("open floor under the sky: E %.4f against E_sky(up) %.4f (ratio %.4f; bands 1, 2: %.4f, %.4f; bound "
+              "%.4f)\n",
+              mean, sky_up, mean / sky_up, band1, band2, bound);
+  EXPECT_GT(n, size_t(kFrame.width) * kFrame.height / 4);
+  ASSERT_GT(sky_up, 0.0);
+  EXPECT_NEAR(mean, sky_up, bound);
+  expect_no_validation_messages(renderer->context());
+}
+
+// A point light of 5 W/sr 1.2 m above a white 4 m floor (the sun at zero): each floor voxel
+// holds what its surface reflects, L = 0.8 E / pi with E = I cos / d^2 at the voxel's centre
+// (on the floor: the flat grid is one voxel high, centred on it), read from the volume output.
+// Within 2%: the voxel's d^2 gets a quarter voxel squared (0.4% at 1.2 m, voxel_local_lights.comp),
+// the half floats 0.1%, the albedo's fixed point 0.1%; nothing occludes the light.
+TEST(Voxel, APointLightsVoxelsHoldItsIrradiance) {
+  World world;
+  PbrMaterial white;
+  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
+  Entity floor = world.create("floor");
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(white)});
+  world.add(floor, Transform{});
+  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, kSunFromTheEast, 0.0f);
+  const glm::dvec3 light(0.3, 1.2, -0.2);
+  constexpr double kIntensity = 5.0;
+  Entity lamp = world.create("lamp");
+  world.add(lamp, PointLight{.intensity = float(kIntensity)});
+  world.add(lamp, Transform{}).position = glm::vec3(light);
+  Diagnostics d("voxel-point-light-test.json");
+  std::optional<Graph> graph = parse_graph_text(
+      R"({ "format": "lumagraph/1", "nodes": [
+      { "id": "gbuf", "type": "scene.gbuffer" },
+      { "id": "voxel", "type": "gi.voxel", "params": { "resolution": 32, "resolution_scale": 1, "shadow_size": 256 } } ],
+    "links": [ { "from": "gbuf.gbuffer", "to": "voxel.gbuffer" } ],
+    "outputs": [ "voxel.irradiance", "voxel.volume" ] })",
+      d);
+  ASSERT_TRUE(graph) << d.to_string();
+  auto renderer = make_renderer(*graph);
+  renderer->render(world, kFrame);
+  const std::vector<float> volume = renderer->executor().read_image("voxel.volume");
+  const CellGrid grid = fit_power_of_two_grid(Bounds{{-2.0f, 0.0f, -2.0f}, {2.0f, 0.0f, 2.0f}}, 32);
+  ASSERT_EQ(grid.counts, glm::ivec3(32, 1, 32));
+  ASSERT_EQ(volume.size(), size_t(4 * 32 * 32 * 32));
+  double worst = 0;
+  size_t voxels = 0;
+  for (int z = 0; z < 32; ++z)
+    for (int x = 0; x < 32; ++x) {
+      const size_t i = 4 * (size_t(z) * 32 * 32 + size_t(x));  // y = 0
+      if (volume[i + 3] < 0.5f) continue;
+      const glm::dvec3 p = glm::dvec3(grid.origin) + (glm::dvec3(x, 0, z) + 0.5) * double(grid.cell);
+      const glm::dvec3 to_light = light - p;
+      const double d2 = glm::dot(to_light, to_light);
+      const double expected = kWhite * kIntensity * (to_light.y / std::sqrt(d2)) / d2 / kPi;
+      worst = std::max(worst, std::abs(volume[i + 1] - expected) / expected);
+      ++voxels;
+    }
+  std::printf("point light in the voxels: %zu floor voxels, worst relative error %.4f\n", voxels, worst);
+  EXPECT_EQ(voxels, 32u * 32u);
+  EXPECT_LT(worst, 0.02);
   expect_no_validation_messages(renderer->context());
 }
 
@@ -601,6 +715,16 @@ TEST(Voxel, ALargeSlantedTriangleMarksAllItsVoxels) {
 // validation clean.
 TEST(Voxel, StaysFiniteOnDegenerateInput) {
   World world = degenerate_world();
+  // Lights at their limits: on the floor and 1e30 W/sr bright, of no area, a spot of no ramp.
+  Entity point = world.create("point");
+  world.add(point, PointLight{.intensity = 1e30f});
+  world.add(point, Transform{});
+  Entity rect = world.create("rect");
+  world.add(rect, RectLight{.width = 0.0f, .height = 0.0f});
+  world.add(rect, Transform{}).position = {0.0f, 1.5f, 0.0f};
+  Entity spot = world.create("spot");
+  world.add(spot, SpotLight{.inner_cone_angle = 0.5f, .outer_cone_angle = 0.5f});
+  world.add(spot, Transform{}).position = {-1.0f, 1.0f, 0.0f};
   auto renderer = make_renderer(voxel_graph(16, 0.5));
   renderer->render(world, kFrame);
   const std::vector<float> e = renderer->executor().read_image("voxel.irradiance");

@@ -19,6 +19,7 @@
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
 #include "nodes/gi/common/voxelize_draws.h"
+#include "nodes/gi/voxel/voxel_local_lights.h"
 #include "nodes/lighting/deferred/shadow_depth_pipeline.h"
 #include "nodes/lighting/deferred/shadow_projection.h"
 #include "nodes/scene/gbuffer/draw_constants.h"
@@ -35,12 +36,7 @@
 namespace lg {
 namespace {
 
-constexpr uint64_t kGridBytesPerVoxel = 8 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
-
-struct ConesPush {  // shaders/voxel_cones.comp
-  int32_t k;
-  int32_t specular;
-};
+constexpr uint64_t kGridBytesPerVoxel = 11 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
 
 struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 origin_cell;
@@ -49,7 +45,11 @@ struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 irradiance;
   glm::mat4 shadow_from_world;
   glm::ivec4 chain;
+  glm::ivec4 sources;
 };
+
+// The second injection's push (shaders/voxel_inject.comp): what it adds to the sun's light.
+constexpr int32_t kInjectSky = 1, kInjectLocalLights = 2;
 
 // The access of this node's pass `pass` to `slot`, or null (an optional input unlinked): the
 // kernel's first pass of a frame (the shadow's) decides for the volume pass.
@@ -139,6 +139,9 @@ class VoxelKernel final : public NodeKernel {
     shadow_from_world_ = c.shadow_from_world;
     const PlanAccess* sh = node_access(ctx, "volume", "in.sh");
     sky_ = sh && scene.has_environment;
+    local_lights_ = voxel_local_lights(scene);
+    c.sources = glm::ivec4(light_present_ ? 1 : 0, sky_ ? 1 : 0, local_lights_.count,
+                           light_present_ || sky_ || local_lights_.count > 0 ? 1 : 0);
     const std::vector<DrawConstants> draws = draw_constants(scene);
     // The volume is rebuilt only when what it is made of changed: the grid, the light, the draws
     // (transforms, materials), which mesh each draws (not in DrawConstants: a draw may swap
@@ -151,7 +154,7 @@ class VoxelKernel final : public NodeKernel {
       key.insert(key.end(), first, first + bytes);
     };
     append(&c, sizeof(c));
-    append(&sky_, sizeof(sky_));
+    append(local_lights_.lights.data(), local_lights_.count * sizeof(VoxelLocalLight));  // not the padding
     append(&scene.version, sizeof(scene.version));
     append(draws.data(), draws.size() * sizeof(DrawConstants));
     for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
@@ -163,12 +166,17 @@ class VoxelKernel final : public NodeKernel {
       draws_.emplace(ctx.gpu(), ctx.node().id + " draws", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
       draw_blocks_.emplace(ctx.gpu(), ctx.node().id + " draw blocks", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       camera_.emplace(ctx.gpu(), ctx.node().id + " camera", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      lights_.emplace(ctx.gpu(), ctx.node().id + " local lights", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       no_sh_.emplace(ctx.gpu(), ctx.node().id + " no SH", VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
       no_sh_->write(std::vector<float>(4, 0.0f));
     }
     constants_->write_value(c);
     draws_->write(draws);
+<<<<<<< HEAD
     draw_blocks_->write(draw_blocks(draws));  // the shadow pass's (shadow_depth_pipeline.h)
+=======
+    lights_->write_value(local_lights_.lights);
+>>>>>>> voxel18d
   }
 
   // The sums and the chain, sized when the counts change (the box of a moving world may change
@@ -231,11 +239,13 @@ class VoxelKernel final : public NodeKernel {
     prepare(ctx);
     if (rebuild_) {
       voxelize(ctx);
-      inject(ctx, false);
+      inject(ctx, 0);
       build_chain(ctx);
-      if (sky_) {  // the sky's light needs the chain of the sun's to see how open each voxel is
-        sky_visibility(ctx);
-        inject(ctx, true);
+      // The sky's and the local lights' light need the chain of the sun's to see what is open.
+      if (sky_ || local_lights_.count > 0) {
+        if (sky_) sky_visibility(ctx);
+        if (local_lights_.count > 0) local_lights(ctx);
+        inject(ctx, (sky_ ? kInjectSky : 0) | (local_lights_.count > 0 ? kInjectLocalLights : 0));
         build_chain(ctx);
       }
     }
@@ -275,9 +285,10 @@ class VoxelKernel final : public NodeKernel {
     voxelize_draws(ctx, "nodes/gi/voxel/shaders/voxelize.comp", grid_, *constants_, *draws_, grid_sums_);
   }
 
-  // The sums into level 0 (the chain kept in the GENERAL layout); with `sky`, the sky's light too
-  // (each voxel's visibility in its sums, from sky_visibility()).
-  void inject(PassContext& ctx, bool sky) {
+  // The sums into level 0 (the chain kept in the GENERAL layout); `second` adds the sky's light
+  // (kInjectSky: each voxel's visibility in its sums, from sky_visibility()) and the local lights'
+  // (kInjectLocalLights: their irradiance in the sums, from local_lights()).
+  void inject(PassContext& ctx, int32_t second) {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_) {
       for (const Image& seen : seen_) image_barrier(cmd, seen, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
@@ -292,10 +303,9 @@ class VoxelKernel final : public NodeKernel {
                                       storage_image(4, seen_[1].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(5, seen_[2].view({.base_mip = 0, .mip_count = 1})),
                                       storage_image(6, opacity_.view({.base_mip = 0, .mip_count = 1})),
-                                      storage_buffer(7, sky ? ctx.buffer("in.sh").handle() : no_sh_->handle())};
-    const int32_t push = sky ? 1 : 0;
+                                      storage_buffer(7, sh_buffer(ctx))};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_inject.comp", writes, uint32_t(grid_.counts.x),
-                     uint32_t(grid_.counts.y * grid_.counts.z), std::as_bytes(std::span(&push, 1)));
+                     uint32_t(grid_.counts.y * grid_.counts.z), std::as_bytes(std::span(&second, 1)));
   }
 
   // Per voxel, how much of the sky its surface sees through the chain (voxel_sky.comp), into its
@@ -311,6 +321,27 @@ class VoxelKernel final : public NodeKernel {
         sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_sky.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
+  }
+
+  // Per voxel, the local lights' irradiance on its surface with their visibility through the chain
+  // (voxel_local_lights.comp), into its sums.
+  void local_lights(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());  // the chain's last level; the sky pass's sums
+    const DescriptorWrite writes[] = {
+        uniform_buffer(0, constants_->handle()),
+        storage_buffer(1, grid_sums_.handle()),
+        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+        uniform_buffer(10, lights_->handle())};
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_local_lights.comp", writes, uint32_t(grid_.counts.x),
+                     uint32_t(grid_.counts.y * grid_.counts.z));
+  }
+
+  // The environment's SH where the sky is linked, else a buffer of one zero coefficient.
+  VkBuffer sh_buffer(PassContext& ctx) {
+    return sky_ ? ctx.buffer("in.sh").handle() : no_sh_->handle();
   }
 
   void build_chain(PassContext& ctx) {
@@ -361,12 +392,15 @@ class VoxelKernel final : public NodeKernel {
         sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
         sampled_image(10, ctx.image("in.gbuffer", 3).view(), ctx.nearest_sampler()),
-        storage_image(11, specular.view())};
+        storage_image(11, specular.view()),
+        storage_buffer(12, sh_buffer(ctx)),
+        storage_buffer(13, grid_sums_.handle())};
     // The specular cone only where its output is read (examples/gi-voxel.json does not link it).
     if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
-    const ConesPush push{k_, *specular_read_ ? 1 : 0};
+    // kTraceSpecular and kGatherSky.
+    const uint32_t constants[] = {*specular_read_ ? 1u : 0u, sky_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
-                     std::as_bytes(std::span(&push, 1)));
+                     std::as_bytes(std::span(&k_, 1)), kTileSize, constants);
     keep_cones(ctx, targets);
     kept_camera_ = camera;
   }
@@ -401,8 +435,11 @@ class VoxelKernel final : public NodeKernel {
                                       storage_image(5, ctx.image("out.ao").view()),
                                       sampled_image(6, ctx.image("tmp.specular_lowres").view(), ctx.nearest_sampler()),
                                       storage_image(7, ctx.image("out.specular").view())};
+    // kSpecular: the upsample writes the specular output only where the cones traced it.
+    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
+    const uint32_t constants[] = {*specular_read_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_upsample.comp", writes, low.desc().width, low.desc().height,
-                     std::as_bytes(std::span(&k_, 1)));
+                     std::as_bytes(std::span(&k_, 1)), kTileSize, constants);
   }
 
   const int resolution_;
@@ -414,7 +451,12 @@ class VoxelKernel final : public NodeKernel {
   bool light_present_ = false;
   glm::ivec3 allocated_counts_{0};  // none yet
   uint32_t levels_ = 1;
+<<<<<<< HEAD
   std::optional<HostBuffer> constants_, draws_, draw_blocks_, camera_;
+=======
+  std::optional<HostBuffer> constants_, draws_, camera_;
+  std::optional<HostBuffer> lights_;  // local_lights_.lights (voxel_local_lights.comp)
+>>>>>>> voxel18d
   std::optional<HostBuffer> no_sh_;  // bound in place of the SH where the sky is not injected
   Buffer grid_sums_;
   std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)
@@ -426,6 +468,7 @@ class VoxelKernel final : public NodeKernel {
   std::optional<CameraConstants> kept_camera_;  // the camera they were traced from; none yet
   std::optional<bool> specular_read_;  // the plan reads out.specular (fixed for the kernel's plan)
   bool sky_ = false;                   // the environment's SH linked and the scene has an environment
+  VoxelLocalLights local_lights_;      // this frame's (prepare())
   std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
 };
 

@@ -13,13 +13,19 @@ struct VoxelConstants {
   vec4 irradiance;         // rgb: the light's irradiance, W/m^2; w: ao_distance, m
   mat4 shadow_from_world;  // into the shadow map's clip space (reversed depth, 1 nearest the light)
   ivec4 chain;             // x: the axis (0, 1, 2) along which the chain's images hold two halves
+  // x: 1 with the directional light, y: 1 with the sky (the SH linked: injected, and gathered by
+  // the cones that leave the grid), z: the local lights injected, w: 1 when any of those lights
+  // the voxels (else the cones write nothing: no coverage)
+  ivec4 sources;
 };
 
 layout(std140, binding = 0) uniform ConstantsBlock { VoxelConstants voxel; };
 
-// The voxelization's sums, 8 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, unused.
-// Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two million triangles a voxel.
-#define LG_VOXEL_INTS 8
+// The voxelization's sums, 11 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, then as
+// float bits the sky's visibility (voxel_sky.comp) and the local lights' irradiance (rgb,
+// voxel_local_lights.comp). Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two
+// million triangles a voxel.
+#define LG_VOXEL_INTS 11
 const float kVoxelUnit = 1024.0;
 
 uint voxel_index(ivec3 c) {
@@ -46,6 +52,18 @@ ivec3 voxel_invocation_cell(ivec3 counts) {
 // of its own, read in both halves, it read five).
 ivec3 voxel_level_counts(int level) {
   return max(voxel.counts.xyz >> level, ivec3(1));
+}
+
+// The level whose voxels are those of a 64-voxel grid (0 at resolution 64 or less, 1 at 128): the
+// finest the rebuild's per-voxel rays read (the sky's visibility, voxel_sky.comp; the local
+// lights', voxel_local_lights.comp). At level 0 they cost a 128-voxel grid's rebuild 16 times a
+// 64-voxel grid's (8 times the voxels, twice the steps): the Cornell box's rebuild at 128 ran
+// past lavapipe's 60 s fence timeout at load 15. The chain composites front to back along each
+// axis, so a wall stays opaque along its normal at the coarser level. (The level of a 32-voxel
+// grid, 1 at 64, made the Cornell box's error at 64 0.539 -> 0.580: the lamp and sky more
+// shadowed.)
+int voxel_ray_level() {
+  return max(0, voxel.counts.w - 7);  // counts.w - 1 = log2 of the longest count; 6 = log2 64
 }
 
 // Where voxel c of a level of `counts` lies in its image: in the first half for rays travelling

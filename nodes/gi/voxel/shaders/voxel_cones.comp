@@ -15,7 +15,14 @@
 // starts from (with the cone's own width an open floor lit itself through every coarse level:
 // E = 1.76 W/m^2 under a 10 W/m^2 sun, 82% of its own radiance times pi). Steps of one sample's
 // width, so that no voxel is skipped or counted twice; it stops once 99% opaque or out of the
-// grid. Nothing beyond the grid lights it (one bounce of the directional light, no sky).
+// grid. With the sky (the SH linked), each cone adds the sky's radiance along its axis times what
+// it left open (voxel_trace.glsl's Cone.open), so that the output holds all the diffuse light
+// lighting.ibl replaces by it: the sky's own, the voxels' bounce of the sun, the sky and the local
+// lights. Without it nothing beyond the grid lights it. A cone's openness at coarse levels
+// overstates the sky it sees (a coarse sample of a slab is partly opaque, and the next step is
+// out of the grid: 6.2% of the sky's light inside a closed room), so the sky's share of the six
+// cones is capped by the sky visibility of the surface's own voxel (voxel_sky.comp, level 0
+// only: 0.3% in that room).
 // Weights: the cosine-weighted share of the hemisphere inside the normal's cone is
 // sin^2(30 deg) = 1/4 exactly; the other five share the rest, 3/20 each. E = pi sum w_i L_i,
 // exact for a uniform radiance L. Ambient occlusion: 1 - sum w_i a_i with each cone's opacity
@@ -33,6 +40,8 @@
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/common/shaders/joint_upsample.glsl"
+#define LG_VOXEL_SH_BINDING 12
+#include "nodes/gi/voxel/shaders/voxel_sky_sh.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -43,10 +52,16 @@ layout(binding = 5, rgba16f) uniform writeonly image2D irradiance;
 layout(binding = 6, r8) uniform writeonly image2D ao;
 layout(binding = 10) uniform sampler2D material_tex;  // r: perceptual roughness
 layout(binding = 11, rgba16f) uniform writeonly image2D specular;
+// The voxelization's sums (voxel_common.glsl): a voxel's triangles and sky visibility.
+layout(std430, binding = 13) readonly buffer Grid { int grid[]; };
 layout(push_constant) uniform Push {
-  int k;               // the G-buffer's resolution over the targets'
-  int trace_specular;  // 0 where nothing reads the specular output: it stays 0
+  int k;  // the G-buffer's resolution over the targets'
 };
+// Specialization constants (lavapipe runs both sides of a branch on a run-time flag,
+// docs/lavapipe-costs.md): 0 where nothing reads the specular output (it stays 0), and 0 where the
+// sky is not linked (no sky to gather).
+layout(constant_id = 0) const int kTraceSpecular = 1;
+layout(constant_id = 1) const int kGatherSky = 1;
 
 // The tangent of the specular cone's half-angle for perceptual roughness r (GGX, alpha = r^2):
 // the reflected lobe's half width at half maximum. GGX's D(h) falls to half its peak where
@@ -72,11 +87,27 @@ vec4 specular_cone(vec3 origin, vec3 p, vec3 n, float roughness) {
   float r_len = length(r);
   r = r_len > 1e-4 ? r / r_len : n;
   Cone cone = trace(origin, r, max(dot(r, n), 0.0), voxel_specular_half_angle_tan(clamp(roughness, 0.0, 1.0)),
-                    voxel.irradiance.w, kAllLevels);
+                    voxel.irradiance.w, kAllLevels, 1.0);
   float a = clamp(cone.opacity, 0.0, 1.0);
   // Below 1e-4 the light gathered (at most a times the brightest voxel) is negligible.
   vec3 radiance = a > 1e-4 ? cone.light / a : vec3(0.0);
   return vec4(clamp(finite_or_zero(radiance), 0.0, 65504.0), a);
+}
+
+// The sky visibility measured for voxel c (voxel_sky.comp), or -1 where none was: no triangle
+// marked it, its normals cancel (voxel_sky.comp's -1), or the sky is not injected.
+float voxel_sky_visibility(vec3 g) {
+  ivec3 c = clamp(ivec3(floor(g)), ivec3(0), voxel.counts.xyz - 1);
+  uint base = LG_VOXEL_INTS * voxel_index(c);
+  return voxel.sources.y == 1 && grid[base + 6u] > 0 ? intBitsToFloat(grid[base + 7u]) : -1.0;
+}
+
+// The sky visibility of the voxel that holds the surface at p (normal n): a quarter voxel behind
+// it, else (a face on a voxel boundary marks only one side) a quarter voxel in front, else 1.
+float surface_sky_visibility(vec3 p, vec3 n) {
+  vec3 g = (p - voxel.origin_cell.xyz) / voxel.origin_cell.w;
+  float behind = voxel_sky_visibility(g - 0.25 * n), in_front = voxel_sky_visibility(g + 0.25 * n);
+  return behind >= 0.0 ? behind : in_front >= 0.0 ? in_front : 1.0;
 }
 
 void main() {
@@ -90,7 +121,7 @@ void main() {
   vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
   float len = length(n);
   if (!(depth > 0.0) || !all_finite(vec4(p, 0.0)) || any(lessThan(g, vec3(0.0))) ||
-      any(greaterThan(g, vec3(voxel.counts.xyz))) || !(len > 1e-6) || voxel.light.w == 0.0) {
+      any(greaterThan(g, vec3(voxel.counts.xyz))) || !(len > 1e-6) || voxel.sources.w == 0) {
     imageStore(irradiance, texel, vec4(0.0));
     imageStore(ao, texel, vec4(1.0));
     imageStore(specular, texel, vec4(0.0));
@@ -98,17 +129,22 @@ void main() {
   }
   n /= len;
   vec3 origin = p + n * cell;
-  vec3 light = vec3(0.0);
-  float occluded = 0.0;
+  vec3 light = vec3(0.0), sky_light = vec3(0.0);
+  float occluded = 0.0, open = 0.0;
+  vec3 sky[kSkyRadianceCoefficients];
+  sky_radiance_coefficients(sky);  // zero without the SH (an empty buffer is bound)
   for (int i = 0; i < kHemisphereCones; ++i) {
-    Cone cone = trace_hemisphere_cone(origin, n, i, voxel.irradiance.w, kAllLevels);
+    Cone cone = trace_hemisphere_cone(origin, n, i, voxel.irradiance.w, kAllLevels, 1.0);
     light += hemisphere_cone_weight(i) * cone.light;
+    if (kGatherSky == 1) sky_light += hemisphere_cone_weight(i) * cone.open * sky_radiance(sky, cone.direction);
     occluded += hemisphere_cone_weight(i) * cone.occluded;
+    open += hemisphere_cone_weight(i) * cone.open;
   }
+  if (kGatherSky == 1) light += sky_light * min(1.0, surface_sky_visibility(p, n) / max(open, 1e-6));
   vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
   imageStore(irradiance, texel, vec4(e, 1.0));
   imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
   vec4 reflected = vec4(0.0);
-  if (trace_specular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
+  if (kTraceSpecular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
   imageStore(specular, texel, reflected);
 }

@@ -14,10 +14,12 @@
 // holds.
 // With the environment's SH linked, a second injection after the sky visibility (voxel_sky.comp)
 // adds what the sky gives the same surface: albedo x E_sky(n) x visibility / pi, E_sky from the
-// cosine-convolved SH (as lighting.ibl's diffuse light), the visibility from the voxels' opacity.
+// cosine-convolved SH (as lighting.ibl's diffuse light), the visibility from the voxels' opacity;
+// with local lights, albedo x E_local / pi (voxel_local_lights.comp).
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/common/shaders/finite.glsl"
-#include "nodes/env/common/shaders/sh_basis.glsl"
+#define LG_VOXEL_SH_BINDING 7
+#include "nodes/gi/voxel/shaders/voxel_sky_sh.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -28,10 +30,10 @@ layout(binding = 3, rgba16f) uniform writeonly image3D seen_x;
 layout(binding = 4, rgba16f) uniform writeonly image3D seen_y;
 layout(binding = 5, rgba16f) uniform writeonly image3D seen_z;
 layout(binding = 6, rgba16f) uniform writeonly image3D opacity_image;
-// The environment's irradiance SH (env.sh_project with convolve_cosine), read once a voxel.
-layout(std430, binding = 7) readonly buffer Sh { vec4 sh[]; };
 layout(push_constant) uniform Push {
-  int sky;  // 1: add the sky's light (the sums' eighth int holds the visibility), 0: the sun's alone
+  // 0: the sun's light alone; bit 0: add the sky's (the sums hold its visibility), bit 1: add the
+  // local lights' (the sums hold their irradiance)
+  int second;
 };
 
 // How much of a surface of unit normal n faces rays travelling along each axis the positive way
@@ -75,16 +77,6 @@ float visibility(vec3 p) {
   return lit / 9.0;
 }
 
-// The sky's irradiance at unit normal n, W/m^2 (lighting.ibl's sh_irradiance, whose bindings
-// this pass does not have).
-vec3 sky_irradiance(vec3 n) {
-  float y[LG_SH_MAX_COUNT];
-  sh_evaluate(n, y);
-  vec3 e = vec3(0.0);
-  for (int k = 0; k < min(int(sh.length()), LG_SH_MAX_COUNT); ++k) e += sh[k].rgb * y[k];
-  return max(e, vec3(0.0));  // ringing must not light negatively
-}
-
 void main() {
   ivec3 c = voxel_invocation_cell(voxel.counts.xyz);
   if (any(greaterThanEqual(c, voxel.counts.xyz))) return;
@@ -107,6 +99,10 @@ void main() {
     float v = cosine > 0.0 ? visibility(centre + n * voxel.origin_cell.w) : 0.0;
     radiance = albedo * voxel.irradiance.rgb * (cosine * v / LG_PI);
   }
-  if (len > 1e-3 && sky == 1) radiance += albedo * sky_irradiance(n) * (intBitsToFloat(grid[base + 7u]) / LG_PI);
+  if (len > 1e-3 && (second & 1) != 0) radiance += albedo * sky_irradiance(n) * (intBitsToFloat(grid[base + 7u]) / LG_PI);
+  if (len > 1e-3 && (second & 2) != 0) {
+    vec3 local = vec3(intBitsToFloat(grid[base + 8u]), intBitsToFloat(grid[base + 9u]), intBitsToFloat(grid[base + 10u]));
+    radiance += albedo * local / LG_PI;
+  }
   store(c, clamp(finite_or_zero(radiance), 0.0, 65504.0), n, 1.0);
 }

@@ -17,11 +17,15 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = 1) buffer Grid { int grid[]; };
 
 const float kWholeGrid = 1e30;  // occlusion counted all the way out of the grid
-// Level 0 only, a voxel a step (at most 128 steps, voxel_trace.glsl): at coarser levels a cone
-// crossing a ceiling took one partly opaque sample of it and left the grid, so a closed room's
-// inside faces saw part of the sky (VoxelGpu test: 2.9% of the sky's light inside with every
-// level, 1.1% with levels 0-1, 0.3% with level 0). Paid only when the volume is rebuilt.
-const int kSkyTop = 0;
+// Levels up to voxel_ray_level() (voxel_common.glsl: 0 at resolution 64), a voxel of it a step at
+// most (at most 128 steps, voxel_trace.glsl): with every level a cone crossing a ceiling took one
+// partly opaque sample of it and left the grid, so a closed room's inside faces saw part of the
+// sky (VoxelGpu test at 32: 2.9% of the sky's light inside with every level, 1.1% with levels
+// 0-1, 0.3% with level 0). Paid only when the volume is rebuilt.
+// Half-voxel steps: at one-voxel steps the filter spread a slab's face over two samples of partial
+// opacity, and the sky's light inside a closed room, gathered by the pixels' cones capped by this
+// visibility (voxel_cones.comp), was 1.0% of the sky's (VoxelGpu test at 32); with half steps 0.70%.
+const float kSkyStep = 0.5;
 
 void main() {
   ivec3 c = voxel_invocation_cell(voxel.counts.xyz);
@@ -30,7 +34,13 @@ void main() {
   int triangles = grid[base + 6u];
   vec3 n = vec3(grid[base + 3u], grid[base + 4u], grid[base + 5u]);
   float len = length(n);
-  if (triangles <= 0 || !(len > 1e-3 * float(triangles) * kVoxelUnit)) return;  // as the injection's test
+  if (triangles <= 0) return;
+  // No visibility for a voxel whose normals cancel (as the injection's test): -1 tells the cones
+  // (voxel_cones.comp) so.
+  if (!(len > 1e-3 * float(triangles) * kVoxelUnit)) {
+    grid[base + 7u] = floatBitsToInt(-1.0);
+    return;
+  }
   n /= len;
   float cell = voxel.origin_cell.w;
   vec3 origin = voxel.origin_cell.xyz + (vec3(c) + 0.5) * cell + n * cell;
@@ -38,7 +48,7 @@ void main() {
   for (int i = 0; i < kHemisphereCones; ++i) {
     // A cone stops once what faces it is 99% opaque, where the opacity counted whichever way
     // may still be lower: both are what hides the sky.
-    Cone cone = trace_hemisphere_cone(origin, n, i, kWholeGrid, kSkyTop);
+    Cone cone = trace_hemisphere_cone(origin, n, i, kWholeGrid, voxel_ray_level(), kSkyStep);
     occluded += hemisphere_cone_weight(i) * max(cone.occluded, cone.opacity);
   }
   grid[base + 7u] = floatBitsToInt(clamp(1.0 - occluded, 0.0, 1.0));

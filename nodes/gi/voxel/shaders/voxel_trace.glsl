@@ -16,6 +16,7 @@ const float kTanHalfAngle = 0.57735027;  // tan 30 deg
 const float kCentreWeight = 0.25, kSideWeight = 0.15;
 const float kCrossing = 4.0;
 const int kAllLevels = 1 << 30;
+const float kCoarseStep = 1.5;
 
 // What a ray travelling along `negative` (0 or 1) of `image`'s axis sees at `uvw` (the grid's
 // box in [0, 1]^3) of `level`: within its half, clamped half a voxel inside it so the filter does
@@ -54,19 +55,29 @@ struct Cone {
   vec3 light;      // radiance gathered, W/m^2/sr
   float opacity;   // of what faced the ray
   float occluded;  // opacity gathered within ao_distance
+  float open;      // what the march left unblocked, whichever way the voxels face: the share of
+                   // the cone that leaves the grid (or passes the step limit) and sees the sky
+  vec3 direction;  // the cone's axis
 };
 
 // `cosine`: of the cone's axis with the normal (h grows by it per metre of t); `tan_half_angle`:
 // of the cone's aperture; `occlusion_distance`: how far its opacity counts into `occluded`;
-// `finest_top`: the coarsest level it may read (fewer steps the coarser).
-Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle, float occlusion_distance, int finest_top) {
+// `finest_top`: the coarsest level it may read (fewer steps the coarser); `step_scale`: its steps
+// over the width of the voxels it reads (1: no voxel skipped or counted twice; below 1 a thin
+// slab, which the trilinear filter spreads over two samples of partial opacity, lets less through).
+Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle, float occlusion_distance, int finest_top,
+           float step_scale) {
   float cell = voxel.origin_cell.w;
   vec3 grid_size = cell * vec3(voxel.counts.xyz);
   float top = float(min(finest_top, voxel.counts.w - 1));
   vec3 light = vec3(0.0);
   float opacity = 0.0, occluded = 0.0, blocked = 0.0;
   float t = cell;
-  for (int s = 0; s < 128 && opacity < 0.99 && blocked < 0.99; ++s) {
+  int steps = int(128.0 / step_scale);  // as far at any step
+  // A do-while: its test at the bottom saves the body that llvmpipe's `for` runs once more with
+  // every lane masked (docs/lavapipe-costs.md, rule 2); the first step always runs.
+  int s = 0;
+  do {
     // The level whose voxels are at most that wide: a whole level, as blending in the next one
     // would reach twice as far.
     float level = min(floor(log2(max(min(2.0 * t * tan_half_angle, (cell + t * cosine) / 1.5), cell) / cell)), top);
@@ -86,9 +97,12 @@ Cone trace(vec3 origin, vec3 direction, float cosine, float tan_half_angle, floa
     // of the surface the cone starts from, which the filter reaches within 2.5 voxels of it. A
     // march ended by facing opacity alone went on through every surface's back.
     if (cell + t * cosine >= 2.5 * cell) blocked += (1.0 - blocked) * opaque;
-    t += width;
-  }
-  return Cone(light, opacity, occluded);
+    t += width * (level >= 2.0 ? kCoarseStep : step_scale);
+    ++s;
+  } while (s < steps && opacity < 0.99 && blocked < 0.99);
+  // A march stopped at 99% (below) lets nothing through: a closed room's 1% would be a leak.
+  float closed = clamp(max(opacity, blocked), 0.0, 1.0);
+  return Cone(light, opacity, occluded, closed < 0.99 ? 1.0 - closed : 0.0, direction);
 }
 
 // The six cones of 60 degrees over the hemisphere of unit normal n: cone 0 along n, cones 1 to 5
@@ -102,14 +116,15 @@ float hemisphere_cone_weight(int i) {
 }
 
 // Cone i from `origin` (one voxel out along n), its occlusion counted within `occlusion_distance`,
-// reading levels up to `top`. One trace call whatever i is (lavapipe runs both sides of a branch).
-Cone trace_hemisphere_cone(vec3 origin, vec3 n, int i, float occlusion_distance, int top) {
+// reading levels up to `top`, at steps of `step_scale` voxels. One trace call whatever i is
+// (lavapipe runs both sides of a branch).
+Cone trace_hemisphere_cone(vec3 origin, vec3 n, int i, float occlusion_distance, int top, float step_scale) {
   float s = n.z >= 0.0 ? 1.0 : -1.0;
   float a = -1.0 / (s + n.z), b = n.x * n.y * a;
   vec3 t1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x), t2 = vec3(b, s + n.y * n.y * a, -n.y);
   float phi = float(i - 1) * (2.0 * LG_PI / 5.0);
   vec3 side = 0.5 * n + 0.86602540 * (cos(phi) * t1 + sin(phi) * t2);
-  return trace(origin, i == 0 ? n : side, i == 0 ? 1.0 : 0.5, kTanHalfAngle, occlusion_distance, top);
+  return trace(origin, i == 0 ? n : side, i == 0 ? 1.0 : 0.5, kTanHalfAngle, occlusion_distance, top, step_scale);
 }
 
 #endif

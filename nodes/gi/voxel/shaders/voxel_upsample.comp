@@ -22,6 +22,9 @@ layout(binding = 7, rgba16f) uniform writeonly image2D specular;
 layout(push_constant) uniform Push {
   int k;  // the G-buffer's resolution over the smaller images'
 };
+// 0 where nothing reads the specular output (voxel_cones.comp's kTraceSpecular): it is not
+// written (a specialization constant: lavapipe runs both sides of a run-time branch).
+layout(constant_id = 0) const int kSpecular = 1;
 
 // The 2 x 2 texels of `image` from `low`, clamped to its last row and column.
 vec4[4] taps(sampler2D image, ivec2 low, ivec2 low_size) {
@@ -39,8 +42,8 @@ void main() {
   ivec2 low_size = textureSize(irradiance_low, 0), full_size = imageSize(irradiance);
   if (any(greaterThanEqual(low, low_size))) return;
   UpsampleGuide guide = upsample_guide(depth_tex, normal_tex, low, k, low_size);
-  vec4 e[4] = taps(irradiance_low, low, low_size), a[4] = taps(ao_low, low, low_size),
-       s[4] = taps(specular_low, low, low_size);
+  vec4 e[4] = taps(irradiance_low, low, low_size), a[4] = taps(ao_low, low, low_size), s[4];
+  if (kSpecular == 1) s = taps(specular_low, low, low_size);
   ivec2 end = upsample_block_end(low, k, low_size, full_size);
   for (int y = low.y * k; y < end.y; ++y)
     for (int x = low.x * k; x < end.x; ++x) {
@@ -49,13 +52,13 @@ void main() {
       if (!(depth > 0.0)) {
         imageStore(irradiance, texel, vec4(0.0));
         imageStore(ao, texel, vec4(1.0));
-        imageStore(specular, texel, vec4(0.0));
+        if (kSpecular == 1) imageStore(specular, texel, vec4(0.0));
         continue;
       }
       vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, texel, 0).rgb);
       vec4 w = upsample_weights(guide, depth, n, upsample_fraction(texel, low, k));
       imageStore(irradiance, texel, blend(e, w));
       imageStore(ao, texel, blend(a, w));
-      imageStore(specular, texel, blend(s, w));
+      if (kSpecular == 1) imageStore(specular, texel, blend(s, w));
     }
 }
