@@ -172,11 +172,8 @@ class VoxelKernel final : public NodeKernel {
     }
     constants_->write_value(c);
     draws_->write(draws);
-<<<<<<< HEAD
     draw_blocks_->write(draw_blocks(draws));  // the shadow pass's (shadow_depth_pipeline.h)
-=======
     lights_->write_value(local_lights_.lights);
->>>>>>> voxel18d
   }
 
   // The sums and the chain, sized when the counts change (the box of a moving world may change
@@ -451,12 +448,8 @@ class VoxelKernel final : public NodeKernel {
   bool light_present_ = false;
   glm::ivec3 allocated_counts_{0};  // none yet
   uint32_t levels_ = 1;
-<<<<<<< HEAD
   std::optional<HostBuffer> constants_, draws_, draw_blocks_, camera_;
-=======
-  std::optional<HostBuffer> constants_, draws_, camera_;
   std::optional<HostBuffer> lights_;  // local_lights_.lights (voxel_local_lights.comp)
->>>>>>> voxel18d
   std::optional<HostBuffer> no_sh_;  // bound in place of the SH where the sky is not injected
   Buffer grid_sums_;
   std::array<Image, 3> seen_;          // the chain as rays along x, y and z see it (voxel_common.glsl)
