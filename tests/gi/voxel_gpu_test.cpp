@@ -39,6 +39,7 @@
 #include "runtime/scene/mesh_generators.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
+#include "tests/gi/sky_irradiance.h"
 #include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
 #include "tests/runtime/gpu_test.h"
@@ -80,18 +81,6 @@ Graph voxel_sky_graph() {
       d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
-}
-
-// The sky's irradiance at unit normal n from the node's SH input, as the node evaluates it.
-double sky_irradiance_green(Renderer& renderer, glm::dvec3 n) {
-  const std::vector<std::byte> bytes = renderer.executor().read_buffer("sh.sh");
-  std::vector<float> sh(bytes.size() / sizeof(float));
-  std::memcpy(sh.data(), bytes.data(), sh.size() * sizeof(float));
-  double y[9];
-  sh_evaluate(2, n, y);
-  double e = 0;
-  for (int k = 0; k < 9 && 4 * k + 1 < int(sh.size()); ++k) e += sh[4 * k + 1] * y[k];
-  return std::max(e, 0.0);
 }
 
 void add_camera_and_sun(World& world, glm::vec3 eye, glm::vec3 look, glm::vec3 sun_direction, float intensity) {

@@ -21,14 +21,12 @@
 // its transmittance is projected to SH L1 in the direction the light travels (-w), as radiant
 // radiance (W/m^2/sr).
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
-#include "nodes/common/shaders/finite.glsl"
-#include "nodes/env/common/shaders/sh_basis.glsl"
+#define LG_SKY_SH_BINDING 2  // the environment's irradiance SH
+#include "nodes/gi/common/shaders/sky_sh.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 1) uniform sampler3D sky_planes;  // lpv_resolve.comp's: normal x coverage, distance
-// The environment's irradiance SH (env.sh_project with convolve_cosine), rgb per coefficient.
-layout(std430, binding = 2) readonly buffer Sh { vec4 sh[]; };
 layout(binding = 3, rgba16f) uniform writeonly image3D sky_red;  // SH L1 x openness
 layout(binding = 4, rgba16f) uniform writeonly image3D sky_green;
 layout(binding = 5, rgba16f) uniform writeonly image3D sky_blue;
@@ -45,17 +43,6 @@ vec3 sky_direction(int k) {
   float r = sqrt(max(1.0 - z * z, 0.0));
   float phi = kGoldenAngle * float(k);
   return vec3(r * cos(phi), r * sin(phi), z);
-}
-
-// The sky's radiance from direction w: the irradiance SH over the clamped cosine's bands
-// (pi, 2 pi / 3, pi / 4), bands above 2 left out (the cosine's band 3 is 0, band 4 tiny).
-vec3 sky_radiance(vec3 w, int count) {
-  float y[LG_SH_MAX_COUNT];
-  sh_evaluate(w, y);
-  const float inverse_band[3] = float[3](1.0 / LG_PI, 1.5 / LG_PI, 4.0 / LG_PI);
-  vec3 l = vec3(0.0);
-  for (int k = 0; k < count; ++k) l += finite_or_zero(sh[k].rgb) * (y[k] * inverse_band[k < 1 ? 0 : (k < 4 ? 1 : 2)]);
-  return max(l, vec3(0.0));  // ringing must not light negatively
 }
 
 // The share of the sky along w that reaches cell c's centre: a walk through the cells the ray
@@ -87,14 +74,15 @@ float transmittance(ivec3 c, vec3 w) {
 void main() {
   ivec3 c = lpv_invocation_cell();
   if (!lpv_inside(c)) return;
-  int count = min(int(sh.length()), 9);
+  vec3 sky[kSkyRadianceCoefficients];
+  sky_radiance_coefficients(sky);
   vec4 red = vec4(0.0), green = vec4(0.0), blue = vec4(0.0);
   int k = 0;
   do {
     vec3 w = sky_direction(k);
     float t = transmittance(c, w);
     if (t > kStopBelow) {
-      vec3 l = sky_radiance(w, count) * t;
+      vec3 l = sky_radiance(sky, w) * t;
       vec4 travelling = sh_l1_basis(-w);
       red += l.r * travelling, green += l.g * travelling, blue += l.b * travelling;
     }

@@ -40,8 +40,8 @@
 #include "nodes/common/shaders/finite.glsl"
 #include "nodes/common/shaders/gbuffer.glsl"
 #include "nodes/common/shaders/joint_upsample.glsl"
-#define LG_VOXEL_SH_BINDING 12
-#include "nodes/gi/voxel/shaders/voxel_sky_sh.glsl"
+#define LG_SKY_SH_BINDING 12
+#include "nodes/gi/common/shaders/sky_sh.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -18,8 +18,8 @@
 // with local lights, albedo x E_local / pi (voxel_local_lights.comp).
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/common/shaders/finite.glsl"
-#define LG_VOXEL_SH_BINDING 7
-#include "nodes/gi/voxel/shaders/voxel_sky_sh.glsl"
+#define LG_SKY_SH_BINDING 7
+#include "nodes/gi/common/shaders/sky_sh.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
