@@ -12,8 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/gtc/quaternion.hpp>
-
 #include "api/renderer.h"
 #include "api/world_loading.h"
 #include "runtime/scene/components.h"
@@ -32,12 +30,6 @@ struct Options {
   std::string world;    // empty: the default world
   double orbit = 0.0;   // degrees the camera turns each frame, back and forth
 };
-
-// The world's cameras turned by `degrees` about the vertical, in place.
-void turn_cameras(lg::World& world, double degrees) {
-  const glm::quat turn = glm::angleAxis(float(glm::radians(degrees)), glm::vec3(0.0f, 1.0f, 0.0f));
-  world.each<lg::Camera, lg::Transform>([&](lg::Entity, lg::Camera&, lg::Transform& t) { t.rotation = turn * t.rotation; });
-}
 
 // The world without its sphere, tube and rect lights: light/area is most of the default frame,
 // and without it the process's CPU time a frame is the other passes', so a change to one of them
@@ -70,7 +62,7 @@ int run(const Options& o) {
   std::vector<double> frame_ms;
   const double cpu_start = lg::bench::process_cpu_ms();
   for (uint32_t f = 0; f < o.frames; ++f) {
-    if (o.orbit != 0.0) turn_cameras(world, f % 2 == 0 ? o.orbit : -o.orbit);
+    if (o.orbit != 0.0) lg::bench::turn_cameras(world, f % 2 == 0 ? o.orbit : -o.orbit);
     const lg::FrameStats& stats = renderer.render(world, {o.width, o.height});
     frame_ms.push_back(stats.gpu_ms);
     for (const lg::PassStats& p : stats.passes) {

@@ -70,6 +70,7 @@ struct Options {
   uint32_t frame_width = 1280, frame_height = 720;  // timed
   uint32_t spp = 512, bounces = 16, frames = 4;
   uint32_t settle_frames = 4, probe_settle_frames = 48;  // rendered after the turn
+  double orbit = 2;  // degrees the camera turns each timed frame, and back: nothing kept for a still camera
   std::string worlds = "cornell-box,two-rooms-sun,gallery";
   std::string methods = "none,volume,lpv,voxel";  // which rows to run (the references are traced either way)
 };
@@ -322,7 +323,7 @@ int run(const Options& o) {
         const double cpu_start = process_cpu_ms();
         const std::vector<double> ms =
             sorted_pass_ms(renderer, w, o.frame_width, o.frame_height, o.frames,
-                           [&](const std::string& pass) { return pass.starts_with(prefix); });
+                           [&](const std::string& pass) { return pass.starts_with(prefix); }, o.orbit);
         row.frame_cpu_ms = (process_cpu_ms() - cpu_start) / (o.frames + 1);
         row.frame_ms = ms[ms.size() / 2], row.min_ms = ms.front();
       } else if (m.name == "none") {
@@ -370,8 +371,9 @@ int main(int argc, char** argv) {
       "usage: lumagraph-bench-gi-methods [--results-dir DIR] [--cache-dir DIR] [--size WxH] [--frame-size WxH]\n"
       "                                  [--spp N] [--bounces N] [--frames N] [--settle-frames N]\n"
       "                                  [--probe-settle-frames N] [--worlds cornell-box,two-rooms-sun,gallery]\n"
-      "                                  [--methods none,volume,lpv,voxel]\n"
-      "  --frames 0: no timing\n");
+      "                                  [--methods none,volume,lpv,voxel] [--orbit DEGREES]\n"
+      "  --frames 0: no timing; --orbit (default 2): the camera turns by that much and back in turn\n"
+      "  each timed frame (0: it stands still, and gi.voxel reuses its cones)\n");
   flags.text("--results-dir", o.results_dir);
   flags.text("--cache-dir", o.cache_dir);
   flags.size("--size", o.width, o.height);
@@ -383,7 +385,10 @@ int main(int argc, char** argv) {
   flags.count("--probe-settle-frames", o.probe_settle_frames);
   flags.text("--worlds", o.worlds);
   flags.text("--methods", o.methods);
+  std::vector<double> orbit;
+  flags.numbers("--orbit", orbit);
   if (const auto status = flags.parse(argc, argv)) return *status;
+  if (!orbit.empty()) o.orbit = orbit.front();
   if (!lg::bench::example_worlds_exist("lumagraph-bench-gi-methods", lg::bench::kSource, o.worlds)) return 2;
   for (const std::string& name : lg::bench::split_commas(o.methods))
     if (name != "none" && name != "volume" && name != "lpv" && name != "voxel") {

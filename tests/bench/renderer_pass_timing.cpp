@@ -3,8 +3,10 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <glm/gtc/quaternion.hpp>
 
 #include "api/renderer.h"
+#include "runtime/scene/components.h"
 
 namespace lg::bench {
 
@@ -15,11 +17,19 @@ double process_cpu_ms() {
   return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
+void turn_cameras(World& world, double degrees) {
+  const glm::quat turn = glm::angleAxis(float(glm::radians(degrees)), glm::vec3(0.0f, 1.0f, 0.0f));
+  world.each<Camera, Transform>([&](Entity, Camera&, Transform& t) { t.rotation = turn * t.rotation; });
+}
+
 std::vector<double> sorted_pass_ms(Renderer& renderer, const World& world, uint32_t width, uint32_t height,
-                                   uint32_t frames, const std::function<bool(const std::string&)>& counts) {
+                                   uint32_t frames, const std::function<bool(const std::string&)>& counts,
+                                   double orbit_degrees) {
+  World moving = world;
   std::vector<double> times;
   for (uint32_t f = 0; f <= frames; ++f) {
-    const FrameStats& stats = renderer.render(world, {width, height});
+    if (orbit_degrees != 0.0) turn_cameras(moving, f % 2 == 0 ? orbit_degrees : -orbit_degrees);
+    const FrameStats& stats = renderer.render(moving, {width, height});
     double ms = 0;
     for (const PassStats& p : stats.passes)
       if (counts(p.name)) ms += p.gpu_ms;

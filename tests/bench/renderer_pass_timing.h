@@ -19,10 +19,15 @@ namespace lg::bench {
 // a loaded machine disturbs it far less than the timestamps.
 double process_cpu_ms();
 
+// The world's cameras turned by `degrees` about the vertical, in place.
+void turn_cameras(World& world, double degrees);
+
 // Renders `frames` + 1 frames of `world` at width x height and returns, sorted, the GPU time of
 // the passes `counts` accepts summed per frame, for all but the first (it JIT-compiles the
-// pipelines).
+// pipelines). With `orbit_degrees`, the cameras turn by that much and back in turn every frame,
+// so that nothing a node keeps for a still camera (gi.voxel's cones) is reused.
 std::vector<double> sorted_pass_ms(Renderer& renderer, const World& world, uint32_t width, uint32_t height,
-                                   uint32_t frames, const std::function<bool(const std::string&)>& counts);
+                                   uint32_t frames, const std::function<bool(const std::string&)>& counts,
+                                   double orbit_degrees = 0.0);
 
 }  // namespace lg::bench
