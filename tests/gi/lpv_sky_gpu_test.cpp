@@ -18,6 +18,7 @@
 #include "api/renderer.h"
 #include "graph/graph_io.h"
 #include "runtime/image/image_formats.h"
+#include "tests/gi/camera_and_sun.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/sky_irradiance.h"
 #include "tests/gi/slab_world.h"
@@ -52,14 +53,7 @@ const std::string kSky = R"({ "id": "sky", "type": "env.sky", "params": { "face_
 // A camera at `eye` looking along `look`, a sun of zero intensity (gi.lpv needs a directional
 // light to run; this one adds nothing) and the environment the SH stands for.
 void add_camera_sun_and_sky(World& world, glm::vec3 eye, glm::vec3 look) {
-  Entity camera = world.create("camera");
-  world.add(camera, Camera{});
-  Transform& t = world.add(camera, Transform{});
-  t.position = eye;
-  t.rotation = look_rotation(look);
-  Entity sun = world.create("sun");
-  world.add(sun, DirectionalLight{.intensity = 0.0f});
-  world.add(sun, Transform{}).rotation = look_rotation({-0.2f, -1.0f, -0.1f});
+  add_camera_and_sun(world, eye, look, {-0.2f, -1.0f, -0.1f}, 0.0f);
   world.add(world.create("environment"), EnvironmentLight{});
 }
 

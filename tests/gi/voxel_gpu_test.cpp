@@ -37,6 +37,7 @@
 #include "nodes/raytrace/camera_pixels.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/gi/camera_and_sun.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
 #include "tests/gi/sky_irradiance.h"
@@ -81,17 +82,6 @@ Graph voxel_sky_graph() {
       d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
-}
-
-void add_camera_and_sun(World& world, glm::vec3 eye, glm::vec3 look, glm::vec3 sun_direction, float intensity) {
-  Entity camera = world.create("camera");
-  world.add(camera, Camera{});
-  Transform& t = world.add(camera, Transform{});
-  t.position = eye;
-  t.rotation = look_rotation(look);
-  Entity sun = world.create("sun");
-  world.add(sun, DirectionalLight{.intensity = intensity});
-  world.add(sun, Transform{}).rotation = look_rotation(sun_direction);
 }
 
 // The sun of floor_and_wall(): from the east, high, it lights the floor and the wall's east face;
@@ -415,6 +405,18 @@ TEST(Voxel, SkyLeavesTheInsideOfAClosedRoomDark) {
   expect_no_validation_messages(renderer->context());
 }
 
+// A white 4 m floor alone, seen from above, its sun at zero: what lights it is the test's.
+World dark_white_floor() {
+  World world;
+  PbrMaterial white;
+  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
+  Entity floor = world.create("floor");
+  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(white)});
+  world.add(floor, Transform{});
+  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, kSunFromTheEast, 0.0f);
+  return world;
+}
+
 // A white 4 m floor alone under the sky (the sun at zero): every cone from it leaves the grid at
 // once, so it gathers the sky's radiance (the SH deconvolved by the cosine kernel) over the six
 // cones, and must give the sky's irradiance at the floor's normal, E_sky(up), lighting.ibl's
@@ -424,13 +426,7 @@ TEST(Voxel, SkyLeavesTheInsideOfAClosedRoomDark) {
 // 6.25% of band 1's share plus 37.5% of band 2's plus 2% (half floats, the floor voxel's sky
 // visibility, which may cap the cones' sky: voxel_cones.comp). env.sky's SH: measured 0.98.
 TEST(Voxel, AConeLeavingTheGridGathersTheSky) {
-  World world;
-  PbrMaterial white;
-  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
-  Entity floor = world.create("floor");
-  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(white)});
-  world.add(floor, Transform{});
-  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, kSunFromTheEast, 0.0f);
+  World world = dark_white_floor();
   world.add(world.create("environment"), EnvironmentLight{});
   auto renderer = make_renderer(voxel_sky_graph());
   renderer->render(world, kFrame);
@@ -465,13 +461,7 @@ TEST(Voxel, AConeLeavingTheGridGathersTheSky) {
 // Within 2%: the voxel's d^2 gets a quarter voxel squared (0.4% at 1.2 m, voxel_local_lights.comp),
 // the half floats 0.1%, the albedo's fixed point 0.1%; nothing occludes the light.
 TEST(Voxel, APointLightsVoxelsHoldItsIrradiance) {
-  World world;
-  PbrMaterial white;
-  white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
-  Entity floor = world.create("floor");
-  world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(white)});
-  world.add(floor, Transform{});
-  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, kSunFromTheEast, 0.0f);
+  World world = dark_white_floor();
   const glm::dvec3 light(0.3, 1.2, -0.2);
   constexpr double kIntensity = 5.0;
   Entity lamp = world.create("lamp");

@@ -11,6 +11,7 @@
 #include <iterator>
 
 #include "api/renderer.h"
+#include "tests/render/cache_folders.h"
 #include "graph/fault_injection.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/pipeline_cache_file.h"
@@ -23,21 +24,6 @@ namespace fs = std::filesystem;
 
 const std::string kGraph = LUMAGRAPH_SOURCE_DIR "/examples/default.json";
 constexpr FrameSize kSmall{64, 36}, kLarger{96, 54};
-
-// An empty folder of its own under the build folder.
-fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::path(LUMAGRAPH_BINARY_DIR) / "test-output" / "pipeline-cache" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-RendererOptions options_with_cache(const fs::path& folder) {
-  RendererOptions options;
-  options.device.validation = true;
-  options.pipeline_cache_folder = folder.string();
-  return options;
-}
 
 std::vector<float> first_frame(Renderer& renderer) {
   renderer.load_graph(kGraph);
@@ -87,7 +73,7 @@ TEST(PipelineCache, ARecompileReusesThePipelinesOfTheLastPlan) {
 }
 
 TEST(PipelineCache, ASecondRendererHandsTheSavedCacheToTheDriver) {
-  const fs::path folder = fresh_folder("warm");
+  const fs::path folder = fresh_folder("pipeline-cache", "warm");
   std::vector<std::byte> saved;
   std::string path;
   {
@@ -115,7 +101,7 @@ TEST(PipelineCache, ASecondRendererHandsTheSavedCacheToTheDriver) {
 // is not ours: each gives one warning naming the file and what was wrong, the frame is the same,
 // and the file is written afresh after it.
 TEST(PipelineCache, ABrokenFileIsIgnoredWithOneWarningAndTheFrameIsTheSame) {
-  const fs::path folder = fresh_folder("broken");
+  const fs::path folder = fresh_folder("pipeline-cache", "broken");
   std::string path, good;
   DeviceIdentity device;
   {
@@ -156,7 +142,7 @@ TEST(PipelineCache, ABrokenFileIsIgnoredWithOneWarningAndTheFrameIsTheSame) {
 // Root writes into read-only folders, so the folder is made impossible instead: a path through a
 // regular file. And a disk that fills up while the file is written (an injected ENOSPC).
 TEST(PipelineCache, AnUnwritableFolderDoesNotFailTheRender) {
-  const fs::path blocker = fresh_folder("unwritable") / "a-file";
+  const fs::path blocker = fresh_folder("pipeline-cache", "unwritable") / "a-file";
   write_file(blocker, "not a folder");
   {
     Renderer renderer(options_with_cache(blocker / "cache"));
@@ -169,7 +155,7 @@ TEST(PipelineCache, AnUnwritableFolderDoesNotFailTheRender) {
     EXPECT_TRUE(renderer.take_warnings().empty()) << "one warning, not one per plan";
   }
 
-  const fs::path folder = fresh_folder("full-disk");
+  const fs::path folder = fresh_folder("pipeline-cache", "full-disk");
   arm_fault(FaultSite::file_write, 1);
   Renderer renderer(options_with_cache(folder));
   EXPECT_EQ(first_frame(renderer), reference_frame());
@@ -181,7 +167,7 @@ TEST(PipelineCache, AnUnwritableFolderDoesNotFailTheRender) {
 }
 
 TEST(PipelineCache, TheEnvironmentTurnsItOff) {
-  const fs::path folder = fresh_folder("off");
+  const fs::path folder = fresh_folder("pipeline-cache", "off");
   ::setenv("LUMAGRAPH_PIPELINE_CACHE", "off", 1);
   {
     Renderer renderer(options_with_cache(folder));

@@ -12,6 +12,7 @@
 #include <iterator>
 
 #include "api/renderer.h"
+#include "tests/render/cache_folders.h"
 #include "api/static_results_identity.h"
 #include "runtime/exec/static_results_store.h"
 #include "runtime/image/image_file.h"
@@ -24,20 +25,6 @@ namespace fs = std::filesystem;
 
 const std::string kExamples = LUMAGRAPH_SOURCE_DIR "/examples/";
 constexpr FrameSize kSmall{64, 36};
-
-fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::path(LUMAGRAPH_BINARY_DIR) / "test-output" / "static-results" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-RendererOptions options_with_cache(const fs::path& folder) {
-  RendererOptions options;
-  options.device.validation = true;
-  options.pipeline_cache_folder = folder.string();
-  return options;
-}
 
 std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -136,7 +123,7 @@ const Primed& primed() {
     const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = std::string("primed-") + test->test_suite_name() + "-" + test->name();
     std::replace(name.begin(), name.end(), '/', '-');
-    const fs::path folder = fresh_folder(name);
+    const fs::path folder = fresh_folder("static-results", name);
     Primed p;
     p.frame = first_frame(folder, quick_graph(folder));
     p.files = results_files(folder);
@@ -148,7 +135,7 @@ const Primed& primed() {
 
 // A folder holding the primed results file: what its path there is.
 fs::path primed_folder(const std::string& name) {
-  const fs::path folder = fresh_folder(name);
+  const fs::path folder = fresh_folder("static-results", name);
   EXPECT_EQ(primed().files.size(), 1u);
   const fs::path file = folder / primed().files.at(0).filename();
   write_file(file, primed().bytes);
@@ -182,7 +169,7 @@ TEST(StaticResults, AChangedParamMisses) {
 // The environment example with its image rewritten under the same name: the contents are in the
 // key, not only the path.
 TEST(StaticResults, AChangedInputFileMisses) {
-  const fs::path folder = fresh_folder("input-file");
+  const fs::path folder = fresh_folder("static-results", "input-file");
   fs::create_directories(folder / "environments");
   std::string graph = read_file(kExamples + "environment.json");  // with small cubes: a quick test
   const std::string large = "\"face_size\": 128";
@@ -207,7 +194,7 @@ TEST(StaticResults, AnotherShaderBuildHasAnotherKey) {
   options.device.validation = true;
   options.pipeline_cache_on_disk = false;
   Renderer renderer(options);
-  renderer.load_graph(quick_graph(fresh_folder("shader")));
+  renderer.load_graph(quick_graph(fresh_folder("static-results", "shader")));
   renderer.render(default_world(), kSmall);
   const DeviceIdentity device = device_identity(renderer.context().properties());
   const StaticResultsStore built("folder", {device, node_code_identity()});
@@ -302,7 +289,7 @@ TEST(StaticResults, TheFolderKeepsTheMostRecentlyUsedWithinItsBound) {
 // env.sky with sun_turn_speed renders a new sky every frame: its cube, SH and prefiltered cube
 // are not static, and only the BRDF table (static in every graph) is kept.
 TEST(StaticResults, AnAnimatedSkyIsNeverKept) {
-  const fs::path folder = fresh_folder("animated");
+  const fs::path folder = fresh_folder("static-results", "animated");
   first_frame(folder, kExamples + "animated-sky.json");
   ASSERT_EQ(results_files(folder).size(), 1u);
   const DecodedStaticResults kept = decode(results_files(folder)[0], this_device());

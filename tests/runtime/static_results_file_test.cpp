@@ -10,17 +10,12 @@
 #include <random>
 #include <string>
 
+#include "tests/runtime/test_device_identity.h"
+
 namespace lg {
 namespace {
 
-DeviceIdentity test_device() {
-  DeviceIdentity d;
-  d.vendor_id = 0x10005;
-  d.device_id = 0x1234;
-  d.driver_version = 0x00580006;
-  for (size_t i = 0; i < d.cache_uuid.size(); ++i) d.cache_uuid[i] = uint8_t(17 * i + 3);
-  return d;
-}
+using test::test_device;
 
 std::vector<StoredResult> test_results() {
   std::mt19937 random(11);
