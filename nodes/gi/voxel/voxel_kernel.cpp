@@ -309,29 +309,27 @@ class VoxelKernel final : public NodeKernel {
   // sums.
   void sky_visibility(PassContext& ctx) {
     compute_to_compute_barrier(ctx.cmd());  // the chain's last level
-    const DescriptorWrite writes[] = {
-        uniform_buffer(0, constants_->handle()),
-        storage_buffer(1, grid_sums_.handle()),
-        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
-    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_sky.comp", writes, uint32_t(grid_.counts.x),
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_sky.comp", sums_and_chain(ctx), uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
+  }
+
+  // What the passes that light the voxels' sums through the chain bind (voxel_sky.comp,
+  // voxel_local_lights.comp): the constants, the sums, the chain as rays see it and the opacity.
+  std::vector<DescriptorWrite> sums_and_chain(PassContext& ctx) {
+    return {uniform_buffer(0, constants_->handle()),
+            storage_buffer(1, grid_sums_.handle()),
+            sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+            sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+            sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
+            sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL)};
   }
 
   // Per voxel, the local lights' irradiance on its surface with their visibility through the chain
   // (voxel_local_lights.comp), into its sums.
   void local_lights(PassContext& ctx) {
     compute_to_compute_barrier(ctx.cmd());  // the chain's last level; the sky pass's sums
-    const DescriptorWrite writes[] = {
-        uniform_buffer(0, constants_->handle()),
-        storage_buffer(1, grid_sums_.handle()),
-        sampled_image(4, seen_[0].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(7, seen_[1].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(8, seen_[2].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        sampled_image(9, opacity_.view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL),
-        uniform_buffer(10, lights_->handle())};
+    std::vector<DescriptorWrite> writes = sums_and_chain(ctx);
+    writes.push_back(uniform_buffer(10, lights_->handle()));
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_local_lights.comp", writes, uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
