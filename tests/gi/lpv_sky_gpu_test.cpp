@@ -117,6 +117,55 @@ TEST(LpvSky, GivesAnOpenFloorTheSkysIrradiance) {
   expect_no_validation_messages(renderer->context());
 }
 
+// The volume output (the inspector's view of the grid) holds the sky's light as the lookup reads
+// it: the open floor above, rendered with the SH linked and without. The sky adds and never takes
+// away (its march and its bounce are sources of positive light: every cell at least as bright, to
+// the half floats' rounding), and a cell of the grid's top layer above the floor's middle gains
+// the mean over all normals of the irradiance from what it sees, a quarter of the radiance's
+// integral over those directions: from the sky above, a quarter of 2 pi L for a uniform sky (half
+// of E_sky(up)) down to a quarter of E_sky(up) for a sky whose light comes from straight above,
+// plus the floor's reflection of it from below (up to kWhite / 2 of E_sky(up)); bounds 0.25 and
+// 1.0 of E_sky(up). Without the sky in the view (before stop 34) the gain was the bounce alone.
+TEST(LpvSky, TheVolumeOutputHoldsTheSky) {
+  World world;
+  const auto slab = slab_adder(world, kWhite);
+  slab({8.0f, 0.1f, 8.0f}, {0.0f, -0.05f, 0.0f});
+  slab({0.2f, 2.0f, 0.2f}, {3.8f, 1.0f, -3.8f});
+  add_camera_sun_and_sky(world, {0.0f, 3.0f, 1.0f}, {0.0f, -1.0f, -0.3f});
+  auto volume_of = [&](bool sky_linked, double* sky_up) {
+    Graph graph = lpv_sky_graph(kSky);
+    if (!sky_linked) std::erase_if(graph.links, [](const GraphLink& l) { return l.to.text() == "lpv.sh"; });
+    graph.outputs.push_back({{"lpv", "volume"}, {}});
+    auto renderer = make_renderer(graph);
+    renderer->render(world, kFrame);
+    if (sky_up) *sky_up = sky_irradiance_green(*renderer, {0, 1, 0});
+    expect_no_validation_messages(renderer->context());
+    return renderer->executor().read_image("lpv.volume");
+  };
+  double sky_up = 0;
+  const std::vector<float> with = volume_of(true, &sky_up), without = volume_of(false, nullptr);
+  ASSERT_EQ(with.size(), without.size());
+  const int n = int(std::lround(std::cbrt(double(with.size() / 4))));  // grid^3 texels
+  ASSERT_EQ(size_t(n) * n * n * 4, with.size());
+  auto at = [&](int x, int y, int z) { return 4 * ((size_t(z) * n + y) * n + x); };
+  int top = -1;  // the grid's top layer of cells
+  for (int y = 0; y < n; ++y)
+    if (with[at(n / 2, y, n / 2) + 3] > 0.5f) top = y;
+  ASSERT_GT(top, 0);
+  size_t darker = 0;
+  for (size_t i = 0; i < with.size(); i += 4) darker += with[i + 1] < without[i + 1] - 1e-3 * sky_up;
+  double gain = 0;
+  int cells = 0;
+  for (int z = n / 4; z < 3 * n / 4; ++z)
+    for (int x = n / 4; x < 3 * n / 4; ++x, ++cells) gain += with[at(x, top, z) + 1] - without[at(x, top, z) + 1];
+  gain /= cells;
+  std::printf("the volume's top layer gains %.4f with the sky (E_sky(up) %.4f, ratio %.3f); cells darker: %zu\n",
+              gain, sky_up, gain / sky_up, darker);
+  EXPECT_EQ(darker, 0u);
+  EXPECT_GT(gain, 0.25 * sky_up);
+  EXPECT_LT(gain, 1.0 * sky_up);
+}
+
 // Degenerate skies on the degenerate world (zero-area triangles, a NaN colour, a 1e30 sun): an
 // environment of the largest finite floats (env.load keeps it within the half floats: the SH's
 // first coefficient reads 7.3e5, some 10^5 times a daylight sky's) and the same at intensity 0

@@ -366,13 +366,16 @@ class LpvKernel final : public NodeKernel {
     if (ctx.has("out.volume")) write_volume(ctx);
   }
 
-  // The optional volume output (linked or dumped): the sum's L0 term as mean irradiance
-  // (lpv_volume.comp), after the store above (its barrier precedes the lookup, which also reads).
+  // The optional volume output (linked or dumped): the sum's and the sky's L0 terms as mean
+  // irradiance (lpv_volume.comp), after the store above (its barrier precedes the lookup, which
+  // also reads).
   void write_volume(PassContext& ctx) {
     Image& volume = ctx.image("out.volume");
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), general_sampled(ctx, 1, sum_images_[0]),
                                       general_sampled(ctx, 2, sum_images_[1]), general_sampled(ctx, 3, sum_images_[2]),
-                                      storage_image(4, volume.view())};
+                                      storage_image(4, volume.view()),           general_sampled(ctx, 5, sky_images_[0]),
+                                      general_sampled(ctx, 6, sky_images_[1]),   general_sampled(ctx, 7, sky_images_[2]),
+                                      general_sampled(ctx, 8, sky_images_[3])};
     const ImageDesc& d = volume.desc();
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_volume.comp", writes, d.width, d.height * d.depth);
   }
