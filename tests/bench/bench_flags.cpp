@@ -109,4 +109,17 @@ bool example_worlds_exist(const char* tool, const std::string& source, const std
   return true;
 }
 
+bool names_known(const char* tool, const char* flag, const std::string& names,
+                 std::initializer_list<std::string_view> known) {
+  for (const std::string& name : split_commas(names)) {
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    std::string expected;
+    for (auto k = known.begin(); k != known.end(); ++k)
+      expected += (k == known.begin() ? "" : k + 1 == known.end() ? " or " : ", ") + std::string(*k);
+    std::fprintf(stderr, "%s: %s: unknown '%s' (expected %s)\n", tool, flag, name.c_str(), expected.c_str());
+    return false;
+  }
+  return true;
+}
+
 }  // namespace lg::bench

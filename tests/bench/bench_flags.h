@@ -5,8 +5,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lg::bench {
@@ -47,5 +49,11 @@ std::vector<std::string> split_commas(const std::string& text);
 // Whether every name of the comma list `worlds` is a file examples/worlds/NAME.json under
 // `source`; else prints "TOOL: --worlds: no world 'NAME' in examples/worlds/" and answers false.
 bool example_worlds_exist(const char* tool, const std::string& source, const std::string& worlds);
+
+// Whether every name of the comma list `names` is one of `known` (a benchmark that picks what to
+// run by name would silently measure nothing for a misspelt one); else prints "TOOL: FLAG:
+// unknown 'NAME' (expected a, b or c)" and answers false.
+bool names_known(const char* tool, const char* flag, const std::string& names,
+                 std::initializer_list<std::string_view> known);
 
 }  // namespace lg::bench

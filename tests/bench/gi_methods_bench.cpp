@@ -390,11 +390,7 @@ int main(int argc, char** argv) {
   if (const auto status = flags.parse(argc, argv)) return *status;
   if (!orbit.empty()) o.orbit = orbit.front();
   if (!lg::bench::example_worlds_exist("lumagraph-bench-gi-methods", lg::bench::kSource, o.worlds)) return 2;
-  for (const std::string& name : lg::bench::split_commas(o.methods))
-    if (name != "none" && name != "volume" && name != "lpv" && name != "voxel") {
-      std::fprintf(stderr, "lumagraph-bench-gi-methods: --methods: unknown method '%s' (expected none, volume, lpv or voxel)\n",
-                   name.c_str());
-      return 2;
-    }
+  if (!lg::bench::names_known("lumagraph-bench-gi-methods", "--methods", o.methods, {"none", "volume", "lpv", "voxel"}))
+    return 2;
   return lg::bench::run(o);
 }

@@ -298,12 +298,7 @@ int main(int argc, char** argv) {
   std::string lpv;
   flags.text("--lpv", lpv);
   if (const auto status = flags.parse(argc, argv)) return *status;
-  // run() picks the nodes by name: a misspelt one would silently measure nothing.
-  for (const std::string& name : lg::bench::split_commas(o.methods))
-    if (name != "lpv" && name != "voxel") {
-      std::fprintf(stderr, "lumagraph-bench-lpv: --methods: '%s' is neither lpv nor voxel\n", name.c_str());
-      return 2;
-    }
+  if (!lg::bench::names_known("lumagraph-bench-lpv", "--methods", o.methods, {"lpv", "voxel"})) return 2;
   if (!lg::bench::example_worlds_exist("lumagraph-bench-lpv", LUMAGRAPH_SOURCE_DIR, o.worlds)) return 2;
   if (!lpv.empty()) {
     o.lpv.clear();
