@@ -22,6 +22,7 @@
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
 #include "runtime/scene/mesh_generators.h"
+#include "tests/gi/covered_irradiance.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/main_light_bypass.h"
 #include "tests/gi/slab_world.h"
@@ -126,13 +127,9 @@ TEST(Lpv, LightDoesNotLeakThroughAWallTheSunDoesNotLight) {
     eye.position = {x, 2.0f, 1.8f};
     eye.rotation = look_rotation({0.0f, -0.8f, -1.0f});
     renderer->render(world, kFrame);
-    const std::vector<float> e = renderer->executor().read_image("lpv.irradiance");
-    double sum = 0;
-    size_t n = 0;
-    for (size_t i = 0; i < e.size(); i += 4)
-      if (e[i + 3] > 0.5f) sum += e[i + 1], ++n;
-    EXPECT_EQ(n, size_t(kFrame.width) * kFrame.height);  // every pixel sees the inside of the room
-    return sum / double(n);
+    const CoveredIrradiance seen = covered_irradiance(renderer->executor().read_image("lpv.irradiance"));
+    EXPECT_EQ(seen.covered, size_t(kFrame.width) * kFrame.height);  // every pixel sees the inside of the room
+    return seen.mean_green;
   };
   const double west = mean_seen(-2.0f), east = mean_seen(2.0f);
   std::printf("mean irradiance seen in the west room %.5f, in the east room %.5f W/m^2: leak %.3f%%\n", west, east,
@@ -147,14 +144,9 @@ TEST(Lpv, StaysFiniteOnDegenerateInput) {
   World world = degenerate_world();
   auto renderer = make_renderer(lpv_graph(8, 4));
   renderer->render(world, kFrame);
-  const std::vector<float> out = renderer->executor().read_image("lpv.irradiance");
-  size_t bad = 0, covered = 0;
-  for (size_t i = 0; i < out.size(); ++i) {
-    bad += !std::isfinite(out[i]);
-    covered += i % 4 == 3 && out[i] > 0.5f;
-  }
-  EXPECT_EQ(bad, 0u);
-  EXPECT_GT(covered, 0u);  // the floor is in the grid
+  const CoveredIrradiance out = covered_irradiance(renderer->executor().read_image("lpv.irradiance"));
+  EXPECT_EQ(out.non_finite, 0u);
+  EXPECT_GT(out.covered, 0u);  // the floor is in the grid
   expect_no_validation_messages(renderer->context());
 }
 

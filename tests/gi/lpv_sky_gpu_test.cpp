@@ -19,6 +19,7 @@
 #include "graph/graph_io.h"
 #include "runtime/image/image_formats.h"
 #include "tests/gi/camera_and_sun.h"
+#include "tests/gi/covered_irradiance.h"
 #include "tests/gi/degenerate_world.h"
 #include "tests/gi/sky_irradiance.h"
 #include "tests/gi/slab_world.h"
@@ -57,19 +58,6 @@ void add_camera_sun_and_sky(World& world, glm::vec3 eye, glm::vec3 look) {
   world.add(world.create("environment"), EnvironmentLight{});
 }
 
-// Green irradiance over the covered pixels: mean, and how many.
-struct Seen {
-  double mean = 0;
-  size_t covered = 0;
-};
-Seen mean_green(const std::vector<float>& e) {
-  Seen s;
-  for (size_t i = 0; i < e.size(); i += 4)
-    if (e[i + 3] > 0.5f) s.mean += e[i + 1], ++s.covered;
-  if (s.covered) s.mean /= double(s.covered);
-  return s;
-}
-
 // slab_world.h's closed room (0.1 m slabs, cells of 26 cm: each wall shares its cells with the
 // room's edge) under env.sky's sky, seen from inside: the truth is 0. Measured 1.4% of the sky's
 // irradiance on an open floor: 0.99% from the sky's march (rays slipping past the room's
@@ -83,12 +71,12 @@ TEST(LpvSky, LeavesTheInsideOfAClosedRoomDark) {
   auto renderer = make_renderer(lpv_sky_graph(kSky));
   renderer->render(room, kFrame);
   const double sky_up = sky_irradiance_green(*renderer, {0, 1, 0});
-  const Seen inside = mean_green(renderer->executor().read_image("lpv.irradiance"));
-  std::printf("inside the closed room under the sky: mean E %.5f, %.3f%% of E_sky(up) %.4f\n", inside.mean,
-              100.0 * inside.mean / sky_up, sky_up);
+  const CoveredIrradiance inside = covered_irradiance(renderer->executor().read_image("lpv.irradiance"));
+  std::printf("inside the closed room under the sky: mean E %.5f, %.3f%% of E_sky(up) %.4f\n", inside.mean_green,
+              100.0 * inside.mean_green / sky_up, sky_up);
   ASSERT_EQ(inside.covered, size_t(kFrame.width) * kFrame.height);
   EXPECT_GT(sky_up, 0.0);
-  EXPECT_LT(inside.mean, 0.02 * sky_up);
+  EXPECT_LT(inside.mean_green, 0.02 * sky_up);
   expect_no_validation_messages(renderer->context());
 }
 
@@ -109,11 +97,11 @@ TEST(LpvSky, GivesAnOpenFloorTheSkysIrradiance) {
   auto renderer = make_renderer(lpv_sky_graph(kSky));
   renderer->render(world, kFrame);
   const double sky_up = sky_irradiance_green(*renderer, {0, 1, 0});
-  const Seen floor = mean_green(renderer->executor().read_image("lpv.irradiance"));
-  std::printf("open floor under the sky: mean E %.4f, E_sky(up) %.4f, ratio %.3f\n", floor.mean, sky_up,
-              floor.mean / sky_up);
+  const CoveredIrradiance floor = covered_irradiance(renderer->executor().read_image("lpv.irradiance"));
+  std::printf("open floor under the sky: mean E %.4f, E_sky(up) %.4f, ratio %.3f\n", floor.mean_green, sky_up,
+              floor.mean_green / sky_up);
   ASSERT_EQ(floor.covered, size_t(kFrame.width) * kFrame.height);
-  EXPECT_NEAR(floor.mean / sky_up, 1.0, 0.15);
+  EXPECT_NEAR(floor.mean_green / sky_up, 1.0, 0.15);
   expect_no_validation_messages(renderer->context());
 }
 
@@ -188,14 +176,9 @@ TEST(LpvSky, StaysFiniteOnADegenerateSky) {
     float first[4];
     std::memcpy(first, sh.data(), sizeof(first));
     std::printf("intensity %s: the SH's first coefficient %g %g %g\n", intensity, first[0], first[1], first[2]);
-    const std::vector<float> out = renderer->executor().read_image("lpv.irradiance");
-    size_t bad = 0, covered = 0;
-    for (size_t i = 0; i < out.size(); ++i) {
-      bad += !std::isfinite(out[i]);
-      covered += i % 4 == 3 && out[i] > 0.5f;
-    }
-    EXPECT_EQ(bad, 0u);
-    EXPECT_GT(covered, 0u);
+    const CoveredIrradiance out = covered_irradiance(renderer->executor().read_image("lpv.irradiance"));
+    EXPECT_EQ(out.non_finite, 0u);
+    EXPECT_GT(out.covered, 0u);
     expect_no_validation_messages(renderer->context());
   }
 }
