@@ -7,8 +7,8 @@
 // light (lpv_sky.comp; zero images without it) at the same point: the filtered radiance over the
 // filtered openness, its L1 convolved with the cosine (linear: an open hemisphere gives pi L).
 // rgb: irradiance, W/m^2; a: coverage, 1
-// where the surface lies in the grid's box, 0 outside it, on the sky and in a frame without a
-// directional light (scales.z). The target is the output itself, or at resolution_scale 1/k below
+// where the surface lies in the grid's box, 0 outside it, on the sky and in a frame with neither
+// a directional light nor the sky injected (scales.z). The target is the output itself, or at resolution_scale 1/k below
 // 1 a smaller image whose texel i is the G-buffer's texel upsample_source_texel(i, k), which
 // gi.irradiance_volume's upsample.comp brings back to full resolution.
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"

@@ -3,7 +3,7 @@
 // gi.voxel's local lights, one invocation per voxel of level 0: the irradiance the scene's point,
 // spot, sphere, tube and rectangle lights give the voxel's surface (its mean normal), into its
 // sums for the second injection (voxel_inject.comp: albedo x E / pi). Each light is a point at
-// its centre (voxel_kernel.cpp's gpu_local_light): E = I(-l) max(0, n . l) W / (d^2 + s), with I
+// its centre (voxel_local_lights.cpp's light()): E = I(-l) max(0, n . l) W / (d^2 + s), with I
 // its intensity toward the voxel (a spot's KHR falloff, a rectangle's cosine), W the range
 // window of lighting.deferred and s the squared size of an area light (area / pi: a disk's
 // on-axis irradiance exactly, L pi R^2 / (d^2 + R^2)), at least a quarter voxel squared so that a
@@ -22,7 +22,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 1) buffer Grid { int grid[]; };
 
-// voxel_kernel.cpp's LocalLight.
+// voxel_local_lights.h's VoxelLocalLight.
 struct LocalLight {
   vec4 position_range;  // xyz: the light's centre; w: its range (0: none)
   vec4 intensity_size;  // rgb: W/sr toward the axis (every way for kind 0); w: s, m^2
@@ -30,7 +30,7 @@ struct LocalLight {
                         // 2 one-sided Lambertian, 3 two-sided Lambertian
   vec4 spot;            // x, y: the spot's ramp t = clamp(cos x + y, 0, 1)
 };
-const int kMaxLocalLights = 16;  // voxel_kernel.cpp's kMaxLocalLights
+const int kMaxLocalLights = 16;  // voxel_local_lights.h's kMaxVoxelLocalLights
 layout(std140, binding = 10) uniform LightsBlock { LocalLight lights[kMaxLocalLights]; };
 
 const int kMaxSteps = 128;  // voxel_ray_level()'s grid's diagonal is 111 voxels

@@ -6,9 +6,9 @@
 // normal and march the chain, counting every voxel's opacity whichever way it faces, all the way
 // out of the grid; the visibility is 1 - sum w_i occluded_i (cosine-weighted, so an open floor
 // reads 1 and the inside of a closed room 0), occluded_i the larger of the cone's two opacities.
-// Written into the voxel's unused eighth int of the voxelization's sums (as float bits) for the
-// second injection (voxel_inject.comp), which adds the sky's light: albedo x E_sky(n) x
-// visibility / pi.
+// Written into the voxel's eighth int of the voxelization's sums (its sky visibility, as float
+// bits; voxel_common.glsl) for the second injection (voxel_inject.comp), which adds the sky's
+// light: albedo x E_sky(n) x visibility / pi.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/gi/voxel/shaders/voxel_trace.glsl"
 
