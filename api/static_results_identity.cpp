@@ -54,17 +54,20 @@ int hash_build_id(dl_phdr_info* object, size_t, void* data) {
 }  // namespace
 
 uint64_t node_code_identity() {
-  uint64_t hash = fnv1a_basis;
-  for (const EmbeddedShader& shader : node_shaders()) {
-    hash = fnv1a(shader.path, hash);
-    hash = fnv1a(shader.spirv.data(), shader.spirv.size_bytes(), hash);
-  }
+  static const uint64_t identity = [] {  // the same for the whole process: hashed once
+    uint64_t hash = fnv1a_basis;
+    for (const EmbeddedShader& shader : node_shaders()) {
+      hash = fnv1a(shader.path, hash);
+      hash = fnv1a(shader.spirv.data(), shader.spirv.size_bytes(), hash);
+    }
 #if defined(__linux__)
-  BuildIdSearch search{reinterpret_cast<uintptr_t>(&node_code_identity), hash};
-  dl_iterate_phdr(hash_build_id, &search);
-  hash = search.hash;
+    BuildIdSearch search{reinterpret_cast<uintptr_t>(&node_code_identity), hash};
+    dl_iterate_phdr(hash_build_id, &search);
+    hash = search.hash;
 #endif
-  return hash;
+    return hash;
+  }();
+  return identity;
 }
 
 std::vector<std::string> static_input_files(const Plan& plan, const Registry& registry) {

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "runtime/exec/executor.h"
+#include "runtime/exec/static_results_file.h"
 #include "runtime/gpu/direct_barriers.h"
 #include "runtime/gpu/image_copy.h"
 #include "runtime/gpu/plan_barriers.h"
@@ -68,8 +69,7 @@ bool Executor::adopt_cached_results(Executor& previous) {
 std::vector<int> Executor::stored_resources() const {
   std::vector<int> out;
   for (size_t r = 0; r < plan_.resources.size(); ++r)
-    if (plan_.resources[r].desc.lifetime == ResourceLifetime::cached && plan_.resources[r].placement.block >= 0)
-      out.push_back(int(r));
+    if (is_static_result(plan_.resources[r])) out.push_back(int(r));
   return out;
 }
 

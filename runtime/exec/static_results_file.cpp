@@ -11,10 +11,6 @@ constexpr uint32_t format_version = 1;
 // magic, version, device identity, key, payload size, payload checksum.
 constexpr size_t header_bytes = sizeof magic + 4 + device_identity_bytes + 8 + 8 + 8;
 
-bool stored(const PlanResource& r) {
-  return r.desc.lifetime == ResourceLifetime::cached && r.placement.block >= 0;
-}
-
 }  // namespace
 
 uint64_t static_results_key(const Plan& plan, const StaticResultsIdentity& identity) {
@@ -28,7 +24,7 @@ uint64_t static_results_key(const Plan& plan, const StaticResultsIdentity& ident
   }
   if (!any) return 0;
   for (const PlanResource& r : plan.resources) {
-    if (!stored(r)) continue;
+    if (!is_static_result(r)) continue;
     const LoweredResource& d = r.desc;
     key.put_bytes(d.name.data(), d.name.size() + 1);
     key.put_bytes(d.format.data(), d.format.size() + 1);

@@ -24,6 +24,12 @@ struct StaticResultsIdentity {
   uint64_t inputs = 0;    // the contents of the files static nodes read (env.load's image)
 };
 
+// Whether a plan's resource is one of its static results: cached and placed in memory (what the
+// key covers, the file holds and the executor reads back and loads).
+inline bool is_static_result(const PlanResource& r) {
+  return r.desc.lifetime == ResourceLifetime::cached && r.placement.block >= 0;
+}
+
 // A hash of everything that changes the static results' bytes: every static pass's name and
 // cache key (the node's type, params and static inputs), every cached resource's name, kind,
 // format, extent, layers, mips and size, and `identity`. 0 when the plan has no static pass.

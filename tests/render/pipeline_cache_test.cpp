@@ -7,8 +7,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "api/renderer.h"
 #include "tests/render/cache_folders.h"
@@ -43,15 +41,6 @@ const std::vector<float>& reference_frame() {
     return first_frame(renderer);
   }();
   return frame;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 TEST(PipelineCache, ARecompileReusesThePipelinesOfTheLastPlan) {

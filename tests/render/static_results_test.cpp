@@ -7,9 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 
 #include "api/renderer.h"
 #include "tests/render/cache_folders.h"
@@ -25,15 +23,6 @@ namespace fs = std::filesystem;
 
 const std::string kExamples = LUMAGRAPH_SOURCE_DIR "/examples/";
 constexpr FrameSize kSmall{64, 36};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
 
 // `text` with its first `from` replaced by `to`.
 std::string with(std::string text, const std::string& from, const std::string& to) {
