@@ -1,17 +1,14 @@
 #include "runtime/exec/static_results_store.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <utility>
 
 #include "graph/fnv1a.h"
-#include "graph/json_writer.h"
 #include "runtime/exec/executor.h"
+#include "runtime/gpu/cache_file_io.h"
 
 namespace lg {
 namespace {
@@ -58,20 +55,19 @@ std::string StaticResultsStore::path(uint64_t key) const {
 }
 
 bool StaticResultsStore::load(Executor& executor, uint64_t key) {
+  if (key == 0) return false;
   const std::string file = path(key);
-  std::error_code error;
-  if (key == 0 || !fs::exists(file, error)) return false;  // the first run of this plan
+  const CacheFileRead read = read_cache_file(file);
+  if (!read.exists) return false;  // the first run of this plan
   auto ignored = [&](const std::string& why) {
     warnings_.push_back("static results " + file + " ignored (the static passes run again): " + why);
     return false;
   };
-  if (!fs::is_regular_file(file, error)) return ignored("it is not a regular file");
-  std::ifstream in(file, std::ios::binary);
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (!in.is_open() || in.bad()) return ignored(std::string("cannot read it: ") + std::strerror(errno));
-  DecodedStaticResults decoded = decode_static_results(bytes, identity_.device, key);
+  if (!read.problem.empty()) return ignored(read.problem);
+  DecodedStaticResults decoded = decode_static_results(read.bytes, identity_.device, key);
   if (!decoded.problem.empty()) return ignored(decoded.problem);
   if (std::string problem = executor.load_cached_results(decoded.results); !problem.empty()) return ignored(problem);
+  std::error_code error;
   fs::last_write_time(file, fs::file_time_type::clock::now(), error);  // used: the last to go
   return true;
 }
@@ -89,14 +85,7 @@ bool StaticResultsStore::save(Executor& executor, uint64_t key) {
                           " MiB, more than the folder may hold (" + std::to_string(max_bytes_ >> 20) + " MiB)");
       return false;
     }
-    std::error_code made;
-    fs::create_directories(folder_, made);
-    if (made)
-      error = "cannot make the folder " + folder_ + ": " + made.message();
-    else if (write_file_atomically(file, bytes, &error))
-      error.clear();
-    else if (error.empty())
-      error = "cannot write it";
+    error = write_cache_file(folder_, file, bytes);
   } catch (const std::exception& e) {  // a readback failed: the device is lost
     error = e.what();
   }

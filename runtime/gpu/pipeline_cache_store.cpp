@@ -1,16 +1,12 @@
 #include "runtime/gpu/pipeline_cache_store.h"
 
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <utility>
 
 #include "graph/fnv1a.h"
-#include "graph/json_writer.h"
+#include "runtime/gpu/cache_file_io.h"
 #include "runtime/gpu/context.h"
 #include "runtime/gpu/pipeline.h"
 #include "runtime/gpu/pipeline_cache_file.h"
@@ -50,14 +46,11 @@ uint64_t PipelineCacheStore::compiled() const {
 }
 
 void PipelineCacheStore::load() {
-  std::error_code error;
-  if (!std::filesystem::exists(path_, error)) return;  // the first run on this device
+  const CacheFileRead file = read_cache_file(path_);
+  if (!file.exists) return;  // the first run on this device
   auto ignored = [&](const std::string& why) { warnings_.push_back("pipeline cache " + path_ + " ignored: " + why); };
-  if (!std::filesystem::is_regular_file(path_, error)) return ignored("it is not a regular file");
-  std::ifstream in(path_, std::ios::binary);
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (!in.is_open() || in.bad()) return ignored(std::string("cannot read it: ") + std::strerror(errno));
-  DecodedPipelineCache decoded = decode_pipeline_cache(bytes, device_identity(context_.properties()));
+  if (!file.problem.empty()) return ignored(file.problem);
+  DecodedPipelineCache decoded = decode_pipeline_cache(file.bytes, device_identity(context_.properties()));
   if (!decoded.problem.empty()) return ignored(decoded.problem);
   if (!context_.pipelines().merge(decoded.driver_data)) return ignored("the driver refused its data");
   loaded_bytes_ = decoded.driver_data.size();
@@ -76,14 +69,8 @@ bool PipelineCacheStore::save() {
       return true;
     }
     file_data_hash_.reset();  // until written
-    std::error_code made;
-    std::filesystem::create_directories(folder_, made);
-    if (made)
-      error = "cannot make the folder " + folder_ + ": " + made.message();
-    else if (!write_file_atomically(path_, encode_pipeline_cache(device_identity(context_.properties()), data), &error))
-      error = error.empty() ? "cannot write it" : error;
-    else
-      file_data_hash_ = hash;
+    error = write_cache_file(folder_, path_, encode_pipeline_cache(device_identity(context_.properties()), data));
+    if (error.empty()) file_data_hash_ = hash;
   } catch (const std::exception& e) {  // vkGetPipelineCacheData failed: the device is lost
     error = e.what();
   }
