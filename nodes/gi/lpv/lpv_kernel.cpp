@@ -200,7 +200,7 @@ class LpvKernel final : public NodeKernel {
       set_viewport(cmd, size, size);
       const SceneView& scene = ctx.scene();
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-        const DescriptorWrite writes[] = {shadow_draw_block(draw_blocks_->handle(), i),
+        const DescriptorWrite writes[] = {draw_block(0, draw_blocks_->handle(), i),
                                           uniform_buffer(1, rsm_light_->handle())};
         bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
         push_constants(cmd, pipeline, ShadowDrawPush{shadow_from_world_});

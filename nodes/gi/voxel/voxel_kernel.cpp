@@ -221,7 +221,7 @@ class VoxelKernel final : public NodeKernel {
       set_viewport(cmd, size, size);
       const SceneView& scene = ctx.scene();
       for (uint32_t i = 0; i < scene.draws.size(); ++i) {
-        const DescriptorWrite writes[] = {shadow_draw_block(draw_blocks_->handle(), i)};
+        const DescriptorWrite writes[] = {draw_block(0, draw_blocks_->handle(), i)};
         bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
         push_constants(cmd, pipeline, ShadowDrawPush{shadow_from_world_});
         draw_mesh(cmd, ctx.gpu_scene().mesh(scene.draws[i].mesh));

@@ -131,11 +131,11 @@ class DeferredKernel final : public NodeKernel {
         const PbrMaterial& m = scene.material_of(scene.draws[i]);
         const bool tested = light_alpha_cutoff(m) > 0.0f;
         const Pipeline& pipeline = tested ? alpha_tested : opaque;
-        std::vector<DescriptorWrite> writes = {shadow_draw_block(draw_blocks_->handle(), i)};
+        DescriptorWrite writes[2] = {draw_block(0, draw_blocks_->handle(), i)};
         if (tested)
-          writes.push_back(sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
-                                         gpu_scene.sampler(m.base_color_texture.sampling)));
-        bind_pipeline(ctx.gpu(), cmd, pipeline, writes);
+          writes[1] = sampled_image(1, gpu_scene.texture(m.base_color_texture.texture).view(),
+                                    gpu_scene.sampler(m.base_color_texture.sampling));
+        bind_pipeline(ctx.gpu(), cmd, pipeline, std::span(writes, tested ? 2 : 1));
         push_constants(cmd, pipeline, ShadowDrawPush{view.clip_from_world});
         draw_mesh(cmd, gpu_scene.mesh(scene.draws[i].mesh));
       }

@@ -10,10 +10,6 @@
 
 namespace lg {
 
-DescriptorWrite shadow_draw_block(VkBuffer blocks, uint32_t draw) {
-  return uniform_buffer(0, blocks, draw * draw_block_stride, sizeof(DrawConstants));
-}
-
 const Pipeline& shadow_depth_pipeline(PassContext& ctx, VkFormat depth_format, bool alpha_tested) {
   GraphicsPipelineDesc desc;
   desc.name = ctx.pass().name;

@@ -19,11 +19,9 @@ struct ShadowDrawPush {  // shaders/shadow_draw.glsl
   glm::mat4 shadow_from_world;
 };
 
-// Draw `draw`'s block at binding 0: its range of `blocks`, a uniform buffer of draw_blocks().
-DescriptorWrite shadow_draw_block(VkBuffer blocks, uint32_t draw);
-
 // Depth of `depth_format` from positions (shaders/shadow.vert), or alpha-tested against the
-// draw's base colour (shaders/shadow_masked.*), binding the draw's block at 0 (and the base
+// draw's base colour (shaders/shadow_masked.*), binding the draw's block at 0 (draw_block(0, ...),
+// draw_constants.h; and the base
 // colour at 1 when alpha-tested). Both sides of every face: a wall modelled as one single-sided plane must not
 // let light through from behind.
 const Pipeline& shadow_depth_pipeline(PassContext& ctx, VkFormat depth_format, bool alpha_tested);

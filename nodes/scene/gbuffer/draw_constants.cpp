@@ -51,4 +51,8 @@ std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants) 
   return bytes;
 }
 
+DescriptorWrite draw_block(uint32_t binding, VkBuffer blocks, uint32_t draw) {
+  return uniform_buffer(binding, blocks, draw * draw_block_stride, sizeof(DrawConstants));
+}
+
 }  // namespace lg

@@ -10,6 +10,7 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
+#include "runtime/gpu/descriptors.h"
 #include "runtime/scene/scene_view.h"
 
 namespace lg {
@@ -51,5 +52,8 @@ std::vector<DrawConstants> draw_constants(const SceneView& scene);
 // any device takes it.
 inline constexpr size_t draw_block_stride = (sizeof(DrawConstants) + 255) / 256 * 256;
 std::vector<std::byte> draw_blocks(const std::vector<DrawConstants>& constants);
+
+// Draw `draw`'s block at `binding`: its range of `blocks`, a uniform buffer of draw_blocks().
+DescriptorWrite draw_block(uint32_t binding, VkBuffer blocks, uint32_t draw);
 
 }  // namespace lg

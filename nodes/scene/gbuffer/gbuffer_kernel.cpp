@@ -61,8 +61,7 @@ class GbufferKernel final : public NodeKernel {
       const PbrMaterial& m = scene.material_of(d);
       if (m.alpha_mode == AlphaMode::blend) continue;  // scene.forward_transparent draws it
       std::vector<DescriptorWrite> writes = {uniform_buffer(0, camera_->handle()), storage_buffer(1, draws_->handle()),
-                                             uniform_buffer(6, draw_blocks_->handle(), i * draw_block_stride,
-                                                            sizeof(DrawConstants))};
+                                             draw_block(6, draw_blocks_->handle(), i)};
       add_material_textures(gpu_scene, m, writes);
       Variant kind = m.alpha_mode == AlphaMode::mask ? masked : textured;
       const auto maps = material_maps(m);
