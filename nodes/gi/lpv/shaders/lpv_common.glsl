@@ -19,9 +19,12 @@ vec4 sh_l1_basis(vec3 d) {
   return vec4(0.28209479, 0.48860251 * d.y, 0.48860251 * d.z, 0.48860251 * d.x);
 }
 
+// The clamped cosine's SH coefficients: Y00's sqrt(pi) / 2 and Y1m's sqrt(pi / 3) times n.
+const float kCosineY00 = 0.88622693, kCosineY1 = 1.02332671;
+
 // max(0, n . w) in SH L1: pi Y00 and 2 pi / 3 Y1m(n).
 vec4 sh_l1_cosine_lobe(vec3 n) {
-  return vec4(0.88622693, 1.02332671 * n.y, 1.02332671 * n.z, 1.02332671 * n.x);
+  return vec4(kCosineY00, kCosineY1 * n.y, kCosineY1 * n.z, kCosineY1 * n.x);
 }
 
 // The L1 coefficients read as the non-negative distribution with the same projection: an
@@ -35,8 +38,8 @@ ShLobe sh_l1_lobe(vec4 sh) {
   vec3 band1 = vec3(sh.w, sh.y, sh.z);
   float len = length(band1);
   float c0 = max(sh.x, 0.0);
-  float b = min(len / 1.02332671, c0 / 0.88622693);  // 1.0233 = sqrt(pi / 3), 0.8862 = sqrt(pi) / 2
-  return ShLobe(max(c0 - 0.88622693 * b, 0.0) / 3.5449077, b, len > 0.0 ? band1 / len : vec3(0.0));
+  float b = min(len / kCosineY1, c0 / kCosineY00);
+  return ShLobe(max(c0 - kCosineY00 * b, 0.0) / 3.5449077, b, len > 0.0 ? band1 / len : vec3(0.0));
 }
 
 // The lobe packed as (a, b d): its value towards w is a + max(0, (b d) . w).
@@ -93,6 +96,17 @@ bool lpv_inside(ivec3 c) {
 ivec3 lpv_invocation_cell() {
   ivec2 id = ivec2(gl_GlobalInvocationID.xy);
   return ivec3(id.x, id.y % lpv.counts.y, id.y / lpv.counts.y);
+}
+
+// The sky's irradiance on a surface facing m at texture coordinate uvw, from lpv_sky.comp's
+// images (the sky's radiance SH times the cells' openness): the filtered radiance over the
+// filtered openness, its L1 convolved with the cosine (linear: an open hemisphere gives pi L), at
+// least 0.
+vec3 lpv_sky_irradiance(sampler3D red, sampler3D green, sampler3D blue, sampler3D openness, vec3 uvw, vec3 m) {
+  vec4 cosine = sh_l1_cosine_lobe(-m) / max(textureLod(openness, uvw, 0.0).r, 1e-3);  // arriving along -m
+  return max(vec3(dot(textureLod(red, uvw, 0.0), cosine), dot(textureLod(green, uvw, 0.0), cosine),
+                  dot(textureLod(blue, uvw, 0.0), cosine)),
+             vec3(0.0));
 }
 
 #endif

@@ -53,10 +53,6 @@ void main() {
   // lpv_store.comp stored radiance; the light arriving travels along w with w . n < 0.
   vec3 e = vec3(sh_l1_lobe_convolve(sh_l1_lobe(sh[0]), -n), sh_l1_lobe_convolve(sh_l1_lobe(sh[1]), -n),
                 sh_l1_lobe_convolve(sh_l1_lobe(sh[2]), -n));
-  float open = textureLod(sky_openness, uvw, 0.0).r;
-  vec4 cosine = sh_l1_cosine_lobe(-n) / max(open, 1e-3);  // the light arriving travels along -n
-  vec3 sky = vec3(dot(textureLod(sky_red, uvw, 0.0), cosine), dot(textureLod(sky_green, uvw, 0.0), cosine),
-                  dot(textureLod(sky_blue, uvw, 0.0), cosine));
-  e += max(sky, vec3(0.0));
+  e += lpv_sky_irradiance(sky_red, sky_green, sky_blue, sky_openness, uvw, n);
   imageStore(irradiance, texel, vec4(clamp(finite_or_zero(max(e, vec3(0.0))), 0.0, 65504.0), lpv.scales.z));
 }

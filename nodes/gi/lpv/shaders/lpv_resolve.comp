@@ -31,7 +31,7 @@ vec4 sky_plane(ivec4 planes, vec4 blocking) {
   vec3 normals = vec3(planes.xyz) / lpv.scales.y;
   float len = length(normals);
   if (!(len > 1e-4)) return vec4(0.0);
-  float weights = blocking.x / 0.88622693;  // a cosine lobe's Y00 coefficient is sqrt(pi) / 2
+  float weights = blocking.x / kCosineY00;  // a cosine lobe's Y00 coefficient
   float coverage = min(len, 1.0) + (len < 0.9 * weights ? 1.0 : 0.0);
   return vec4(normals / len * coverage, float(planes.w) / (lpv.scales.y * len));
 }

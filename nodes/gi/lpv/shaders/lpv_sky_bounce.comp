@@ -28,12 +28,8 @@ layout(binding = 8, rgba32f) uniform writeonly image3D light_green;
 layout(binding = 9, rgba32f) uniform writeonly image3D light_blue;
 
 // The sky's irradiance on a surface facing m at grid point g (in cells), as the lookup reads it.
-vec3 sky_irradiance(vec3 g, vec3 m) {
-  vec3 uvw = g / vec3(lpv.counts.xyz);
-  vec4 cosine = sh_l1_cosine_lobe(-m) / max(textureLod(sky_openness, uvw, 0.0).r, 1e-3);
-  return max(vec3(dot(textureLod(sky_red, uvw, 0.0), cosine), dot(textureLod(sky_green, uvw, 0.0), cosine),
-                  dot(textureLod(sky_blue, uvw, 0.0), cosine)),
-             vec3(0.0));
+vec3 sky_irradiance_at(vec3 g, vec3 m) {
+  return lpv_sky_irradiance(sky_red, sky_green, sky_blue, sky_openness, g / vec3(lpv.counts.xyz), m);
 }
 
 void main() {
@@ -50,7 +46,7 @@ void main() {
       uint i = 3u * lpv_cell_index(x);
       vec4 lobe_sums = vec4(occlusion_fixed[i]) / lpv.scales.y;
       vec3 normals = vec3(occlusion_fixed[i + 1u].xyz) / lpv.scales.y;
-      float weights = lobe_sums.x / 0.88622693;  // a cosine lobe's Y00 is sqrt(pi) / 2
+      float weights = lobe_sums.x / kCosineY00;
       ShLobe lobe = sh_l1_lobe(lobe_sums);
       float len = length(normals);
       // One way where the lobe is mostly direction (a single face), else the plane's two sides.
@@ -59,7 +55,7 @@ void main() {
       float towards = max(dot(m, vec3(e)), 0.0);
       if (weights > 1e-4 && towards > 0.0) {
         vec3 albedo = clamp(vec3(occlusion_fixed[i + 2u].xyz) / (lpv.scales.y * weights), 0.0, 1.0);
-        vec3 e_sky = sky_irradiance(vec3(x) + 0.5 + 1.0 * m, m);
+        vec3 e_sky = sky_irradiance_at(vec3(x) + 0.5 + 1.0 * m, m);
         // W: colour x W/m^2 x the covered cell face (m^2), this cell's share of it.
         vec3 flux = albedo * e_sky * (min(len, 1.0) * cell * cell * towards * towards);
         vec4 emitter = sh_l1_cosine_lobe(m) / LG_PI;  // intensity per W of a Lambertian emitter

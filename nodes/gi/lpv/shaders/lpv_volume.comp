@@ -31,9 +31,8 @@ void main() {
     imageStore(volume, c, vec4(0.0));
     return;
   }
-  const float l0_to_mean_irradiance = 0.88622693;  // sqrt(pi) / 2
   vec3 l0 = vec3(texelFetch(sum_red, c, 0).x, texelFetch(sum_green, c, 0).x, texelFetch(sum_blue, c, 0).x);
   vec3 sky = vec3(texelFetch(sky_red, c, 0).x, texelFetch(sky_green, c, 0).x, texelFetch(sky_blue, c, 0).x);
   l0 += sky / max(texelFetch(sky_openness, c, 0).r, 1e-3);
-  imageStore(volume, c, vec4(max(l0, vec3(0.0)) * l0_to_mean_irradiance, 1.0));
+  imageStore(volume, c, vec4(max(l0, vec3(0.0)) * kCosineY00, 1.0));  // c_0 sqrt(pi) / 2 (above)
 }
