@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "nodes/lighting/deferred/light_buffers.h"
+
 namespace lg {
 namespace {
 
@@ -30,11 +32,8 @@ VoxelLocalLights voxel_local_lights(const SceneView& scene) {
   for (const PointLightData& p : scene.point_lights)
     add(light(p.position, p.range, p.intensity, 0.0f, none, VoxelLightKind::every_way));
   for (const SpotLightData& s : scene.spot_lights) {
-    // lighting.deferred's ramp (nodes/lighting/deferred/README.md, "Spot lights").
-    const float cos_outer = std::cos(s.outer_cone_angle), cos_inner = std::cos(s.inner_cone_angle);
-    const float scale = 1.0f / std::max(0.001f, cos_inner - cos_outer);
     VoxelLocalLight l = light(s.position, s.range, s.intensity, 0.0f, glm::normalize(s.direction), VoxelLightKind::spot);
-    l.spot = glm::vec4(scale, -cos_outer * scale, 0.0f, 0.0f);
+    l.spot = glm::vec4(spot_ramp(s), 0.0f, 0.0f);  // lighting.deferred's ramp
     add(l);
   }
   // A uniform Lambertian sphere of radiance L sends L pi r^2 every way; outside it the irradiance

@@ -33,13 +33,9 @@ struct GpuRect {
   glm::vec4 center_two_sided, half_x, half_y, radiance;
 };
 
-// The cone as glTF's falloff wants it: the ramp is cos(angle) * scale + offset, 0 at the outer
-// cone and 1 at the inner; an inner cone as wide as the outer one is kept 0.001 apart in
-// cosine (the spec's guard), a hard but finite edge.
 GpuSpot gpu_spot(const SpotLightData& l, int first_view, int views) {
-  const float cos_outer = std::cos(l.outer_cone_angle);
-  const float scale = 1.0f / std::max(0.001f, std::cos(l.inner_cone_angle) - cos_outer);
-  return {glm::vec4(l.position, l.range), glm::vec4(l.direction, scale), glm::vec4(l.intensity, -cos_outer * scale),
+  const glm::vec2 ramp = spot_ramp(l);
+  return {glm::vec4(l.position, l.range), glm::vec4(l.direction, ramp.x), glm::vec4(l.intensity, ramp.y),
           glm::vec4(float(first_view), float(views), 0.0f, 0.0f)};
 }
 
@@ -150,6 +146,12 @@ void LightBuffers::add_area_lists(std::vector<DescriptorWrite>& writes) const {
   writes.push_back(uniform_buffer(17, tubes_.handle()));
   writes.push_back(uniform_buffer(18, rects_.handle()));
   writes.push_back(uniform_buffer(22, ltc_.handle()));
+}
+
+glm::vec2 spot_ramp(const SpotLightData& light) {
+  const float cos_outer = std::cos(light.outer_cone_angle);
+  const float scale = 1.0f / std::max(0.001f, std::cos(light.inner_cone_angle) - cos_outer);
+  return {scale, -cos_outer * scale};
 }
 
 }  // namespace lg

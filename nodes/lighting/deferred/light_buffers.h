@@ -4,6 +4,7 @@
 #pragma once
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <string>
 #include <vector>
@@ -25,6 +26,11 @@ inline constexpr size_t kMaxLightsPerKind = 256;
 // Local shadow views a frame draws at most (local_shadow_atlas.glsl's LG_MAX_SHADOW_VIEWS): six
 // for each of the 16 lights the schema's shadow_budget allows; a uniform block too (80 bytes each).
 inline constexpr size_t kMaxShadowViews = 96;
+
+// A spot's cone as glTF's falloff wants it: x, y of the ramp cos(angle) x + y, 0 at the outer
+// cone and 1 at the inner; an inner cone as wide as the outer one is kept 0.001 apart in cosine
+// (the spec's guard), a hard but finite edge. gi.voxel's injected spots take the same ramp.
+glm::vec2 spot_ramp(const SpotLightData& light);
 
 // shaders/lights.glsl's Constants (std140).
 struct LightConstants {

@@ -17,6 +17,7 @@
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/gi/voxel/shaders/voxel_trace.glsl"
 #include "nodes/common/shaders/finite.glsl"
+#include "nodes/common/shaders/light_falloff.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -64,8 +65,7 @@ vec3 irradiance(LocalLight light, vec3 p, vec3 n, vec3 from) {
   float d2 = dot(to_light, to_light);
   vec3 l = to_light * inversesqrt(max(d2, 1e-12));
   float cosine = max(dot(n, l), 0.0);
-  float range = light.position_range.w;
-  float window = range > 0.0 ? pow(clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0), 2.0) : 1.0;
+  float window = light_range_window(d2, light.position_range.w);
   float along = dot(light.axis_kind.xyz, -l);  // cosine at the light, toward the voxel
   int kind = int(light.axis_kind.w);
   float toward = 1.0;

@@ -7,6 +7,7 @@
 #define LG_DIRECT_LIGHTS_GLSL
 
 #include "nodes/common/shaders/brdf.glsl"
+#include "nodes/common/shaders/light_falloff.glsl"
 #include "nodes/lighting/deferred/shaders/lights.glsl"
 #include "nodes/lighting/deferred/shaders/local_shadow_atlas.glsl"
 
@@ -56,13 +57,12 @@ float local_visibility(Surface s, vec3 light_position, float first, float count)
   return lit / 9.0;
 }
 
-// A point light's radiance toward the eye: intensity over distance squared, with a smooth
-// window to 0 at the range (Karis 2013; range 0: none) so a cut-off light shows no edge.
+// A point light's radiance toward the eye: intensity over distance squared, windowed to 0 at
+// its range (light_falloff.glsl).
 vec3 punctual(Surface s, vec4 position_range, vec3 intensity) {
   vec3 to_light = position_range.xyz - s.position;
   float d2 = max(dot(to_light, to_light), 1e-8);
-  float range = position_range.w;
-  float window = range > 0.0 ? pow(clamp(1.0 - pow(d2 / (range * range), 2.0), 0.0, 1.0), 2.0) : 1.0;
+  float window = light_range_window(d2, position_range.w);
   return brdf_cosine(s, to_light * inversesqrt(d2)) * intensity * (window / d2);
 }
 
