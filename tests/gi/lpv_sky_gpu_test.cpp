@@ -80,6 +80,17 @@ TEST(LpvSky, LeavesTheInsideOfAClosedRoomDark) {
   expect_no_validation_messages(renderer->context());
 }
 
+// A white floor 8 x 8 m, 0.1 m thick, and a post 0.2 x 2 x 0.2 m at one corner, so that the grid
+// (the draws' bounds) has open cells above the floor, seen from above under the sky alone.
+World open_floor_under_the_sky() {
+  World world;
+  const auto slab = slab_adder(world, kWhite);
+  slab({8.0f, 0.1f, 8.0f}, {0.0f, -0.05f, 0.0f});
+  slab({0.2f, 2.0f, 0.2f}, {3.8f, 1.0f, -3.8f});
+  add_camera_sun_and_sky(world, {0.0f, 3.0f, 1.0f}, {0.0f, -1.0f, -0.3f});
+  return world;
+}
+
 // A floor 8 x 8 m, 0.1 m thick, under the sky, seen from above away from its edges, and a post
 // 0.2 x 2 x 0.2 m at one corner, so that the grid (the draws' bounds) has open cells above the
 // floor: the truth is E_sky(up) on the floor, less the post's share of the sky (under 1%: 0.4 m^2
@@ -89,11 +100,7 @@ TEST(LpvSky, LeavesTheInsideOfAClosedRoomDark) {
 // reflection of the sky, which the propagation's cosine lobes spread partly back down onto it
 // (docs/lpv.md). Tolerance 15%.
 TEST(LpvSky, GivesAnOpenFloorTheSkysIrradiance) {
-  World world;
-  const auto slab = slab_adder(world, kWhite);
-  slab({8.0f, 0.1f, 8.0f}, {0.0f, -0.05f, 0.0f});
-  slab({0.2f, 2.0f, 0.2f}, {3.8f, 1.0f, -3.8f});
-  add_camera_sun_and_sky(world, {0.0f, 3.0f, 1.0f}, {0.0f, -1.0f, -0.3f});
+  World world = open_floor_under_the_sky();
   auto renderer = make_renderer(lpv_sky_graph(kSky));
   renderer->render(world, kFrame);
   const double sky_up = sky_irradiance_green(*renderer, {0, 1, 0});
@@ -115,11 +122,7 @@ TEST(LpvSky, GivesAnOpenFloorTheSkysIrradiance) {
 // plus the floor's reflection of it from below (up to kWhite / 2 of E_sky(up)); bounds 0.25 and
 // 1.0 of E_sky(up). Without the sky in the view (before stop 34) the gain was the bounce alone.
 TEST(LpvSky, TheVolumeOutputHoldsTheSky) {
-  World world;
-  const auto slab = slab_adder(world, kWhite);
-  slab({8.0f, 0.1f, 8.0f}, {0.0f, -0.05f, 0.0f});
-  slab({0.2f, 2.0f, 0.2f}, {3.8f, 1.0f, -3.8f});
-  add_camera_sun_and_sky(world, {0.0f, 3.0f, 1.0f}, {0.0f, -1.0f, -0.3f});
+  World world = open_floor_under_the_sky();
   auto volume_of = [&](bool sky_linked, double* sky_up) {
     Graph graph = lpv_sky_graph(kSky);
     if (!sky_linked) std::erase_if(graph.links, [](const GraphLink& l) { return l.to.text() == "lpv.sh"; });
