@@ -33,7 +33,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <glm/gtc/quaternion.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -203,12 +202,6 @@ double relative_distance(const std::vector<float>& from, const std::vector<float
     for (size_t c = 0; c < 3; ++c) square += std::pow(double(from[i + c]) - to[i + c], 2), sum += to[i + c], ++n;
   }
   return n && sum > 0 ? std::sqrt(square / double(n)) / (sum / double(n)) : NAN;
-}
-
-void turn_directional_lights(World& world, double degrees) {
-  world.each<DirectionalLight, Transform>([&](Entity, DirectionalLight&, Transform& t) {
-    t.rotation = glm::angleAxis(glm::radians(float(degrees)), glm::vec3(0, 1, 0)) * t.rotation;
-  });
 }
 
 struct Settling {

@@ -17,9 +17,22 @@ double process_cpu_ms() {
   return ms(usage.ru_utime) + ms(usage.ru_stime);
 }
 
-void turn_cameras(World& world, double degrees) {
+namespace {
+
+template <class Component>
+void turn_each(World& world, double degrees) {
   const glm::quat turn = glm::angleAxis(float(glm::radians(degrees)), glm::vec3(0.0f, 1.0f, 0.0f));
-  world.each<Camera, Transform>([&](Entity, Camera&, Transform& t) { t.rotation = turn * t.rotation; });
+  world.each<Component, Transform>([&](Entity, Component&, Transform& t) { t.rotation = turn * t.rotation; });
+}
+
+}  // namespace
+
+void turn_cameras(World& world, double degrees) {
+  turn_each<Camera>(world, degrees);
+}
+
+void turn_directional_lights(World& world, double degrees) {
+  turn_each<DirectionalLight>(world, degrees);
 }
 
 std::vector<double> sorted_pass_ms(Renderer& renderer, const World& world, uint32_t width, uint32_t height,

@@ -19,8 +19,9 @@ namespace lg::bench {
 // a loaded machine disturbs it far less than the timestamps.
 double process_cpu_ms();
 
-// The world's cameras turned by `degrees` about the vertical, in place.
+// The world's cameras, or its directional lights, turned by `degrees` about the vertical, in place.
 void turn_cameras(World& world, double degrees);
+void turn_directional_lights(World& world, double degrees);
 
 // Renders `frames` + 1 frames of `world` at width x height and returns, sorted, the GPU time of
 // the passes `counts` accepts summed per frame, for all but the first (it JIT-compiles the
