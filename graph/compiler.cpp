@@ -73,9 +73,9 @@ CompileResult compile(const Graph& graph, const Registry& registry, const Compil
 
   result.plan = timer.run("assemble", [&] {
     return assemble(graph, resolved, std::move(states), std::move(*lowered), *order_nodes, order, lives,
-                    std::move(memory), std::move(barriers), {options.scene.name, options.frame, options.roots});
+                    std::move(memory), std::move(barriers),
+                    {options.scene.name, options.frame, options.roots, options.keep_optional_outputs});
   });
-  result.plan->keeps_every_output = options.keep_optional_outputs;
   return result;
 }
 

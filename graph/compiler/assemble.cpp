@@ -76,6 +76,7 @@ Plan assemble(const Graph& graph, const ResolvedGraph& resolved, NodeStates&& st
   plan.file = graph.file;
   plan.scene = options.scene_name;
   plan.frame = options.frame;
+  plan.keeps_every_output = options.keeps_every_output;
   // Nodes in topological order (ties by id), so the plan does not depend on the file's order.
   CachedVector<int> plan_index(graph.nodes.size());
   for (size_t k = 0; k < node_order.size(); ++k) plan_index[node_order[k]] = static_cast<int>(k);

@@ -20,6 +20,7 @@ struct AssembleOptions {
   std::string scene_name;
   FrameSize frame;
   AssetRoots roots;  // to make path params absolute
+  bool keeps_every_output = false;  // Plan::keeps_every_output
 };
 
 // Takes over what the plan keeps of the IRs passed as rvalues (names, reasons, placements)
