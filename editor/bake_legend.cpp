@@ -6,12 +6,15 @@
 #include <vtkCellArray.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
+#include <vtkExtractVOI.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
 #include <vtkMapper.h>
 #include <vtkNew.h>
+#include <vtkOutlineFilter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -246,6 +249,24 @@ void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<doub
   camera->SetViewUp(0, 1, 0);
   camera->SetWindowCenter(-0.1, 0);
   renderer->ResetCamera(bounds);
+}
+
+void add_outline(vtkRenderer* renderer, vtkImageData* image, double x_offset) {
+  vtkNew<vtkOutlineFilter> outline;
+  outline->SetInputData(image);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(outline->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.7, 0.7, 0.7);
+  actor->SetPosition(x_offset, 0, 0);
+  renderer->AddActor(actor);
+}
+
+void set_slice_voi(vtkExtractVOI* extract, const std::array<int, 3>& dims, int axis, int index) {
+  int voi[6] = {0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1};
+  voi[2 * axis] = voi[2 * axis + 1] = index;
+  extract->SetVOI(voi);
 }
 
 }  // namespace lg

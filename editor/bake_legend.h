@@ -11,6 +11,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkExtractVOI;
 class vtkFloatArray;
 class vtkImageData;
 class vtkLookupTable;
@@ -82,5 +83,11 @@ std::array<double, 2> display_point_of(vtkRenderer* renderer, double x, double y
 // Points the camera at the centre of `bounds` (xmin, xmax, ymin, ymax, zmin, zmax) from
 // `offset` away, Y up, shifted left of the colour bar, and fits the bounds in view.
 void frame_bounds(vtkRenderer* renderer, const double bounds[6], std::array<double, 3> offset);
+
+// A grey outline of `image`'s bounds, moved `x_offset` along x (beside another view of it).
+void add_outline(vtkRenderer* renderer, vtkImageData* image, double x_offset);
+
+// `extract` set to the one slice `index` across `axis` of an image of `dims` points.
+void set_slice_voi(vtkExtractVOI* extract, const std::array<int, 3>& dims, int axis, int index);
 
 }  // namespace lg

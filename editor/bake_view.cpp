@@ -11,7 +11,6 @@
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
-#include <vtkOutlineFilter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -92,9 +91,7 @@ struct VolumeSlices::Pipeline {
   int arrow_stride = 1;
 
   void place(int axis) {
-    int voi[6] = {0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1};
-    voi[2 * axis] = voi[2 * axis + 1] = slice[axis];
-    slices[axis]->SetVOI(voi);
+    set_slice_voi(slices[axis], dims, axis, slice[axis]);
     if (axis == 2) place_arrows();
   }
 
@@ -153,14 +150,7 @@ VolumeSlices::VolumeSlices(vtkRenderer* renderer, const BakeVolume& volume) : pi
   arrow_actor->GetProperty()->SetColor(0.95, 0.95, 0.95);
   renderer->AddActor(arrow_actor);
 
-  vtkNew<vtkOutlineFilter> outline;
-  outline->SetInputData(p.image);
-  vtkNew<vtkPolyDataMapper> outline_mapper;
-  outline_mapper->SetInputConnection(outline->GetOutputPort());
-  vtkNew<vtkActor> outline_actor;
-  outline_actor->SetMapper(outline_mapper);
-  outline_actor->GetProperty()->SetColor(0.7, 0.7, 0.7);
-  renderer->AddActor(outline_actor);
+  add_outline(renderer, p.image, 0.0);
 
   double bounds[6];
   p.image->GetBounds(bounds);

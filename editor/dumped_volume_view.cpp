@@ -1,6 +1,5 @@
 #include "editor/dumped_volume_view.h"
 
-#include <vtkActor.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDataSetMapper.h>
 #include <vtkExtractVOI.h>
@@ -8,11 +7,8 @@
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
-#include <vtkOutlineFilter.h>
 #include <vtkPiecewiseFunction.h>
 #include <vtkPointData.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSmartVolumeMapper.h>
 #include <vtkVolume.h>
@@ -104,11 +100,7 @@ struct DumpedVolumeView::Pipeline {
   std::array<double, 2> value_range{0, 0};
   long long lit_points = 0;
 
-  void place(int axis) {
-    int voi[6] = {0, dims[0] - 1, 0, dims[1] - 1, 0, dims[2] - 1};
-    voi[2 * axis] = voi[2 * axis + 1] = slice[axis];
-    slices[axis]->SetVOI(voi);
-  }
+  void place(int axis) { set_slice_voi(slices[axis], dims, axis, slice[axis]); }
 
   // "shown" (the slices: NaN where alpha is 0) and "volume" (the volume rendering: the scale's
   // low end there, which its opacity makes clear), in log10 for the light's channels.
@@ -195,19 +187,7 @@ struct DumpedVolumeView::Pipeline {
     volume->SetProperty(property);
     volume->SetPosition(offset, 0, 0);
     renderer->AddVolume(volume);
-    add_outline(renderer, offset);
-  }
-
-  void add_outline(vtkRenderer* renderer, double offset) {
-    vtkNew<vtkOutlineFilter> outline;
-    outline->SetInputData(image);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(outline->GetOutputPort());
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(0.7, 0.7, 0.7);
-    actor->SetPosition(offset, 0, 0);
-    renderer->AddActor(actor);
+    add_outline(renderer, image, offset);
   }
 };
 
@@ -229,7 +209,7 @@ DumpedVolumeView::DumpedVolumeView(vtkRenderer* renderer, const DumpedVolume& vo
     mapper->SetInputConnection(p.slices[axis]->GetOutputPort());
     add_visibility_actor(renderer, mapper, p.lut);
   }
-  p.add_outline(renderer, 0.0);
+  add_outline(renderer, p.image, 0.0);
   double bounds[6];
   p.image->GetBounds(bounds);
   // The volume rendering to the right of the slices, a fifth of the grid's width apart.

@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
 
   lg::InspectorWidget inspector;
   inspector.setWindowTitle(QStringLiteral("Lumagraph Inspector — %1").arg(file));
-  inspector.resize(args.isSet(dumped) ? 1400 : args.isSet(bake) ? 1100 : 1400, other ? 820 : 620);
+  inspector.resize(args.isSet(bake) ? 1100 : 1400, other ? 820 : 620);  // --bake and --dumped exclude each other
   inspector.show();
   const bool probes = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprobes"));
   const bool prt = args.isSet(bake) && file.endsWith(QStringLiteral(".lgprt"));
