@@ -2,8 +2,9 @@
 // transformed cosines and by representative points against the double-precision quadrature of
 // the GGX lobe over the light (tests/lighting/area_specular_cases.h), on --cases fresh shading
 // points per light shape and horizon (lights 1.5 to 50 bounding radii away, roughness 0.1 to 1,
-// n.v 0.02 to 1), and lighting.deferred's area pass GPU time with each (examples/default.json
-// on the embedded default world, --frame-size, median over --frames after the first).
+// n.v 0.02 to 1; --seed draws another set), and lighting.deferred's area pass GPU time with each
+// (examples/default.json on the embedded default world, --frame-size, median over --frames after
+// the first).
 // Writes area_specular_errors.csv, area_specular_points.csv and area_specular_time.csv into
 // --results-dir; scripts/run-area-specular-benchmarks plots them.
 #include <algorithm>
@@ -26,6 +27,7 @@ namespace fs = std::filesystem;
 struct Options {
   std::string results_dir = "bench-results";
   int cases = 200;  // per shape and horizon
+  uint32_t seed = 1000;  // of the first shape and horizon's points; the others' follow
   uint32_t frame_width = 1280, frame_height = 720, frames = 6;
   bool timing = true;
 };
@@ -57,7 +59,7 @@ int run(const Options& o) {
   const fs::path dir = fs::absolute(o.results_dir);
   fs::create_directories(dir);
   std::vector<Point> points;
-  uint64_t seed = 1000;
+  uint64_t seed = o.seed;
   for (LightShape shape : {LightShape::kSphere, LightShape::kTube, LightShape::kRect}) {
     for (Horizon horizon : {Horizon::kAbove, Horizon::kCrossing}) {
       CaseGenerator g(seed++);
@@ -128,10 +130,11 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   lg::bench::Options o;
   lg::bench::BenchFlags flags(
-      "usage: lumagraph-bench-area-specular [--results-dir DIR] [--cases N] [--frame-size WxH] [--frames N] "
-      "[--no-timing]\n");
+      "usage: lumagraph-bench-area-specular [--results-dir DIR] [--cases N] [--seed N] [--frame-size WxH] "
+      "[--frames N] [--no-timing]\n");
   flags.text("--results-dir", o.results_dir);
   flags.count("--cases", o.cases);
+  flags.count("--seed", o.seed);
   flags.size("--frame-size", o.frame_width, o.frame_height);
   flags.count("--frames", o.frames);
   flags.set_switch("--no-timing", o.timing, false);

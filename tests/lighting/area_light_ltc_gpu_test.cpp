@@ -77,22 +77,22 @@ TEST_F(AreaLightLtcGpuTest, ShaderMatchesTheCppTwin) {
     range.min_roughness = 0.0;
     const SpecularCase c = make_specular_case(g, shape, range);
     GpuCase gpu{};
-    put(gpu.p, c.p, c.roughness), put(gpu.n, c.n, double(k % 3)), put(gpu.v, c.v, 0.0);
     const glm::vec3 p = to_float(c.p), n = to_float(c.n), v = to_float(c.v);
-    const glm::vec4 entry = ltc_lookup(std::max(glm::dot(n, v), 1e-4f), float(c.roughness));
+    const LtcLobe lobe = ltc_lobe(std::max(glm::dot(n, v), 1e-4f), float(c.roughness));
+    put(gpu.p, c.p, c.roughness), put(gpu.n, c.n, double(k % 3)), put(gpu.v, c.v, lobe.albedo);
     float cpu = 0.0f;
     if (shape == LightShape::kSphere) {
       put(gpu.a, c.sphere.center, c.sphere.radius);
-      cpu = ltc_sphere_specular({to_float(c.sphere.center), float(c.sphere.radius), 1.0f}, p, n, v, entry);
+      cpu = ltc_sphere_specular({to_float(c.sphere.center), float(c.sphere.radius), 1.0f}, p, n, v, lobe);
     } else if (shape == LightShape::kTube) {
       put(gpu.a, c.tube.end0, c.tube.radius), put(gpu.b, c.tube.end1, 0.0);
       cpu =
-          ltc_tube_specular({to_float(c.tube.end0), to_float(c.tube.end1), float(c.tube.radius), 1.0f}, p, n, v, entry);
+          ltc_tube_specular({to_float(c.tube.end0), to_float(c.tube.end1), float(c.tube.radius), 1.0f}, p, n, v, lobe);
     } else {
       put(gpu.a, c.rect.center, c.rect.two_sided ? 1.0 : 0.0), put(gpu.b, c.rect.half_x, 0.0);
       put(gpu.c, c.rect.half_y, 0.0);
       cpu = ltc_rect_specular(to_float(RectLightD{c.rect.center, c.rect.half_x, c.rect.half_y, 1.0, c.rect.two_sided}),
-                              p, n, v, entry);
+                              p, n, v, lobe);
     }
     input.push_back(gpu);
     expected.push_back(cpu);

@@ -78,21 +78,21 @@ SpecularSample evaluate_specular(const SpecularCase& c, double rel_tol) {
   const SpecularLobe lobe{c.v, alpha};
   const double n_dot_v = std::max(glm::dot(c.n, c.v), 1e-4);
   const glm::dvec2 ab = brdf_albedo_lookup(n_dot_v, c.roughness);
-  const glm::vec4 entry = ltc_lookup(float(n_dot_v), float(c.roughness));
+  const LtcLobe ltc = ltc_lobe(float(n_dot_v), float(c.roughness));
   const glm::vec3 p = to_float(c.p), n = to_float(c.n), v = to_float(c.v);
   const glm::vec3 r = glm::normalize(2.0f * glm::dot(n, v) * n - v);
   SpecularSample s{};
   if (c.shape == LightShape::kSphere) {
     const SphereLight l = to_float(c.sphere);
     s.reference = reference_sphere_specular(c.sphere, c.p, c.n, lobe, rel_tol).value;
-    s.ltc = ltc_sphere_specular(l, p, n, v, entry);
+    s.ltc = ltc_sphere_specular(l, p, n, v, ltc);
     s.representative_point = point_light_specular(c, sphere_specular_point(l, p, r, float(alpha)), l.radiance,
                                                   std::numbers::pi * l.radius * l.radius, alpha);
     s.albedo = l.radiance;
   } else if (c.shape == LightShape::kTube) {
     const TubeLight l = to_float(c.tube);
     s.reference = reference_tube_specular(c.tube, c.p, c.n, lobe, rel_tol).value;
-    s.ltc = ltc_tube_specular(l, p, n, v, entry);
+    s.ltc = ltc_tube_specular(l, p, n, v, ltc);
     const RepresentativePoint rp = tube_specular_point(l, p, r, float(alpha));
     // As area_lights.glsl: the caps' disc and the cylinder's length x diameter seen from the side.
     const dvec3 axis = dvec3(l.end1 - l.end0);
@@ -104,7 +104,7 @@ SpecularSample evaluate_specular(const SpecularCase& c, double rel_tol) {
   } else {
     const RectLight l = to_float(c.rect);
     s.reference = reference_rect_specular(c.rect, c.p, c.n, lobe, rel_tol).value;
-    s.ltc = ltc_rect_specular(l, p, n, v, entry);
+    s.ltc = ltc_rect_specular(l, p, n, v, ltc);
     const RepresentativePoint rp = rect_specular_point(l, p, r, float(alpha));
     const dvec3 normal = glm::cross(dvec3(l.half_x), dvec3(l.half_y));
     const double facing = std::fabs(glm::dot(glm::normalize(normal), dvec3(rp.direction)));

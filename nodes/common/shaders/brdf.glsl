@@ -38,6 +38,7 @@ struct Surface {
   vec3 f0;              // specular reflectance at normal incidence
   vec3 specular_scale;  // multiple-scattering compensation at the view
   vec3 specular_albedo;  // the specular lobe's directional albedo at the view, with that scale
+  float lobe_albedo;     // A + B: that albedo with Fresnel 1 and no scale
   float alpha;
 };
 
@@ -49,6 +50,7 @@ Surface make_surface(vec3 position, vec3 normal, vec3 eye, vec3 albedo, float ro
   s.f0 = mix(vec3(0.04), albedo, metalness);
   s.specular_scale = vec3(1.0);
   s.specular_albedo = s.f0;  // until share_energy has the table's value
+  s.lobe_albedo = 1.0;
   s.diffuse_color = albedo * (1.0 - metalness);
   s.alpha = max(roughness * roughness, LG_MIN_ALPHA);
   return s;
@@ -60,6 +62,7 @@ Surface make_surface(vec3 position, vec3 normal, vec3 eye, vec3 albedo, float ro
 void share_energy(inout Surface s, vec2 scale_bias) {
   s.specular_scale = specular_energy_scale(s.f0, scale_bias);
   s.specular_albedo = specular_albedo(s.f0, scale_bias);
+  s.lobe_albedo = max(scale_bias.x + scale_bias.y, 1e-4);
   s.diffuse_color *= 1.0 - s.specular_albedo;
 }
 

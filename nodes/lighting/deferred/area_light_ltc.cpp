@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "nodes/env/brdf_lut/brdf_albedo.h"
+#include "nodes/env/brdf_lut/dfg_reference.h"
 #include "nodes/lighting/deferred/area_light_math.h"
 #include "nodes/lighting/deferred/ltc_table.h"
 
@@ -23,25 +25,34 @@ float specular_result(float radiance, float integral) {
 
 }  // namespace
 
-glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
+LtcLobe ltc_lobe(float n_dot_v, float roughness) {
+  const glm::dvec2 ab = brdf_albedo_lookup(n_dot_v, roughness);
+  return {ltc_lookup(n_dot_v, roughness), float(ltc_alpha(roughness)), float(std::max(ab.x + ab.y, 1e-4))};
+}
+
+glm::mat3 ltc_frame(vec3 n, vec3 v) {
   n = glm::normalize(n);
   vec3 t1 = v - n * glm::dot(n, v);
   const float len = glm::length(t1);
   // Seen straight on, any tangent serves: the lobe is round there.
   t1 = len > 1e-6f ? t1 / len : any_perpendicular(n);
-  const vec3 t2 = glm::cross(n, t1);
-  return ltc_inverse(entry) * glm::transpose(glm::mat3(t1, t2, n));
+  return glm::mat3(t1, glm::cross(n, t1), n);
+}
+
+glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
+  return ltc_inverse(entry) * glm::transpose(ltc_frame(n, v));
 }
 
 namespace {
 
-// The Lambert formula's term of edge a-b: its angle times the z of its unit normal.
-float edge_term(vec3 a, vec3 b) {
+// The Lambert formula's term of edge a-b: its angle times its unit normal (the z of which
+// integrates the cosine; the whole vector gives the vector form factor's direction).
+vec3 edge_term(vec3 a, vec3 b) {
   const vec3 e0 = glm::normalize(a), e1 = glm::normalize(b);
   const vec3 c = glm::cross(e0, e1);
   const float s = glm::length(c);
   // atan2 keeps the angle exact for short edges, where acos of the dot product loses it.
-  return s > 0.0f ? c.z * std::atan2(s, glm::dot(e0, e1)) / s : 0.0f;
+  return s > 0.0f ? c * std::atan2(s, glm::dot(e0, e1)) / s : vec3(0.0f);
 }
 
 // Where edge a-b crosses the plane through the origin at signed distances da, db (a's, b's);
@@ -60,8 +71,8 @@ void ltc_add_cosine_edge(LtcCosineClip& c, vec3 a, vec3 b) {
   const vec3 x = crossing(a, b, a.z, b.z);
   if (a_in && !b_in) c.exit = x, c.exited = true;
   if (b_in && !a_in) c.entry = x, c.entered = true;
-  const float term = edge_term(a_in ? a : x, b_in ? b : x);
-  c.sum += a_in || b_in ? term : 0.0f;
+  const vec3 term = edge_term(a_in ? a : x, b_in ? b : x);
+  c.sum += a_in || b_in ? term : vec3(0.0f);
 }
 
 void ltc_add_edge(LtcPolygon& poly, vec3 a, vec3 b) {
@@ -79,10 +90,19 @@ float ltc_finish(LtcPolygon& poly) {
   const bool cut = poly.exited && poly.entered;
   ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit, poly.to_cosine * (cut ? poly.entry : poly.exit));
   LtcCosineClip& c = poly.cosine;
-  const float chord = edge_term(c.exit, c.entry);
-  c.sum += c.exited && c.entered ? chord : 0.0f;
-  return std::fabs(c.sum) / (2.0f * kAreaLightPi);
+  const vec3 chord = edge_term(c.exit, c.entry);
+  c.sum += c.exited && c.entered ? chord : vec3(0.0f);
+  return std::fabs(c.sum.z) / (2.0f * kAreaLightPi);
 }
+
+namespace {
+
+// F of a finished polygon, oriented so that F.z = I (the winding decides the sum's sign).
+vec3 form_factor(const LtcPolygon& poly) {
+  return poly.cosine.sum * ((poly.cosine.sum.z < 0.0f ? -1.0f : 1.0f) / (2.0f * kAreaLightPi));
+}
+
+}  // namespace
 
 LtcPolygon ltc_polygon(vec3 n, vec3 v, glm::vec4 entry) {
   LtcPolygon poly;
@@ -178,9 +198,10 @@ vec3 ltc_outline_vertex(const LtcOutline& o, int j) {
 
 namespace {
 
-float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
+// F of the outline's polygon (zero for no outline).
+vec3 capsule_form_factor(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
   LtcOutline o;
-  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0f;
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return vec3(0.0f);
   LtcPolygon poly = ltc_polygon(n, v, entry);
   vec3 previous = ltc_outline_vertex(o, kLtcOutlineVertices - 1);
   for (int j = 0; j < kLtcOutlineVertices; ++j) {
@@ -188,12 +209,13 @@ float capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 e
     ltc_add_edge(poly, previous, next);
     previous = next;
   }
-  return ltc_finish(poly);
+  ltc_finish(poly);
+  return form_factor(poly);
 }
 
 }  // namespace
 
-bool ltc_cone_integral(vec3 c, float radius, glm::mat3 to_cosine, float& integral) {
+bool ltc_cone_form_factor(vec3 c, float radius, glm::mat3 to_cosine, vec3& form_factor) {
   // The sphere's cone of directions is the cone over the disk across the ray to its centre, of
   // tangent r / sqrt(d^2 - r^2); M^-1 carries the disk to an ellipse and the cone to an
   // elliptical cone (scaled so that the centre's image is a unit vector).
@@ -222,7 +244,7 @@ bool ltc_cone_integral(vec3 c, float radius, glm::mat3 to_cosine, float& integra
              c12 = glm::cross(shifted[1], shifted[2]);
   const float l01 = glm::dot(c01, c01), l02 = glm::dot(c02, c02), l12 = glm::dot(c12, c12);
   const vec3 axis = l01 > l02 ? (l01 > l12 ? c01 : c12) : (l02 > l12 ? c02 : c12);
-  const float cos_w = glm::dot(axis, axis0) < 0.0f ? -glm::normalize(axis).z : glm::normalize(axis).z;
+  const vec3 axis_dir = glm::normalize(glm::dot(axis, axis0) < 0.0f ? -axis : axis);
   // The elliptical cone's vector form factor F lies along its axis, of length
   // ab / sqrt((1 + a^2)(1 + b^2)) = sqrt(p1 p2 / ((p1 - p3)(p2 - p3))), where
   // p1 p2 p3 = det P = -det(A)^2 and the product below is the characteristic polynomial's slope
@@ -231,12 +253,33 @@ bool ltc_cone_integral(vec3 c, float radius, glm::mat3 to_cosine, float& integra
   const float det_a = glm::dot(v1, glm::cross(v2, axis0));
   const float minors = pm[0][0] * pm[1][1] + pm[0][0] * pm[2][2] + pm[1][1] * pm[2][2] - off;
   const float slope = 3.0f * p3 * p3 - 6.0f * mean * p3 + minors;
-  integral = clamp01(std::fabs(det_a) / std::sqrt(std::max(-p3 * slope, 1e-30f))) * cos_w;
+  form_factor = clamp01(std::fabs(det_a) / std::sqrt(std::max(-p3 * slope, 1e-30f))) * axis_dir;
   // The cone misses the plane z = 0 where P^-1's block on that plane is positive definite, i.e.
   // (det P < 0) the same block of P's adjugate is negative definite.
   const float adj00 = pm[1][1] * pm[2][2] - pm[1][2] * pm[1][2], adj11 = pm[0][0] * pm[2][2] - pm[0][2] * pm[0][2];
   const float adj01 = pm[0][2] * pm[1][2] - pm[0][1] * pm[2][2];
-  return adj00 < 0.0f && adj00 * adj11 > adj01 * adj01 && cos_w > 0.0f;
+  return adj00 < 0.0f && adj00 * adj11 > adj01 * adj01 && axis_dir.z > 0.0f;
+}
+
+float ltc_shape_corrected(float integral, vec3 form_factor, const LtcLobe& lobe, vec3 n, vec3 v) {
+  // In the frame of n and v: F's direction o carried back by M (up to a positive scale, M^-1's
+  // adjugate times the sign of its determinant), the LTC's density there
+  // (o.z / pi) |det M^-1| |M o|^3 with M o = m / det, and the lobe's f (n.l) / E.
+  const glm::vec4 e = lobe.entry;
+  const float det = e.x * e.w - e.y * e.z;
+  const vec3 o = glm::normalize(form_factor);
+  const vec3 m = vec3(e.w * o.x - e.y * o.z, det * o.y, e.x * o.z - e.z * o.x);
+  const float m_len = glm::length(m);
+  const vec3 l = m * ((det < 0.0f ? -1.0f : 1.0f) / m_len);
+  const float ltc = o.z / kAreaLightPi * std::pow(m_len, 3.0f) / (det * det);
+  const vec3 frame_v = glm::transpose(ltc_frame(n, v)) * v;
+  const float n_dot_v = std::max(frame_v.z, 1e-4f);
+  const vec3 h = glm::normalize(l + frame_v);
+  const float lobe_value =
+      l.z > 0.0f ? float(ggx_specular_brdf(n_dot_v, l.z, h.z, lobe.alpha)) * l.z / lobe.albedo : 0.0f;
+  const float ratio = ltc > 0.0f && std::isfinite(lobe_value / ltc) ? lobe_value / ltc : 1.0f;
+  const float weight = std::exp(-5.0f * glm::length(form_factor));
+  return integral * (weight * ratio + (1.0f - weight));
 }
 
 namespace {
@@ -248,39 +291,41 @@ namespace {
 // surface's horizon whose elliptical cone is wholly above the cosine's is that cone, exactly;
 // anything else the outline polygon, clipped. (The round cone of the same vector form factor
 // clipped to the cosine's horizon, Heitz and Hill's approximation, read up to 11% high there.)
-float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, glm::vec4 entry) {
+float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, const LtcLobe& lobe) {
   const vec3 axis = b - a;
   const float len = glm::length(axis);
   const vec3 dir = len > 0.0f ? axis / len : vec3(0.0f);
   const bool end_on = !(len > 0.0f) || !(glm::length(a - dir * glm::dot(a, dir)) > radius);
   const vec3 near = glm::dot(a, a) < glm::dot(b, b) ? a : b;
   const bool cone = end_on && radius > 0.0f && glm::dot(glm::normalize(n), near) >= radius;
-  float integral = 0.0f;
-  const bool exact = cone && ltc_cone_integral(near, radius, ltc_to_cosine(n, v, entry), integral);
-  return exact ? integral : capsule_integral(end_on ? near : a, end_on ? near : b, radius, n, v, entry);
+  vec3 f(0.0f);
+  const bool exact = cone && ltc_cone_form_factor(near, radius, ltc_to_cosine(n, v, lobe.entry), f);
+  if (!exact) f = capsule_form_factor(end_on ? near : a, end_on ? near : b, radius, n, v, lobe.entry);
+  return f.z > 0.0f ? ltc_shape_corrected(f.z, f, lobe, n, v) : 0.0f;
 }
 
 }  // namespace
 
-float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
+float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, const LtcLobe& lobe) {
   const vec3 c = light.center - p;
-  return specular_result(light.radiance, capsule_specular(c, c, light.radius, n, v, entry));
+  return specular_result(light.radiance, capsule_specular(c, c, light.radius, n, v, lobe));
 }
 
-float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
-  return specular_result(light.radiance, capsule_specular(light.end0 - p, light.end1 - p, light.radius, n, v, entry));
+float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, const LtcLobe& lobe) {
+  return specular_result(light.radiance, capsule_specular(light.end0 - p, light.end1 - p, light.radius, n, v, lobe));
 }
 
-float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, glm::vec4 entry) {
+float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, const LtcLobe& lobe) {
   const vec3 c = light.center - p;
   const vec3 normal = glm::cross(light.half_x, light.half_y);
   // A one-sided light shines on points in front of it only; its plane holds none.
   if (!light.two_sided && !(glm::dot(c, normal) < 0.0f)) return 0.0f;
-  LtcPolygon poly = ltc_polygon(n, v, entry);
+  LtcPolygon poly = ltc_polygon(n, v, lobe.entry);
   const vec3 corners[4] = {c - light.half_x - light.half_y, c + light.half_x - light.half_y,
                            c + light.half_x + light.half_y, c - light.half_x + light.half_y};
   for (int i = 0; i < 4; ++i) ltc_add_edge(poly, corners[i], corners[(i + 1) % 4]);
-  return specular_result(light.radiance, ltc_finish(poly));
+  const float integral = ltc_finish(poly);
+  return specular_result(light.radiance, integral > 0.0f ? ltc_shape_corrected(integral, form_factor(poly), lobe, n, v) : 0.0f);
 }
 
 }  // namespace lg

@@ -12,7 +12,7 @@ struct Case {
   vec4 c;  // rectangle: half_y
   vec4 p;  // w: roughness
   vec4 n;  // w: 0 sphere, 1 tube, 2 rectangle
-  vec4 v;
+  vec4 v;  // w: the lobe's directional albedo A + B (Fresnel 1)
 };
 
 layout(std430, binding = 0) readonly buffer Cases { Case cases[]; };
@@ -24,10 +24,10 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= cases.length()) return;
   Case k = cases[i];
-  vec4 entry = ltc_lookup(max(dot(k.n.xyz, k.v.xyz), 1e-4), k.p.w);
+  LtcLobe lobe = LtcLobe(ltc_lookup(max(dot(k.n.xyz, k.v.xyz), 1e-4), k.p.w), max(k.p.w * k.p.w, 1e-3), k.v.w);
   float e = 0.0;
-  if (k.n.w == 0.0) e = ltc_sphere_specular(k.a.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, entry);
-  else if (k.n.w == 1.0) e = ltc_tube_specular(k.a.xyz, k.b.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, entry);
-  else e = ltc_rect_specular(k.a.xyz, k.b.xyz, k.c.xyz, k.a.w > 0.0, k.p.xyz, k.n.xyz, k.v.xyz, entry);
+  if (k.n.w == 0.0) e = ltc_sphere_specular(k.a.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, lobe);
+  else if (k.n.w == 1.0) e = ltc_tube_specular(k.a.xyz, k.b.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, lobe);
+  else e = ltc_rect_specular(k.a.xyz, k.b.xyz, k.c.xyz, k.a.w > 0.0, k.p.xyz, k.n.xyz, k.v.xyz, lobe);
   integral[i] = e;
 }

@@ -1,10 +1,20 @@
 // Area-light specular by linearly transformed cosines: the GLSL twin of area_light_ltc.cpp (which
 // states the method). Each returns I, the fraction of the GGX lobe's energy the light covers (the
-// caller multiplies by the radiance); `entry` is ltc_lookup(n.v, roughness) (ltc_table.glsl).
+// caller multiplies by the radiance), corrected for the LTC's shape at the light
+// (ltc_shape_corrected).
 #ifndef LG_AREA_LIGHT_LTC_GLSL
 #define LG_AREA_LIGHT_LTC_GLSL
 
+#include "nodes/common/shaders/brdf.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_math.glsl"
+
+// As area_light_ltc.h's: ltc_lookup(n.v, roughness) (ltc_table.glsl), alpha and the lobe's
+// directional albedo A + B with Fresnel 1.
+struct LtcLobe {
+  vec4 entry;
+  float alpha;
+  float albedo;
+};
 
 const int LG_LTC_ARC_SEGMENTS = 4;
 const int LG_LTC_OUTLINE_VERTICES = 2 * (LG_LTC_ARC_SEGMENTS + 1);
@@ -17,21 +27,24 @@ float ltc_specular_result(float integral) {
   return clamp(finite_or_zero(integral), 0.0, 1.0);
 }
 
-mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
+mat3 ltc_frame(vec3 n, vec3 v) {
   n = normalize(n);
   vec3 t1 = v - n * dot(n, v);
   float len = length(t1);
   t1 = len > 1e-6 ? t1 / len : ltc_any_perpendicular(n);
-  vec3 t2 = cross(n, t1);
-  mat3 m_inv = mat3(vec3(e.x, 0.0, e.z), vec3(0.0, 1.0, 0.0), vec3(e.y, 0.0, e.w));
-  return m_inv * transpose(mat3(t1, t2, n));
+  return mat3(t1, cross(n, t1), n);
 }
 
-float ltc_edge_term(vec3 a, vec3 b) {
+mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
+  mat3 m_inv = mat3(vec3(e.x, 0.0, e.z), vec3(0.0, 1.0, 0.0), vec3(e.y, 0.0, e.w));
+  return m_inv * transpose(ltc_frame(n, v));
+}
+
+vec3 ltc_edge_term(vec3 a, vec3 b) {
   vec3 e0 = normalize(a), e1 = normalize(b);
   vec3 c = cross(e0, e1);
   float s = length(c);
-  return s > 0.0 ? c.z * atan(s, dot(e0, e1)) / s : 0.0;
+  return s > 0.0 ? c * atan(s, dot(e0, e1)) / s : vec3(0.0);
 }
 
 // Where edge a-b crosses the plane through the origin at signed distances da, db (a's, b's);
@@ -42,7 +55,7 @@ vec3 ltc_crossing(vec3 a, vec3 b, float da, float db) {
 }
 
 struct LtcCosineClip {
-  float sum;
+  vec3 sum;  // 2 pi F
   vec3 exit_;
   vec3 entry;
   bool exited;
@@ -60,7 +73,7 @@ struct LtcPolygon {
 };
 
 LtcPolygon ltc_polygon(vec3 n, vec3 v, vec4 entry) {
-  LtcCosineClip c = LtcCosineClip(0.0, vec3(0.0), vec3(0.0), false, false);
+  LtcCosineClip c = LtcCosineClip(vec3(0.0), vec3(0.0), vec3(0.0), false, false);
   return LtcPolygon(normalize(n), ltc_to_cosine(n, v, entry), vec3(0.0), vec3(0.0), false, false, c);
 }
 
@@ -78,8 +91,8 @@ void ltc_add_cosine_edge(inout LtcCosineClip c, vec3 a, vec3 b) {
     c.entry = x;
     c.entered = true;
   }
-  float term = ltc_edge_term(a_in ? a : x, b_in ? b : x);
-  c.sum += a_in || b_in ? term : 0.0;
+  vec3 term = ltc_edge_term(a_in ? a : x, b_in ? b : x);
+  c.sum += a_in || b_in ? term : vec3(0.0);
 }
 
 void ltc_add_edge(inout LtcPolygon poly, vec3 a, vec3 b) {
@@ -103,9 +116,13 @@ float ltc_finish(inout LtcPolygon poly) {
   bool cut = poly.exited && poly.entered;
   ltc_add_cosine_edge(poly.cosine, poly.to_cosine * poly.exit_, poly.to_cosine * (cut ? poly.entry : poly.exit_));
   bool cosine_cut = poly.cosine.exited && poly.cosine.entered;
-  float chord = ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
-  poly.cosine.sum += cosine_cut ? chord : 0.0;
-  return abs(poly.cosine.sum) / (2.0 * LG_PI);
+  vec3 chord = ltc_edge_term(poly.cosine.exit_, poly.cosine.entry);
+  poly.cosine.sum += cosine_cut ? chord : vec3(0.0);
+  return abs(poly.cosine.sum.z) / (2.0 * LG_PI);
+}
+
+vec3 ltc_form_factor(LtcPolygon poly) {
+  return poly.cosine.sum * ((poly.cosine.sum.z < 0.0 ? -1.0 : 1.0) / (2.0 * LG_PI));
 }
 
 struct LtcOutline {
@@ -208,9 +225,9 @@ vec3 ltc_outline_point(LtcOutline o, bool end1, vec2 cs, float radius) {
 // lavapipe runs both sides of round_'s selects, that was 20 sines and cosines a light). A round
 // outline starts at pi / 2 and steps 2 pi / N; a capsule's end 0 runs from pi - span0 to
 // pi + span0, end 1's from -span1 to span1, each in LG_LTC_ARC_SEGMENTS steps.
-float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
+vec3 ltc_capsule_form_factor(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
   LtcOutline o;
-  if (!ltc_capsule_outline(a, b, radius, n, o)) return 0.0;
+  if (!ltc_capsule_outline(a, b, radius, n, o)) return vec3(0.0);
   LtcPolygon poly = ltc_polygon(n, v, entry);
   const float round_step = 2.0 * LG_PI / float(LG_LTC_OUTLINE_VERTICES);
   float step0 = 2.0 * o.span0 / float(LG_LTC_ARC_SEGMENTS), step1 = 2.0 * o.span1 / float(LG_LTC_ARC_SEGMENTS);
@@ -235,13 +252,14 @@ float ltc_capsule_integral(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 en
     step_ = to_end1 ? end1_step : step_;
     cs = to_end1 ? end1_start : vec2(cs.x * step_.x - cs.y * step_.y, cs.y * step_.x + cs.x * step_.y);
   } while (++j < LG_LTC_OUTLINE_VERTICES);
-  return ltc_finish(poly);
+  ltc_finish(poly);
+  return ltc_form_factor(poly);
 }
 
-// The elliptical cone M^-1 makes of a sphere's cone, as area_light_ltc.cpp's ltc_cone_integral
+// The elliptical cone M^-1 makes of a sphere's cone, as area_light_ltc.cpp's ltc_cone_form_factor
 // (which derives it): its axis and vector form factor F from the one negative eigenvalue of
-// P = A J A^T; F.z, and true where the cone is wholly above the cosine's horizon (exact there).
-bool ltc_cone_integral(vec3 c, float radius, mat3 to_cosine, out float integral) {
+// P = A J A^T; F, and true where the cone is wholly above the cosine's horizon (exact there).
+bool ltc_cone_form_factor(vec3 c, float radius, mat3 to_cosine, out vec3 form_factor) {
   float d2 = dot(c, c);
   float tan_a = radius / sqrt(max(d2 - radius * radius, 1e-6 * d2));
   vec3 w = c / sqrt(d2);
@@ -260,52 +278,76 @@ bool ltc_cone_integral(vec3 c, float radius, mat3 to_cosine, out float integral)
   vec3 c01 = cross(shifted[0], shifted[1]), c02 = cross(shifted[0], shifted[2]), c12 = cross(shifted[1], shifted[2]);
   float l01 = dot(c01, c01), l02 = dot(c02, c02), l12 = dot(c12, c12);
   vec3 axis = l01 > l02 ? (l01 > l12 ? c01 : c12) : (l02 > l12 ? c02 : c12);
-  float cos_w = dot(axis, axis0) < 0.0 ? -normalize(axis).z : normalize(axis).z;
+  vec3 axis_dir = normalize(dot(axis, axis0) < 0.0 ? -axis : axis);
   float det_a = dot(v1, cross(v2, axis0));
   float minors = pm[0][0] * pm[1][1] + pm[0][0] * pm[2][2] + pm[1][1] * pm[2][2] - off;
   float slope = 3.0 * p3 * p3 - 6.0 * mean * p3 + minors;
-  integral = clamp(abs(det_a) / sqrt(max(-p3 * slope, 1e-30)), 0.0, 1.0) * cos_w;
+  form_factor = clamp(abs(det_a) / sqrt(max(-p3 * slope, 1e-30)), 0.0, 1.0) * axis_dir;
   float adj00 = pm[1][1] * pm[2][2] - pm[1][2] * pm[1][2], adj11 = pm[0][0] * pm[2][2] - pm[0][2] * pm[0][2];
   float adj01 = pm[0][2] * pm[1][2] - pm[0][1] * pm[2][2];
-  return adj00 < 0.0 && adj00 * adj11 > adj01 * adj01 && cos_w > 0.0;
+  return adj00 < 0.0 && adj00 * adj11 > adj01 * adj01 && axis_dir.z > 0.0;
+}
+
+// I scaled by the exact lobe over the LTC at F's direction, weighed by exp(-5 |F|), as
+// area_light_ltc.cpp's ltc_shape_corrected (which states why): in the frame of n and v, F's
+// direction o carried back by M (M^-1's adjugate m, up to the sign of its determinant), the
+// LTC's density there and the lobe's f (n.l) / E.
+float ltc_shape_corrected(float integral, vec3 form_factor, LtcLobe lobe, vec3 n, vec3 v) {
+  vec4 e = lobe.entry;
+  float det = e.x * e.w - e.y * e.z;
+  vec3 o = normalize(form_factor);
+  vec3 m = vec3(e.w * o.x - e.y * o.z, det * o.y, e.x * o.z - e.z * o.x);
+  float m_len = length(m);
+  vec3 l = m * ((det < 0.0 ? -1.0 : 1.0) / m_len);
+  float ltc = o.z / LG_PI * m_len * m_len * m_len / (det * det);
+  vec3 frame_v = transpose(ltc_frame(n, v)) * v;
+  float n_dot_v = max(frame_v.z, 1e-4);
+  vec3 h = normalize(l + frame_v);
+  float lobe_value = l.z > 0.0 ? ggx_distribution(h.z, lobe.alpha) * smith_visibility(n_dot_v, l.z, lobe.alpha) * l.z / lobe.albedo : 0.0;
+  float ratio = lobe_value / ltc;
+  ratio = ltc > 0.0 && !isinf(ratio) && !isnan(ratio) ? ratio : 1.0;
+  float weight = exp(-5.0 * length(form_factor));
+  return integral * (weight * ratio + (1.0 - weight));
 }
 
 // A capsule (a = b for a sphere) as area_light_ltc.cpp's capsule_specular: seen from within its
 // cylinder's reach the nearer end's sphere; a sphere wholly above the surface's horizon whose
 // elliptical cone is wholly above the cosine's that cone; anything else the outline polygon.
-float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, vec4 entry) {
+float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, LtcLobe lobe) {
   vec3 axis = b - a;
   float len = length(axis);
   vec3 dir = len > 0.0 ? axis / len : vec3(0.0);
   bool end_on = !(len > 0.0) || !(length(a - dir * dot(a, dir)) > radius);
   vec3 near_ = dot(a, a) < dot(b, b) ? a : b;
   bool cone = end_on && radius > 0.0 && dot(normalize(n), near_) >= radius;
-  float integral = 0.0;
+  vec3 f = vec3(0.0);
   bool exact = false;
-  if (cone) exact = ltc_cone_integral(near_, radius, ltc_to_cosine(n, v, entry), integral);
-  return exact ? integral : ltc_capsule_integral(end_on ? near_ : a, end_on ? near_ : b, radius, n, v, entry);
+  if (cone) exact = ltc_cone_form_factor(near_, radius, ltc_to_cosine(n, v, lobe.entry), f);
+  if (!exact) f = ltc_capsule_form_factor(end_on ? near_ : a, end_on ? near_ : b, radius, n, v, lobe.entry);
+  return f.z > 0.0 ? ltc_shape_corrected(f.z, f, lobe, n, v) : 0.0;
 }
 
-float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
+float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
   vec3 c = center - p;
-  return ltc_specular_result(ltc_capsule_specular(c, c, radius, n, v, entry));
+  return ltc_specular_result(ltc_capsule_specular(c, c, radius, n, v, lobe));
 }
 
-float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, vec4 entry) {
-  return ltc_specular_result(ltc_capsule_specular(end0 - p, end1 - p, radius, n, v, entry));
+float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
+  return ltc_specular_result(ltc_capsule_specular(end0 - p, end1 - p, radius, n, v, lobe));
 }
 
-float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, vec4 entry) {
+float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
   vec3 c = center - p;
   vec3 normal = cross(hx, hy);
   if (!two_sided && !(dot(c, normal) < 0.0)) return 0.0;
-  LtcPolygon poly = ltc_polygon(n, v, entry);
+  LtcPolygon poly = ltc_polygon(n, v, lobe.entry);
   vec3 c0 = c - hx - hy, c1 = c + hx - hy, c2 = c + hx + hy, c3 = c - hx + hy;
   ltc_add_edge(poly, c0, c1);
   ltc_add_edge(poly, c1, c2);
   ltc_add_edge(poly, c2, c3);
   ltc_add_edge(poly, c3, c0);
-  return ltc_specular_result(ltc_finish(poly));
+  float integral = ltc_finish(poly);
+  return ltc_specular_result(integral > 0.0 ? ltc_shape_corrected(integral, ltc_form_factor(poly), lobe, n, v) : 0.0);
 }
 
 #endif

@@ -60,7 +60,7 @@ vec3 area_radiance(Surface s) {
   vec3 diffuse_brdf = s.diffuse_color / LG_PI;
   vec3 r = reflection_dir(s);
   // alpha = roughness^2 above its floor, where the table's entries are alike.
-  vec4 ltc = ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha));
+  LtcLobe ltc = LtcLobe(ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha)), s.alpha, s.lobe_albedo);
   vec3 added = vec3(0.0);
   if (area_has_spheres && counts.z > 0u) {
     uint i = 0u;
