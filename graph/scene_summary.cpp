@@ -12,7 +12,7 @@ namespace {
 constexpr std::array<std::string_view, static_cast<size_t>(SceneFeature::count)> feature_names = {
     "directional_lights", "point_lights",          "spot_lights",
     "sphere_lights",      "tube_lights",           "rectangle_lights",
-    "area_lights",        "shadow_casting_lights", "local_shadow_casting_lights",
+    "area_lights",        "lights",                "shadow_casting_lights", "local_shadow_casting_lights",
     "environment_light",  "irradiance_volumes",    "reflection_probes",
     "glossy_materials",   "thin_lens_camera",      "baked_occlusion",
     "blend_materials",    "emissive_materials",    "planar_reflectors"};
@@ -104,6 +104,8 @@ std::string scene_lacks_reason(SceneFeature f) {
       return "the scene has no rectangle lights";
     case SceneFeature::area_lights:
       return "the scene has no area lights";
+    case SceneFeature::lights:
+      return "the scene has no lights";
     case SceneFeature::shadow_casting_lights:
       return "no light in the scene casts shadows";
     case SceneFeature::local_shadow_casting_lights:
@@ -148,6 +150,8 @@ bool SceneSummary::has(SceneFeature f) const {
       return rectangle_lights > 0;
     case SceneFeature::area_lights:
       return sphere_lights + tube_lights + rectangle_lights > 0;
+    case SceneFeature::lights:
+      return directional_lights + point_lights + spot_lights + sphere_lights + tube_lights + rectangle_lights > 0;
     case SceneFeature::shadow_casting_lights:
       return shadows && directional_lights + point_lights > 0;
     case SceneFeature::local_shadow_casting_lights:

@@ -21,6 +21,7 @@ enum class SceneFeature : uint8_t {
   tube_lights,
   rectangle_lights,
   area_lights,  // any of sphere, tube, rectangle
+  lights,       // any light at all: directional, point, spot or area
   shadow_casting_lights,
   local_shadow_casting_lights,  // a point, spot, sphere, tube or rectangle light that casts shadows
   environment_light,

@@ -386,12 +386,12 @@ class SchemaReader {
     if (const JsonValue* lacks = when.find("scene_lacks")) {
       auto f = lacks->is_string() ? parse_scene_feature(lacks->as_string()) : std::nullopt;
       if (!f) d_.error(lacks->pos(), wp, "unknown scene feature");
-      else c = {Condition::Kind::scene_lacks, *f, -1, {}};
+      else c = {Condition::Kind::scene_lacks, *f, -1, {}, {}};
     } else if (const JsonValue* param = when.find("param")) {
       c.param = param->is_string() ? s_.find_param(param->as_string()) : -1;
       if (c.param < 0) d_.error(param->pos(), wp, "no such param");
-      if (const JsonValue* eq = when.find("equals")) c = {Condition::Kind::param_equals, SceneFeature::count, c.param, *eq};
-      else if (const JsonValue* le = when.find("at_most")) c = {Condition::Kind::param_at_most, SceneFeature::count, c.param, *le};
+      if (const JsonValue* eq = when.find("equals")) c = {Condition::Kind::param_equals, SceneFeature::count, c.param, *eq, {}};
+      else if (const JsonValue* le = when.find("at_most")) c = {Condition::Kind::param_at_most, SceneFeature::count, c.param, *le, {}};
       else d_.error(when.pos(), wp, "expected \"equals\" or \"at_most\"");
     } else {
       d_.error(when.pos(), wp, "expected {\"scene_lacks\": FEATURE} or {\"param\": NAME, \"equals\"|\"at_most\": VALUE}");

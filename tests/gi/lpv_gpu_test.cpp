@@ -24,7 +24,7 @@
 #include "runtime/scene/mesh_generators.h"
 #include "tests/gi/covered_irradiance.h"
 #include "tests/gi/degenerate_world.h"
-#include "tests/gi/main_light_bypass.h"
+#include "tests/gi/gi_bypass.h"
 #include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
 #include "tests/gi/prt_comparison.h"
@@ -197,11 +197,17 @@ TEST(Lpv, FollowsTheGridsShapeWhenItsCellCountStaysTheSame) {
   expect_no_validation_messages(fresh->context());
 }
 
-// examples/gi-lpv.json on a scene without a directional light (the two rooms have lamps only):
-// gi.lpv is bypassed, the plan says why, none of its passes run, and lighting.ibl stays (its
+// examples/gi-lpv.json on a scene without a directional light (the two rooms have lamps only,
+// which gi.lpv does not carry): with sh linked it runs for the sky alone; without, it is
+// bypassed, the plan says why, none of its passes run, and lighting.ibl stays (its
 // irradiance_volume input unlinked).
-TEST(Lpv, DroppedWithoutADirectionalLight) {
-  expect_dropped_without_a_directional_light(LUMAGRAPH_SOURCE_DIR "/examples/gi-lpv.json", "lpv");
+TEST(Lpv, RunsWithoutADirectionalLightOnlyForTheSky) {
+  const std::string example = LUMAGRAPH_SOURCE_DIR "/examples/gi-lpv.json";
+  SceneSummary lamps = scene_without_lights();
+  lamps.point_lights = 2;
+  expect_gi_node(example, "lpv", lamps, true, "");
+  expect_gi_node(example, "lpv", lamps, false, "the scene has no directional lights");
+  expect_gi_node(example, "lpv", default_scene_summary(), false, "");
 }
 
 }  // namespace

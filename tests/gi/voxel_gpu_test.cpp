@@ -39,7 +39,7 @@
 #include "tests/gi/camera_and_sun.h"
 #include "tests/gi/covered_irradiance.h"
 #include "tests/gi/degenerate_world.h"
-#include "tests/gi/main_light_bypass.h"
+#include "tests/gi/gi_bypass.h"
 #include "tests/gi/sky_irradiance.h"
 #include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
@@ -397,19 +397,19 @@ TEST(Voxel, SkyLeavesTheInsideOfAClosedRoomDark) {
   expect_no_validation_messages(renderer->context());
 }
 
-// A white 4 m floor alone, seen from above, its sun at zero: what lights it is the test's.
-World dark_white_floor() {
+// A white 4 m floor alone, seen from above, with no light: what lights it is the test's.
+World white_floor() {
   World world;
   PbrMaterial white;
   white.base_color = glm::vec4(glm::vec3(kWhite), 1.0f);
   Entity floor = world.create("floor");
   world.add(floor, MeshRenderer{world.add_mesh(make_quad(4.0f, 4.0f)), world.add_material(white)});
   world.add(floor, Transform{});
-  add_camera_and_sun(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f}, kSunFromTheEast, 0.0f);
+  add_camera(world, {0.0f, 3.0f, 3.5f}, {0.0f, -0.8f, -1.0f});
   return world;
 }
 
-// A white 4 m floor alone under the sky (the sun at zero): every cone from it leaves the grid at
+// A white 4 m floor alone under the sky (no light; sh linked keeps the node): every cone from it leaves the grid at
 // once, so it gathers the sky's radiance (the SH deconvolved by the cosine kernel) over the six
 // cones, and must give the sky's irradiance at the floor's normal, E_sky(up), lighting.ibl's
 // ambient there. The six-cone quadrature is exact for the SH's band 0 and gathers band 1 at
@@ -418,7 +418,7 @@ World dark_white_floor() {
 // 6.25% of band 1's share plus 37.5% of band 2's plus 2% (half floats, the floor voxel's sky
 // visibility, which may cap the cones' sky: voxel_cones.comp). env.sky's SH: measured 0.98.
 TEST(Voxel, AConeLeavingTheGridGathersTheSky) {
-  World world = dark_white_floor();
+  World world = white_floor();
   world.add(world.create("environment"), EnvironmentLight{});
   auto renderer = make_renderer(voxel_sky_graph());
   renderer->render(world, kFrame);
@@ -437,13 +437,14 @@ TEST(Voxel, AConeLeavingTheGridGathersTheSky) {
   expect_no_validation_messages(renderer->context());
 }
 
-// A point light of 5 W/sr 1.2 m above a white 4 m floor (the sun at zero): each floor voxel
+// A point light of 5 W/sr 1.2 m above a white 4 m floor, the world's only light (no directional
+// light: the node runs for any light, and its shadow pass only clears its map): each floor voxel
 // holds what its surface reflects, L = 0.8 E / pi with E = I cos / d^2 at the voxel's centre
 // (on the floor: the flat grid is one voxel high, centred on it), read from the volume output.
 // Within 2%: the voxel's d^2 gets a quarter voxel squared (0.4% at 1.2 m, voxel_local_lights.comp),
 // the half floats 0.1%, the albedo's fixed point 0.1%; nothing occludes the light.
 TEST(Voxel, APointLightsVoxelsHoldItsIrradiance) {
-  World world = dark_white_floor();
+  World world = white_floor();
   const glm::dvec3 light(0.3, 1.2, -0.2);
   constexpr double kIntensity = 5.0;
   Entity lamp = world.create("lamp");
@@ -701,10 +702,17 @@ TEST(Voxel, StaysFiniteOnDegenerateInput) {
   expect_no_validation_messages(renderer->context());
 }
 
-// examples/gi-voxel.json on a scene without a directional light: gi.voxel is bypassed, the plan
-// says why, none of its passes run, and lighting.ibl stays (its irradiance_volume input unlinked).
-TEST(Voxel, DroppedWithoutADirectionalLight) {
-  expect_dropped_without_a_directional_light(LUMAGRAPH_SOURCE_DIR "/examples/gi-voxel.json", "voxel");
+// examples/gi-voxel.json: gi.voxel bounces any light and, with sh linked, the sky, so it runs
+// on a scene with point lights alone and on one with no light but a linked sky, and is bypassed
+// (the plan says why, none of its passes run, lighting.ibl stays) only with neither.
+TEST(Voxel, RunsForAnyLightOrTheSkyAndIsDroppedWithNeither) {
+  const std::string example = LUMAGRAPH_SOURCE_DIR "/examples/gi-voxel.json";
+  SceneSummary lamps = scene_without_lights();
+  lamps.point_lights = 2;
+  expect_gi_node(example, "voxel", lamps, false, "");
+  expect_gi_node(example, "voxel", scene_without_lights(), true, "");
+  expect_gi_node(example, "voxel", scene_without_lights(), false, "the scene has no lights");
+  expect_gi_node(example, "voxel", default_scene_summary(), false, "");
 }
 
 }  // namespace
