@@ -6,6 +6,7 @@
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -376,17 +377,29 @@ void InspectorWidget::set_volume_slice(int axis, int index) {
   vtk_->widget->update();
 }
 
-bool InspectorWidget::open_dumped_volume(const QString& path, VolumeChannel channel) {
-  std::unique_ptr<DumpedVolume> volume;
+std::unique_ptr<DumpedVolume> InspectorWidget::read_dumped_volume(const std::string& path) {
   try {
-    volume = std::make_unique<DumpedVolume>(load_dumped_volume(path.toStdString()));
+    return std::make_unique<DumpedVolume>(load_dumped_volume(path));
   } catch (const std::runtime_error& e) {
     show_error(QString::fromStdString(e.what()));
-    return false;
+    return nullptr;
   }
+}
+
+bool InspectorWidget::open_dumped_volume(const QString& path, VolumeChannel channel) {
+  std::unique_ptr<DumpedVolume> volume = read_dumped_volume(path.toStdString());
+  if (!volume) return false;
+  show_dumped_volume(std::move(volume), channel, std::nullopt);
+  return true;
+}
+
+void InspectorWidget::show_dumped_volume(std::unique_ptr<DumpedVolume> volume, VolumeChannel channel,
+                                         std::optional<std::array<int, 3>> slice) {
   clear_view();
   dumped_ = std::move(volume);
   dumped_view_ = std::make_unique<DumpedVolumeView>(vtk_->renderer, *dumped_, channel);
+  if (slice)
+    for (int axis = 0; axis < 3; ++axis) dumped_view_->set_slice(axis, (*slice)[axis]);
   const DumpedVolumeState state = dumped_view_->state();
   for (int axis = 0; axis < 3; ++axis) {
     const QSignalBlocker quiet(slice_sliders_[axis]);
@@ -407,7 +420,7 @@ bool InspectorWidget::open_dumped_volume(const QString& path, VolumeChannel chan
   slice_caption_->show();
   summary_->setText(tr("%1 — dumped 3D texture, %2 x %3 x %4 texels, mip %5 of %6 · %7 from %8 to %9 · %10 texels lit, "
                        "%11 with alpha 0 on the slices (grey)")
-                        .arg(path)
+                        .arg(QString::fromStdString(dumped_->path))
                         .arg(state.dims[0])
                         .arg(state.dims[1])
                         .arg(state.dims[2])
@@ -420,7 +433,6 @@ bool InspectorWidget::open_dumped_volume(const QString& path, VolumeChannel chan
                         .arg(state.masked_points));
   vtk_->window->Render();
   vtk_->widget->update();
-  return true;
 }
 
 std::optional<DumpedVolumeState> InspectorWidget::dumped_volume_state() const {
@@ -431,18 +443,20 @@ std::optional<DumpedVolumeState> InspectorWidget::dumped_volume_state() const {
 void InspectorWidget::set_dumped_volume_channel(VolumeChannel channel) {
   if (!dumped_) return;
   const std::array<int, 3> slice = dumped_view_->state().slice;
-  if (!open_dumped_volume(QString::fromStdString(dumped_->path), channel)) return;
-  for (int axis = 0; axis < 3; ++axis) set_volume_slice(axis, slice[axis]);
+  show_dumped_volume(std::move(dumped_), channel, slice);
 }
 
 void InspectorWidget::set_dumped_volume_mip(int mip) {
   if (!dumped_ || mip < 0 || size_t(mip) >= dumped_->mips.size()) return;
   const DumpedVolumeState before = dumped_view_->state();
-  if (!open_dumped_volume(QString::fromStdString(dumped_->mips[size_t(mip)]), before.channel)) return;
+  std::unique_ptr<DumpedVolume> volume = read_dumped_volume(dumped_->mips[size_t(mip)]);
+  if (!volume) return;
   // The same place in the coarser or finer grid.
-  const DumpedVolumeState now = dumped_view_->state();
+  std::array<int, 3> dims, slice;
+  volume->image->GetDimensions(dims.data());
   for (int axis = 0; axis < 3; ++axis)
-    set_volume_slice(axis, int(std::lround(double(before.slice[axis]) * now.dims[axis] / before.dims[axis])));
+    slice[axis] = int(std::lround(double(before.slice[axis]) * dims[axis] / before.dims[axis]));
+  show_dumped_volume(std::move(volume), before.channel, slice);
 }
 
 bool InspectorWidget::open_vertex_bake(const QString& path, const QString& mesh_path) {

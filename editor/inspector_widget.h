@@ -13,6 +13,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 
 class QComboBox;
 class QLabel;
@@ -67,7 +68,8 @@ class InspectorWidget : public QWidget {
   bool open_dumped_volume(const QString& path, VolumeChannel channel);
   std::optional<DumpedVolumeState> dumped_volume_state() const;
   // Shows another channel or mip of the shown dumped volume (the choosers do it); the slices
-  // stay where they are (clamped to a coarser mip's grid).
+  // stay where they are (clamped to a coarser mip's grid). A channel comes from the volume in
+  // memory: the file is not read again.
   void set_dumped_volume_channel(VolumeChannel channel);
   void set_dumped_volume_mip(int mip);
 
@@ -125,6 +127,12 @@ class InspectorWidget : public QWidget {
  private:
   struct Vtk;
   void clear_view();
+  // The dumped volume at `path`; null, the view saying why, when it cannot be read.
+  std::unique_ptr<DumpedVolume> read_dumped_volume(const std::string& path);
+  // Shows a loaded dumped volume (kept as dumped_), its slices at `slice` (clamped) or through
+  // its content, drawn once.
+  void show_dumped_volume(std::unique_ptr<DumpedVolume> volume, VolumeChannel channel,
+                          std::optional<std::array<int, 3>> slice);
 
   std::unique_ptr<Vtk> vtk_;
   void build_probe_panel(QVBoxLayout* panel);

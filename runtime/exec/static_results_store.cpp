@@ -4,6 +4,8 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <utility>
 
 #include "graph/fnv1a.h"
@@ -23,8 +25,8 @@ bool is_results_file(const fs::directory_entry& entry) {
   return name.starts_with(file_prefix) && name.ends_with(file_suffix) && entry.is_regular_file(error);
 }
 
-// The hash of a file's contents, read in blocks; false when it cannot be read.
-bool hash_file(const std::string& path, uint64_t& hash) {
+// The hash of a file's contents, read in blocks, chained onto `hash`; false when it cannot be read.
+bool hash_contents(const std::string& path, uint64_t& hash) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
   std::vector<char> block(1 << 20);
@@ -33,6 +35,50 @@ bool hash_file(const std::string& path, uint64_t& hash) {
     hash = fnv1a(block.data(), size_t(in.gcount()), hash);
   }
   return !in.bad();
+}
+
+// What hash_contents() gave, kept for the process: the editor compiles its plan again on every
+// param edit, and a large environment was read and hashed each time. An entry is used while the
+// file keeps its size and modification time (a rewrite within the clock's resolution that keeps
+// the size is not seen); a lock, as the editor compiles on one thread and renders on another.
+class FileHashMemo {
+ public:
+  bool hash(const std::string& path, uint64_t& hash) {
+    std::error_code error;
+    const fs::path canonical = fs::canonical(path, error);
+    const uintmax_t size = error ? 0 : fs::file_size(canonical, error);
+    const fs::file_time_type modified = error ? fs::file_time_type() : fs::last_write_time(canonical, error);
+    if (error) return hash_contents(path, hash);  // not a file: reading it says so
+    const Where where{canonical.string(), hash};  // stamped before the read: a write during it is seen next time
+    {
+      std::lock_guard lock(mutex_);
+      const auto known = hashes_.find(where);
+      if (known != hashes_.end() && known->second.size == size && known->second.modified == modified) {
+        hash = known->second.hash;
+        return true;
+      }
+    }
+    if (!hash_contents(path, hash)) return false;
+    std::lock_guard lock(mutex_);
+    hashes_[where] = {size, modified, hash};
+    return true;
+  }
+
+ private:
+  // The file, and the hash its contents are chained onto (the files before it in the key).
+  using Where = std::pair<std::string, uint64_t>;
+  struct Stamped {
+    uintmax_t size;
+    fs::file_time_type modified;
+    uint64_t hash;
+  };
+  std::mutex mutex_;
+  std::map<Where, Stamped> hashes_;  // one entry a file and place in a key: a rewritten file replaces its own
+};
+
+bool hash_file(const std::string& path, uint64_t& hash) {
+  static FileHashMemo memo;
+  return memo.hash(path, hash);
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 // cache: FOLDER/static-results-<key>.bin, written after a frame that ran the static passes and
 // loaded into the next run's executor instead of running them. The key covers everything that
 // changes the bytes (static_results_key: passes' cache keys, resources' shapes, the device and
-// driver, the shaders and build, the contents of files static nodes read), so a stale file is
-// never found, only left to age out. A missing file is a miss; an unreadable, truncated, corrupt
+// driver, the shaders and build, the contents of files static nodes read: hashed once a process
+// while a file keeps its size and modification time), so a stale file is never found, only left
+// to age out. A missing file is a miss; an unreadable, truncated, corrupt
 // or foreign one is ignored with one warning naming the file and why, and written afresh once
 // the passes have run. Writes are atomic (a temporary file, then rename). The folder is bounded:
 // after each write, the least recently used results files (by modification time, which a load

@@ -1,7 +1,8 @@
 // The inspector shows a 3D texture as `lumagraph render --dump` writes it (encode_vti, the dump's
 // own writer, makes one here with known values): the log scale spans four decades below the
 // brightest texel, texels with alpha 0 are masked on the slices, the sliders move them, the mip
-// chooser finds NAME.mip1.vti, and files that are not such a dump are refused naming the file.
+// chooser finds NAME.mip1.vti, another channel is made without reading the file again, and files
+// that are not such a dump are refused naming the file.
 // (`lumagraph-inspect --dumped` itself was run by hand for docs/images/inspect-lpv-volume.png: a
 // process test of it took 15 s under the shared machine's load, over the 3 s a test may take.)
 #include "editor/dumped_volume_view.h"
@@ -90,6 +91,36 @@ TEST(DumpedVolumeView, ShowsSlicesOnALogScaleWithAlphaZeroMasked) {
   EXPECT_EQ(s->slice, (std::array<int, 3>{2, 1, 1}));  // 3 x 3 / 6 rounds to 2, 2 x 2 / 4 to 1, 3 x 2 / 4 to 2 clamped to 1
   EXPECT_TRUE(inspector.summary().contains("gi.volume.mip1.vti")) << inspector.summary().toStdString();
   EXPECT_TRUE(inspector.summary().contains("mip 1 of 2")) << inspector.summary().toStdString();
+}
+
+// A channel is made from the volume in memory: with the file gone, alpha and then luminance
+// again show as they did when it was there.
+TEST(DumpedVolumeView, AnotherChannelComesFromMemoryNotTheFile) {
+  test::qt_app();
+  Dump dump;
+  InspectorWidget inspector;
+  inspector.resize(480, 320);
+  inspector.show();
+  ASSERT_TRUE(inspector.open_dumped_volume(QString::fromStdString(dump.mip0), VolumeChannel::luminance));
+  const DumpedVolumeState first = *inspector.dumped_volume_state();
+  ASSERT_TRUE(QFile::remove(QString::fromStdString(dump.mip0)));
+
+  inspector.set_dumped_volume_channel(VolumeChannel::alpha);
+  std::optional<DumpedVolumeState> s = inspector.dumped_volume_state();
+  ASSERT_TRUE(s) << inspector.summary().toStdString();
+  EXPECT_EQ(s->channel, VolumeChannel::alpha);
+  EXPECT_EQ(s->dims, first.dims);
+  EXPECT_EQ(s->slice, first.slice);
+  EXPECT_EQ(s->lit_points, 6 * 4 * 3);  // alpha 1 on the slices k 0 to 2
+
+  inspector.set_dumped_volume_channel(VolumeChannel::luminance);
+  s = inspector.dumped_volume_state();
+  ASSERT_TRUE(s) << inspector.summary().toStdString();
+  EXPECT_EQ(s->value_range, first.value_range);
+  EXPECT_EQ(s->slice, first.slice);
+  EXPECT_EQ(s->masked_points, first.masked_points);
+  EXPECT_EQ(s->lit_points, first.lit_points);
+  EXPECT_TRUE(inspector.summary().contains("gi.volume.vti")) << inspector.summary().toStdString();
 }
 
 TEST(DumpedVolumeView, FilesThatAreNotADumpedVolumeNameTheFile) {

@@ -1,15 +1,22 @@
 // The static results file (runtime/exec/static_results_file.h) without a device: what it encodes
 // decodes to the same results; every way a file goes wrong (cut short at any length, any byte
 // flipped, made on another device or for another key) is refused with its reason; and the key
-// changes with each thing that changes the results' bytes.
+// changes with each thing that changes the results' bytes, the input files' contents hashed
+// again only when a file's size or modification time changes.
 #include "runtime/exec/static_results_file.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <random>
 #include <string>
 
+#include "graph/fnv1a.h"
+#include "runtime/exec/static_results_store.h"
 #include "tests/runtime/test_device_identity.h"
 
 namespace lg {
@@ -114,6 +121,36 @@ TEST(StaticResultsFile, APlanWithoutStaticPassesHasNothingToKeep) {
   Plan plan = static_plan();
   for (PlanPass& p : plan.passes) p.is_static = false;
   EXPECT_EQ(static_results_key(plan, {test_device(), 7, 9}), 0u);
+}
+
+// The editor compiles on every param edit: an input file is read and hashed once a process while
+// it keeps its size and modification time. A rewrite that keeps both still gives the first key
+// (so the file was not read again: the memo answered); a new time or size reads it again.
+TEST(StaticResultsStore, AnInputFileIsHashedAgainOnlyWhenItsSizeOrTimeChanges) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::temp_directory_path() / ("lumagraph-static-key-" + std::to_string(getpid()));
+  fs::create_directories(folder);
+  const std::string file = (folder / "sky.hdr").string();
+  const auto write = [&](const std::string& contents) { std::ofstream(file, std::ios::binary) << contents; };
+  const StaticResultsStore store(folder.string(), {test_device(), 7});
+  const std::vector<std::string> inputs{file};
+  // What key_for() gives when it reads the file: its path, then its contents, hashed into the key.
+  const auto key_of_contents = [&](const std::string& contents) {
+    return static_results_key(static_plan(), {test_device(), 7, fnv1a(contents, fnv1a(file))});
+  };
+
+  write("first contents");
+  const fs::file_time_type written = fs::last_write_time(file);
+  EXPECT_EQ(store.key_for(static_plan(), inputs), key_of_contents("first contents"));
+  write("other contents");  // the same size, and the time set back
+  fs::last_write_time(file, written);
+  EXPECT_EQ(store.key_for(static_plan(), inputs), key_of_contents("first contents")) << "the memo's hash";
+  fs::last_write_time(file, written + std::chrono::seconds(1));
+  EXPECT_EQ(store.key_for(static_plan(), inputs), key_of_contents("other contents")) << "a new time: read again";
+  write("the longest contents");
+  fs::last_write_time(file, written + std::chrono::seconds(1));
+  EXPECT_EQ(store.key_for(static_plan(), inputs), key_of_contents("the longest contents")) << "a new size: read again";
+  fs::remove_all(folder);
 }
 
 }  // namespace
