@@ -24,7 +24,9 @@ inline void expect_gi_node(const std::string& example, const std::string& node, 
   Diagnostics d;
   std::optional<Graph> graph = load_graph_file(example, d);
   ASSERT_TRUE(graph) << d.to_string();
-  if (!sh_linked) ASSERT_TRUE(remove_link_to(*graph, node + ".sh"));
+  if (!sh_linked) {
+    ASSERT_TRUE(remove_link_to(*graph, node + ".sh"));
+  }
   CompileOptions options;
   options.scene = scene;
   const CompileResult result = compile(*graph, builtin_registry(), options, d);
