@@ -3,6 +3,8 @@
 // - inside a closed room under the sky the geometry volume hides it: the truth is 0;
 // - an open floor gets about the sky's irradiance at its normal (E_sky(up) from the same SH),
 //   its own reflection of the sky included;
+// - the sky's march is kept while the grid, the geometry and the SH stay the same, and redone
+//   (equal to a fresh renderer's) when a wall moves or the sky is animated;
 // - degenerate skies (an environment of the largest floats, and the same at intensity 0) on the
 //   degenerate world: every output finite, validation clean.
 #include <gtest/gtest.h>
@@ -17,10 +19,12 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "nodes/gi/lpv/lpv_kernel.h"
 #include "runtime/image/image_formats.h"
 #include "tests/gi/camera_and_sun.h"
 #include "tests/gi/covered_irradiance.h"
 #include "tests/gi/degenerate_world.h"
+#include "tests/gi/plan_kernel.h"
 #include "tests/gi/sky_irradiance.h"
 #include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
@@ -155,6 +159,78 @@ TEST(LpvSky, TheVolumeOutputHoldsTheSky) {
   EXPECT_EQ(darker, 0u);
   EXPECT_GT(gain, 0.25 * sky_up);
   EXPECT_LT(gain, 1.0 * sky_up);
+}
+
+// How many frames marched the sky in `renderer`'s gi.lpv (its kernel counts them).
+uint64_t sky_marches(Renderer& renderer) {
+  return kernel_of<LpvSkyMarches>(renderer, "lpv").sky_marches();
+}
+
+// `world`'s irradiance from a renderer of its own, which marches the sky afresh.
+std::vector<float> fresh_irradiance(const Graph& graph, const World& world) {
+  auto fresh = make_renderer(graph);
+  fresh->render(world, kFrame);
+  EXPECT_EQ(sky_marches(*fresh), 1u);
+  expect_no_validation_messages(fresh->context());
+  return fresh->executor().read_image("lpv.irradiance");
+}
+
+// A still scene's second frame keeps the first's march (the kernel's count stays at one) and
+// equals the first exactly; so does a frame whose camera moved (the march is of the grid, not
+// the view), which equals a fresh renderer's frame of the moved camera exactly (the march is
+// deterministic: integer atomics and per-cell stores, so kept and redone images are the same).
+TEST(LpvSky, KeepsItsMarchWhileTheGridTheGeometryAndTheSkyStay) {
+  World world = open_floor_under_the_sky();
+  const Graph graph = lpv_sky_graph(kSky);
+  auto renderer = make_renderer(graph);
+  renderer->render(world, kFrame);
+  const std::vector<float> first = renderer->executor().read_image("lpv.irradiance");
+  renderer->render(world, kFrame);
+  EXPECT_EQ(sky_marches(*renderer), 1u);
+  EXPECT_EQ(renderer->executor().read_image("lpv.irradiance"), first);
+  world.each<Camera>([&](Entity camera, Camera&) { world.get<Transform>(camera).position.x += 0.5f; });
+  renderer->render(world, kFrame);
+  EXPECT_EQ(sky_marches(*renderer), 1u);
+  const std::vector<float> moved = renderer->executor().read_image("lpv.irradiance");
+  EXPECT_NE(moved, first);  // the view did change
+  EXPECT_EQ(moved, fresh_irradiance(graph, world));
+  expect_no_validation_messages(renderer->context());
+}
+
+// The post moved 1 m towards the floor's middle (the grid, the draws' bounds, stays the same)
+// marches again, and the frame equals a fresh renderer's exactly (as above); a march kept from
+// before would still hide the sky where the post stood.
+TEST(LpvSky, MarchesAgainWhenAWallMoves) {
+  World world = open_floor_under_the_sky();
+  const Graph graph = lpv_sky_graph(kSky);
+  auto renderer = make_renderer(graph);
+  renderer->render(world, kFrame);
+  const std::vector<float> before = renderer->executor().read_image("lpv.irradiance");
+  int moved = 0;
+  world.each<Transform>([&](Entity, Transform& t) {
+    if (t.position == glm::vec3(3.8f, 1.0f, -3.8f)) t.position.x -= 1.0f, ++moved;
+  });
+  ASSERT_EQ(moved, 1);
+  renderer->render(world, kFrame);
+  EXPECT_EQ(sky_marches(*renderer), 2u);
+  const std::vector<float> after = renderer->executor().read_image("lpv.irradiance");
+  EXPECT_NE(after, before);  // the post's move does change the frame
+  EXPECT_EQ(after, fresh_irradiance(graph, world));
+  expect_no_validation_messages(renderer->context());
+}
+
+// An animated sky (env.sky turning its sun: its SH is not a static result, so it may change in
+// any frame) is marched every frame; at 0 s a frame the sun stays put, so every frame equals a
+// fresh renderer's.
+TEST(LpvSky, MarchesAnAnimatedSkyEveryFrame) {
+  World world = open_floor_under_the_sky();
+  const Graph graph =
+      lpv_sky_graph(R"({ "id": "sky", "type": "env.sky", "params": { "face_size": 16, "sun_turn_speed": 10 } })");
+  auto renderer = make_renderer(graph);
+  for (int frame = 0; frame < 2; ++frame) renderer->render(world, kFrame, {.seconds = 0.0f});
+  EXPECT_EQ(sky_marches(*renderer), 2u);
+  EXPECT_EQ(renderer->executor().read_image("lpv.irradiance"), fresh_irradiance(graph, world));
+  expect_no_validation_messages(renderer->context());
 }
 
 // Degenerate skies on the degenerate world (zero-area triangles, a NaN colour, a 1e30 sun): an

@@ -53,6 +53,19 @@ struct RsmLight {  // shaders/lpv_rsm.frag
   glm::vec4 direction, irradiance;
 };
 
+// The SH's part of the sky's key (LpvKernel::record_volume): the cache key of the static pass
+// that made the SH this pass reads (its node's type, params and static inputs), or none where
+// the SH is not a static result of the plan (an animated sky), which may change in any frame.
+std::optional<uint64_t> static_sh_key(PassContext& ctx) {
+  const Plan& plan = ctx.plan();
+  for (const PlanAccess& a : plan.accesses_of(ctx.pass()))
+    if (plan.slot_of(a) == "in.sh") {
+      const int first = plan.resources[a.resource].first;  // its producer
+      if (first >= 0 && plan.passes[first].is_static) return plan.passes[first].cache_key;
+    }
+  return std::nullopt;
+}
+
 // lpv_model.h's face table as shaders/lpv_propagate.comp reads it: 30 bases, then 30 lobes.
 std::vector<glm::vec4> face_table() {
   std::vector<glm::vec4> out(2 * 6 * kLpvFacesPerDirection);
@@ -68,7 +81,7 @@ std::vector<glm::vec4> face_table() {
   return out;
 }
 
-class LpvKernel final : public NodeKernel {
+class LpvKernel final : public NodeKernel, public LpvSkyMarches {
  public:
   explicit LpvKernel(const PlanNode& node)
       : cells_(int(param_number(node, "grid"))),
@@ -83,6 +96,8 @@ class LpvKernel final : public NodeKernel {
     }
   }
 
+  uint64_t sky_marches() const override { return sky_marches_; }
+
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
     if (pass == "rsm")
@@ -96,8 +111,9 @@ class LpvKernel final : public NodeKernel {
   }
 
  private:
-  // Once a frame, at its first pass: the light, the grid and the constants, all from this
-  // frame's scene (lights and objects may move every frame).
+  // Once a frame, at its first pass: the light, the grid, the constants (but the coverage,
+  // record_volume's) and the geometry's part of the sky's key, all from this frame's scene
+  // (lights and objects may move every frame).
   void prepare(PassContext& ctx) {
     if (prepared_frame_ == ctx.frame_index() && constants_) return;
     prepared_frame_ = ctx.frame_index();
@@ -130,7 +146,7 @@ class LpvKernel final : public NodeKernel {
       l = {glm::vec4(glm::normalize(d.direction), 0.0f), glm::vec4(e, 0.0f)};
       shadow_from_world_ = shadow_from_world(*scene_bounds_, d.direction);
     }
-    c.scales = glm::vec4(float(scale), float(kOcclusionUnit), light_present_ ? 1.0f : 0.0f, 0.0f);
+    c.scales = glm::vec4(float(scale), float(kOcclusionUnit), 0.0f, 0.0f);
     constants_value_ = c;
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -141,11 +157,28 @@ class LpvKernel final : public NodeKernel {
       faces_.emplace(ctx.gpu(), ctx.node().id + " faces", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
       faces_->write(face_table());
     }
-    constants_->write_value(c);
     rsm_light_->write_value(l);
     const std::vector<DrawConstants> draws = draw_constants(scene);
     draws_->write(draws);
     draw_blocks_->write(draw_blocks(draws));  // the reflective shadow map's (shadow_draw.glsl)
+    geometry_key(scene, draws);
+  }
+
+  // What the sky's march depends on besides the SH, as gi.voxel's built_from_: the grid, the
+  // draws (transforms, materials), which mesh each draws (a draw may swap meshes of the same
+  // bounds) and the meshes' contents (scene.version). Not the light: the march ignores it.
+  void geometry_key(const SceneView& scene, const std::vector<DrawConstants>& draws) {
+    sky_key_.clear();
+    auto append = [this](const void* data, size_t bytes) {
+      const auto* first = static_cast<const std::byte*>(data);
+      sky_key_.insert(sky_key_.end(), first, first + bytes);
+    };
+    append(&grid_.origin, sizeof(grid_.origin));
+    append(&grid_.cell, sizeof(grid_.cell));
+    append(&grid_.counts, sizeof(grid_.counts));
+    append(&scene.version, sizeof(scene.version));
+    append(draws.data(), draws.size() * sizeof(DrawConstants));
+    for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
   }
 
   // The grids, sized when the counts change (the box of a moving world may change them). The
@@ -237,9 +270,15 @@ class LpvKernel final : public NodeKernel {
     // The sky's light: the environment's SH linked, in a scene with an environment. It lights the
     // grid's box without the sun too, so it covers it.
     sky_ = ctx.has("in.sh") && ctx.scene().has_environment;
-    Constants c = constants_value_;
-    c.scales.z = light_present_ || sky_ ? 1.0f : 0.0f;
-    constants_->write_value(c);
+    constants_value_.scales.z = light_present_ || sky_ ? 1.0f : 0.0f;
+    constants_->write_value(constants_value_);
+    // The march is kept while the grid, the geometry and the SH stay the same (the sky's images
+    // then hold it); the bounce depends on it but goes into this frame's light, so it runs always.
+    const std::optional<uint64_t> sh_key = static_sh_key(ctx);
+    if (sh_key) sky_key_.insert(sky_key_.end(), reinterpret_cast<const std::byte*>(&*sh_key),
+                                reinterpret_cast<const std::byte*>(&*sh_key + 1));
+    march_sky_ = sky_ && (images_new_ || !sky_written_ || !sh_key || sky_key_ != marched_from_);
+    marched_from_ = sky_ ? sky_key_ : std::vector<std::byte>{};
     inject(ctx);
     propagate(ctx);
     lookup(ctx);
@@ -291,7 +330,8 @@ class LpvKernel final : public NodeKernel {
                                        storage_image(7, occlusion_grid_.view()),
                                        storage_image(8, sky_planes_.view())};
     dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_resolve.comp", resolve);
-    if (sky_) add_sky(ctx), add_sky_bounce(ctx);
+    if (march_sky_) add_sky(ctx), ++sky_marches_;
+    if (sky_) add_sky_bounce(ctx);
   }
 
   // The sky's light through the geometry volume into its images (lpv_sky.comp), after the resolve
@@ -361,8 +401,11 @@ class LpvKernel final : public NodeKernel {
       writes.push_back(sampled_image(4 + c, sum_images_[c].view(), ctx.linear_sampler(), VK_IMAGE_LAYOUT_GENERAL));
     writes.push_back(storage_image(7, target.view()));
     for (uint32_t c = 0; c < 4; ++c) writes.push_back(linear_general(ctx, 8 + c, sky_images_[c]));
+    // kAddSky: without the sky the lookup skips the sky's four fetches (lavapipe would run both
+    // sides of a branch on a uniform; docs/lavapipe-costs.md), its images bound all the same.
+    const uint32_t add_sky = sky_ ? 1u : 0u;
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
-                     std::as_bytes(std::span(&k_, 1)));
+                     std::as_bytes(std::span(&k_, 1)), kTileSize, std::span(&add_sky, 1));
     if (ctx.has("out.volume")) write_volume(ctx);
   }
 
@@ -419,6 +462,11 @@ class LpvKernel final : public NodeKernel {
   bool light_present_ = false;
   bool sky_ = false;          // the sky's light added (record_volume)
   bool sky_written_ = false;  // the sky's images hold last frame's sky
+  bool march_sky_ = false;    // this frame marches the sky (record_volume)
+  uint64_t sky_marches_ = 0;  // frames that marched it (LpvSkyMarches)
+  // What the sky's march depends on this frame (prepare, record_volume), and what the sky's
+  // images were last marched from (empty: not marched, or the sky absent since).
+  std::vector<std::byte> sky_key_, marched_from_;
   Constants constants_value_{};  // as prepare() wrote them
   glm::ivec3 allocated_counts_{0};  // none yet
   std::optional<HostBuffer> constants_, rsm_light_, draws_, draw_blocks_, camera_, faces_;

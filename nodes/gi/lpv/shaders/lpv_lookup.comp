@@ -4,7 +4,7 @@
 // cell out along the normal (the sampler filters lpv_store.comp's images, edges clamped), as
 // radiance over a cell face (intensity / cell^2), read as a lobe (sh_l1_lobe) and convolved with
 // the cosine about the normal for the light arriving at it (travelling along -n); plus the sky's
-// light (lpv_sky.comp; zero images without it) at the same point: the filtered radiance over the
+// light (lpv_sky.comp; not read without it, kAddSky) at the same point: the filtered radiance over the
 // filtered openness, its L1 convolved with the cosine (linear: an open hemisphere gives pi L).
 // rgb: irradiance, W/m^2; a: coverage, 1
 // where the surface lies in the grid's box, 0 outside it, on the sky and in a frame with neither
@@ -30,6 +30,9 @@ layout(binding = 8) uniform sampler3D sky_red;
 layout(binding = 9) uniform sampler3D sky_green;
 layout(binding = 10) uniform sampler3D sky_blue;
 layout(binding = 11) uniform sampler3D sky_openness;
+// 0 without the sky (no SH linked): its images, bound all the same, are not read (a branch on a
+// uniform would fetch them anyway on lavapipe, docs/lavapipe-costs.md rule 1).
+layout(constant_id = 0) const int kAddSky = 1;
 layout(push_constant) uniform Push {
   int k;  // the G-buffer's resolution over the target's
 };
@@ -53,6 +56,6 @@ void main() {
   // lpv_store.comp stored radiance; the light arriving travels along w with w . n < 0.
   vec3 e = vec3(sh_l1_lobe_convolve(sh_l1_lobe(sh[0]), -n), sh_l1_lobe_convolve(sh_l1_lobe(sh[1]), -n),
                 sh_l1_lobe_convolve(sh_l1_lobe(sh[2]), -n));
-  e += lpv_sky_irradiance(sky_red, sky_green, sky_blue, sky_openness, uvw, n);
+  if (kAddSky != 0) e += lpv_sky_irradiance(sky_red, sky_green, sky_blue, sky_openness, uvw, n);
   imageStore(irradiance, texel, vec4(clamp(finite_or_zero(max(e, vec3(0.0))), 0.0, 65504.0), lpv.scales.z));
 }
