@@ -1,8 +1,9 @@
 // gi.lpv's kernel (docs/lpv.md): three passes every frame, nothing kept between frames but the
-// buffers and the sky's march (redone when the grid, the geometry or the SH changed): "rsm" draws the reflective shadow map of the main directional light; "volume" puts its
-// texels into the grid as virtual point lights and every draw's triangles as occlusion, moves the light
-// `iterations` steps, adds them up and reads the sum per pixel at resolution_scale; "upsample"
-// brings that to the G-buffer's resolution.
+// buffers and the sky's march (redone when the grid, the geometry or the SH changed): "rsm" draws
+// the reflective shadow map of the main directional light; "volume" puts its texels into the grid
+// as virtual point lights and every draw's triangles as occlusion, moves the light `iterations`
+// steps, adds them up and reads the sum per pixel at resolution_scale; "upsample" brings that to
+// the G-buffer's resolution.
 #pragma once
 
 #include <cstdint>
