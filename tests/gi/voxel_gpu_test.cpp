@@ -14,6 +14,8 @@
 // - the frame after the sun turns and the wall moves equals a fresh renderer's, and so does the
 //   frame after a draw changes only its mesh, and the frame after the camera moves (the cones kept
 //   while neither changes);
+// - where nothing reads the specular output, the irradiance and AO are those of a graph that reads
+//   it, also in a frame that copies the kept cones back;
 // - degenerate input (zero-area triangles, zero normals, a NaN base colour, a sun 1e30 bright, a
 //   point light 1e30 bright on the floor, a rectangle light of no area, a spot of no ramp):
 //   every output finite, validation clean;
@@ -27,6 +29,7 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <string>
 #include <utility>
 
 #include "api/renderer.h"
@@ -51,7 +54,10 @@ namespace {
 constexpr FrameSize kFrame{64, 36};
 constexpr double kPi = 3.14159265358979323846;
 
-Graph voxel_graph(int resolution, double resolution_scale) {
+// `outputs`: the node's outputs the graph lists (its results); the specular cone is traced only
+// where one of them is voxel.specular.
+Graph voxel_graph(int resolution, double resolution_scale,
+                  const std::string& outputs = R"("voxel.irradiance", "voxel.ao", "voxel.specular")") {
   Diagnostics d("voxel-test.json");
   std::optional<Graph> graph = parse_graph_text(
       R"({ "format": "lumagraph/1", "nodes": [
@@ -60,7 +66,7 @@ Graph voxel_graph(int resolution, double resolution_scale) {
           std::to_string(resolution) + R"(, "resolution_scale": )" + std::to_string(resolution_scale) +
           R"(, "shadow_size": 256 } } ],
     "links": [ { "from": "gbuf.gbuffer", "to": "voxel.gbuffer" } ],
-    "outputs": [ "voxel.irradiance", "voxel.ao", "voxel.specular" ] })",
+    "outputs": [ )" + outputs + R"( ] })",
       d);
   if (!graph) throw std::runtime_error(d.to_string());
   return std::move(*graph);
@@ -564,6 +570,35 @@ TEST(Voxel, TracesItsConesAgainWhenTheCameraMoves) {
   }
   expect_no_validation_messages(renderer->context());
   expect_no_validation_messages(fresh->context());
+}
+
+// Where nothing reads the specular output, the cones neither trace, store, keep nor copy back its
+// image (voxel_kernel.cpp's trace_cones()): at resolution scale 1/2 and 1, the irradiance and AO
+// of a graph that does not list voxel.specular equal, exactly, those of one that does (the same
+// diffuse cones, only the specular one left out), in the first frame and in a second frame from
+// the same camera, which copies the kept images back (two of them here, not three: a copy into the
+// wrong target fails it; a copy left out may not, the targets keeping their memory here).
+TEST(Voxel, LeavesTheSpecularOutTheSameWhereNothingReadsIt) {
+  const World world = floor_and_wall(kSunFromTheEast, 10.0f, 0.1f);
+  for (const double scale : {0.5, 1.0}) {
+    SCOPED_TRACE(scale);
+    auto with = make_renderer(voxel_graph(32, scale));
+    auto without = make_renderer(voxel_graph(32, scale, R"("voxel.irradiance", "voxel.ao")"));
+    auto read = [](Renderer& r) {
+      return std::pair{r.executor().read_image("voxel.irradiance"), r.executor().read_image("voxel.ao")};
+    };
+    with->render(world, kFrame);
+    const auto expected = read(*with);
+    for (int frame = 0; frame < 2; ++frame) {
+      without->render(world, kFrame);
+      const auto got = read(*without);
+      EXPECT_EQ(got.first, expected.first) << "frame " << frame;
+      EXPECT_EQ(got.second, expected.second) << "frame " << frame;
+    }
+    EXPECT_GT(*std::max_element(expected.first.begin(), expected.first.end()), 0.0f);  // the floor is lit
+    expect_no_validation_messages(with->context());
+    expect_no_validation_messages(without->context());
+  }
 }
 
 // The volume is rebuilt only when the scene changed (voxel_kernel.cpp): a second frame of the same

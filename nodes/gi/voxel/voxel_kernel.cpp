@@ -365,7 +365,11 @@ class VoxelKernel final : public NodeKernel {
     Image& target = ctx.image(k_ == 1 ? "out.irradiance" : "tmp.lowres");
     Image& ao = ctx.image(k_ == 1 ? "out.ao" : "tmp.ao_lowres");
     Image& specular = ctx.image(k_ == 1 ? "out.specular" : "tmp.specular_lowres");
-    const std::array<Image*, 3> targets{&target, &ao, &specular};
+    // The specular cone only where its output is read (examples/gi-voxel.json does not link it):
+    // else its image is neither written, kept nor copied back.
+    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
+    const std::array<Image*, 3> all_targets{&target, &ao, &specular};
+    const std::span<Image* const> targets(all_targets.data(), *specular_read_ ? 3 : 2);
     // A frame that changes neither the volume nor the camera (a jittered one changes the camera)
     // sees the same G-buffer: the cones' last results are copied back instead of traced.
     if (!rebuild_ && kept_camera_ &&
@@ -390,8 +394,6 @@ class VoxelKernel final : public NodeKernel {
         storage_image(11, specular.view()),
         storage_buffer(12, sh_buffer(ctx)),
         storage_buffer(13, grid_sums_.handle())};
-    // The specular cone only where its output is read (examples/gi-voxel.json does not link it).
-    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
     // kTraceSpecular and kGatherSky.
     const uint32_t constants[] = {*specular_read_ ? 1u : 0u, sky_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
@@ -402,7 +404,7 @@ class VoxelKernel final : public NodeKernel {
 
   // The cones' results into the node's own images (kept in the GENERAL layout), made at the
   // targets' sizes.
-  void keep_cones(PassContext& ctx, const std::array<Image*, 3>& targets) {
+  void keep_cones(PassContext& ctx, std::span<Image* const> targets) {
     VkCommandBuffer cmd = ctx.cmd();
     for (size_t i = 0; i < targets.size(); ++i) {
       const ImageDesc& d = targets[i]->desc();
@@ -455,7 +457,7 @@ class VoxelKernel final : public NodeKernel {
   int doubled_axis_ = 0;               // the axis along which those hold both directions
   bool images_new_ = false;            // not yet in the GENERAL layout
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
-  std::array<Image, 3> kept_;                  // the cones' last irradiance, AO and specular (trace_cones())
+  std::array<Image, 3> kept_;                  // the cones' last irradiance, AO and specular where read
   std::optional<CameraConstants> kept_camera_;  // the camera they were traced from; none yet
   std::optional<bool> specular_read_;  // the plan reads out.specular (fixed for the kernel's plan)
   bool sky_ = false;                   // the environment's SH linked and the scene has an environment

@@ -120,31 +120,34 @@ void main() {
   vec3 g = (p - voxel.origin_cell.xyz) / cell;
   vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, source, 0).rgb);
   float len = length(n);
-  if (!(depth > 0.0) || !all_finite(vec4(p, 0.0)) || any(lessThan(g, vec3(0.0))) ||
-      any(greaterThan(g, vec3(voxel.counts.xyz))) || !(len > 1e-6) || voxel.sources.w == 0) {
-    imageStore(irradiance, texel, vec4(0.0));
-    imageStore(ao, texel, vec4(1.0));
-    imageStore(specular, texel, vec4(0.0));
-    return;
+  // Off the grid, on the sky or without a light: no light, unoccluded, no reflection, stored with
+  // the rest at the end (on lavapipe an early return is a branch too: the other lanes would store
+  // again, docs/lavapipe-costs.md rule 1).
+  bool lit = depth > 0.0 && all_finite(vec4(p, 0.0)) && !any(lessThan(g, vec3(0.0))) &&
+             !any(greaterThan(g, vec3(voxel.counts.xyz))) && len > 1e-6 && voxel.sources.w != 0;
+  vec4 e = vec4(0.0), reflected = vec4(0.0);
+  float unoccluded = 1.0;
+  if (lit) {
+    n /= len;
+    vec3 origin = p + n * cell;
+    vec3 light = vec3(0.0), sky_light = vec3(0.0);
+    float occluded = 0.0, open = 0.0;
+    vec3 sky[kSkyRadianceCoefficients];
+    sky_radiance_coefficients(sky);  // zero without the SH (an empty buffer is bound)
+    for (int i = 0; i < kHemisphereCones; ++i) {
+      Cone cone = trace_hemisphere_cone(origin, n, i, voxel.irradiance.w, kAllLevels, 1.0);
+      light += hemisphere_cone_weight(i) * cone.light;
+      if (kGatherSky == 1) sky_light += hemisphere_cone_weight(i) * cone.open * sky_radiance(sky, cone.direction);
+      occluded += hemisphere_cone_weight(i) * cone.occluded;
+      open += hemisphere_cone_weight(i) * cone.open;
+    }
+    if (kGatherSky == 1) light += sky_light * min(1.0, surface_sky_visibility(p, n) / max(open, 1e-6));
+    e = vec4(clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0), 1.0);
+    unoccluded = clamp(1.0 - occluded, 0.0, 1.0);
+    if (kTraceSpecular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
   }
-  n /= len;
-  vec3 origin = p + n * cell;
-  vec3 light = vec3(0.0), sky_light = vec3(0.0);
-  float occluded = 0.0, open = 0.0;
-  vec3 sky[kSkyRadianceCoefficients];
-  sky_radiance_coefficients(sky);  // zero without the SH (an empty buffer is bound)
-  for (int i = 0; i < kHemisphereCones; ++i) {
-    Cone cone = trace_hemisphere_cone(origin, n, i, voxel.irradiance.w, kAllLevels, 1.0);
-    light += hemisphere_cone_weight(i) * cone.light;
-    if (kGatherSky == 1) sky_light += hemisphere_cone_weight(i) * cone.open * sky_radiance(sky, cone.direction);
-    occluded += hemisphere_cone_weight(i) * cone.occluded;
-    open += hemisphere_cone_weight(i) * cone.open;
-  }
-  if (kGatherSky == 1) light += sky_light * min(1.0, surface_sky_visibility(p, n) / max(open, 1e-6));
-  vec3 e = clamp(finite_or_zero(LG_PI * light), 0.0, 65504.0);
-  imageStore(irradiance, texel, vec4(e, 1.0));
-  imageStore(ao, texel, vec4(clamp(1.0 - occluded, 0.0, 1.0)));
-  vec4 reflected = vec4(0.0);
-  if (kTraceSpecular == 1) reflected = specular_cone(origin, p, n, texelFetch(material_tex, source, 0).r);
-  imageStore(specular, texel, reflected);
+  imageStore(irradiance, texel, e);
+  imageStore(ao, texel, vec4(unoccluded));
+  // Not written where nothing reads it (kTraceSpecular 0): the store leaves the pipeline too.
+  if (kTraceSpecular == 1) imageStore(specular, texel, reflected);
 }

@@ -49,16 +49,13 @@ void main() {
     for (int x = low.x * k; x < end.x; ++x) {
       ivec2 texel = ivec2(x, y);
       float depth = texelFetch(depth_tex, texel, 0).r;
-      if (!(depth > 0.0)) {
-        imageStore(irradiance, texel, vec4(0.0));
-        imageStore(ao, texel, vec4(1.0));
-        if (kSpecular == 1) imageStore(specular, texel, vec4(0.0));
-        continue;
-      }
+      // The sky's values selected, not stored in a branch of their own (on lavapipe every lane
+      // would store twice, docs/lavapipe-costs.md rule 1).
+      bool sky = !(depth > 0.0);
       vec3 n = decode_normal_unnormalized(texelFetch(normal_tex, texel, 0).rgb);
       vec4 w = upsample_weights(guide, depth, n, upsample_fraction(texel, low, k));
-      imageStore(irradiance, texel, blend(e, w));
-      imageStore(ao, texel, blend(a, w));
-      if (kSpecular == 1) imageStore(specular, texel, blend(s, w));
+      imageStore(irradiance, texel, sky ? vec4(0.0) : blend(e, w));
+      imageStore(ao, texel, sky ? vec4(1.0) : blend(a, w));
+      if (kSpecular == 1) imageStore(specular, texel, sky ? vec4(0.0) : blend(s, w));
     }
 }
