@@ -287,17 +287,20 @@ namespace {
 // A capsule with ends a and b (a = b for a sphere). Seen from within its cylinder's reach
 // (closer to the axis line than r, beyond an end), no plane through the point touches the
 // cylinder, and the nearer end's sphere hides the rest: its cone is the capsule's (tubes seen
-// nearly end on read 12 to 16% low as two half circles joined). A sphere wholly above the
-// surface's horizon whose elliptical cone is wholly above the cosine's is that cone, exactly;
-// anything else the outline polygon, clipped. (The round cone of the same vector form factor
-// clipped to the cosine's horizon, Heitz and Hill's approximation, read up to 11% high there.)
-float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, const LtcLobe& lobe) {
+// nearly end on read 12 to 16% low as two half circles joined). A sphere (`may_cone`: the sphere
+// lights) wholly above the surface's horizon whose elliptical cone is wholly above the cosine's
+// is that cone, exactly; anything else the outline polygon, clipped. (The round cone of the same
+// vector form factor clipped to the cosine's horizon, Heitz and Hill's approximation, read up to
+// 11% high there.) A tube seen end on takes the round polygon of its nearer end: the cone gave
+// the same errors on five sets of 1,200 points to the fourth digit, and lavapipe runs a branch's
+// both sides, so the cone's eigenvalue cost every pixel a tube lights.
+float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, const LtcLobe& lobe, bool may_cone) {
   const vec3 axis = b - a;
   const float len = glm::length(axis);
   const vec3 dir = len > 0.0f ? axis / len : vec3(0.0f);
   const bool end_on = !(len > 0.0f) || !(glm::length(a - dir * glm::dot(a, dir)) > radius);
   const vec3 near = glm::dot(a, a) < glm::dot(b, b) ? a : b;
-  const bool cone = end_on && radius > 0.0f && glm::dot(glm::normalize(n), near) >= radius;
+  const bool cone = may_cone && end_on && radius > 0.0f && glm::dot(glm::normalize(n), near) >= radius;
   vec3 f(0.0f);
   const bool exact = cone && ltc_cone_form_factor(near, radius, ltc_to_cosine(n, v, lobe.entry), f);
   if (!exact) f = capsule_form_factor(end_on ? near : a, end_on ? near : b, radius, n, v, lobe.entry);
@@ -308,11 +311,11 @@ float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, const LtcLo
 
 float ltc_sphere_specular(const SphereLight& light, vec3 p, vec3 n, vec3 v, const LtcLobe& lobe) {
   const vec3 c = light.center - p;
-  return specular_result(light.radiance, capsule_specular(c, c, light.radius, n, v, lobe));
+  return specular_result(light.radiance, capsule_specular(c, c, light.radius, n, v, lobe, true));
 }
 
 float ltc_tube_specular(const TubeLight& light, vec3 p, vec3 n, vec3 v, const LtcLobe& lobe) {
-  return specular_result(light.radiance, capsule_specular(light.end0 - p, light.end1 - p, light.radius, n, v, lobe));
+  return specular_result(light.radiance, capsule_specular(light.end0 - p, light.end1 - p, light.radius, n, v, lobe, false));
 }
 
 float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, const LtcLobe& lobe) {

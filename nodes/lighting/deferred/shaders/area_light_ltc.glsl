@@ -311,15 +311,16 @@ float ltc_shape_corrected(float integral, vec3 form_factor, LtcLobe lobe, vec3 n
 }
 
 // A capsule (a = b for a sphere) as area_light_ltc.cpp's capsule_specular: seen from within its
-// cylinder's reach the nearer end's sphere; a sphere wholly above the surface's horizon whose
-// elliptical cone is wholly above the cosine's that cone; anything else the outline polygon.
-float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, LtcLobe lobe) {
+// cylinder's reach the nearer end's sphere; a sphere (may_cone, a constant: tubes leave the cone
+// out of their code) wholly above the surface's horizon whose elliptical cone is wholly above the
+// cosine's that cone; anything else the outline polygon.
+float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, LtcLobe lobe, bool may_cone) {
   vec3 axis = b - a;
   float len = length(axis);
   vec3 dir = len > 0.0 ? axis / len : vec3(0.0);
   bool end_on = !(len > 0.0) || !(length(a - dir * dot(a, dir)) > radius);
   vec3 near_ = dot(a, a) < dot(b, b) ? a : b;
-  bool cone = end_on && radius > 0.0 && dot(normalize(n), near_) >= radius;
+  bool cone = may_cone && end_on && radius > 0.0 && dot(normalize(n), near_) >= radius;
   vec3 f = vec3(0.0);
   bool exact = false;
   if (cone) exact = ltc_cone_form_factor(near_, radius, ltc_to_cosine(n, v, lobe.entry), f);
@@ -329,11 +330,11 @@ float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, LtcLobe
 
 float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
   vec3 c = center - p;
-  return ltc_specular_result(ltc_capsule_specular(c, c, radius, n, v, lobe));
+  return ltc_specular_result(ltc_capsule_specular(c, c, radius, n, v, lobe, true));
 }
 
 float ltc_tube_specular(vec3 end0, vec3 end1, float radius, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
-  return ltc_specular_result(ltc_capsule_specular(end0 - p, end1 - p, radius, n, v, lobe));
+  return ltc_specular_result(ltc_capsule_specular(end0 - p, end1 - p, radius, n, v, lobe, false));
 }
 
 float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
