@@ -17,6 +17,7 @@
 #include "nodes/common/node_shaders.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
+#include "nodes/gi/common/static_input.h"
 #include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/gi/lpv/lpv_model.h"
 #include "nodes/lighting/deferred/shadow_depth_pipeline.h"
@@ -53,16 +54,12 @@ struct RsmLight {  // shaders/lpv_rsm.frag
   glm::vec4 direction, irradiance;
 };
 
-// The SH's part of the sky's key (LpvKernel::record_volume): the cache key of the static pass
-// that made the SH this pass reads (its node's type, params and static inputs), or none where
-// the SH is not a static result of the plan (an animated sky), which may change in any frame.
+// The SH's part of the sky's key (LpvKernel::record_volume): static_producer_key of the SH this
+// pass reads.
 std::optional<uint64_t> static_sh_key(PassContext& ctx) {
   const Plan& plan = ctx.plan();
   for (const PlanAccess& a : plan.accesses_of(ctx.pass()))
-    if (plan.slot_of(a) == "in.sh") {
-      const int first = plan.resources[a.resource].first;  // its producer
-      if (first >= 0 && plan.passes[first].is_static) return plan.passes[first].cache_key;
-    }
+    if (plan.slot_of(a) == "in.sh") return static_producer_key(plan, a);
   return std::nullopt;
 }
 

@@ -18,6 +18,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
+#include "nodes/gi/common/static_input.h"
 #include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/gi/voxel/voxel_local_lights.h"
 #include "nodes/lighting/deferred/shadow_depth_pipeline.h"
@@ -61,13 +62,6 @@ const PlanAccess* node_access(PassContext& ctx, std::string_view pass, std::stri
       if (plan.slot_of(a) == slot) return &a;
   }
   return nullptr;
-}
-
-// Whether `a`'s resource is a static result of the plan (made once, the same every frame): its
-// first pass, its producer, is static.
-bool static_resource(const Plan& plan, const PlanAccess& a) {
-  const int first = plan.resources[a.resource].first;
-  return first >= 0 && plan.passes[first].is_static;
 }
 
 // Whether another node's pass, or the file's outputs, read what this node writes to its output
@@ -159,7 +153,7 @@ class VoxelKernel final : public NodeKernel {
     append(draws.data(), draws.size() * sizeof(DrawConstants));
     for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
     // A sky whose SH is not a static result (an animated sky) may change in any frame.
-    rebuild_ = images_new_ || key != built_from_ || (sky_ && !static_resource(ctx.plan(), *sh));
+    rebuild_ = images_new_ || key != built_from_ || (sky_ && !static_producer_key(ctx.plan(), *sh));
     built_from_ = std::move(key);
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
