@@ -15,7 +15,7 @@ namespace {
 // seven decimals.
 TEST(BrdfAlbedo, TableMatchesTheReference) {
   constexpr int last = kBrdfAlbedoSize - 1;
-  for (const auto [i, j] : {std::pair{0, 0}, {last, 0}, {0, last}, {last, last}, {1, 3}, {7, 19}, {20, 11}, {3, 28}}) {
+  for (const auto& [i, j] : {std::pair{0, 0}, {last, 0}, {0, last}, {last, last}, {1, 3}, {7, 19}, {20, 11}, {3, 28}}) {
     const double n_dot_v = std::pow(double(i) / last, 4.0);
     const glm::dvec2 expected = brdf_albedo_reference(n_dot_v, double(j) / last);
     const glm::dvec2 stored = brdf_albedo_lookup(n_dot_v, double(j) / last);

@@ -94,6 +94,7 @@ TEST_F(AreaLightLtcGpuTest, ShaderMatchesTheCppTwin) {
       cpu = ltc_rect_specular(to_float(RectLightD{c.rect.center, c.rect.half_x, c.rect.half_y, 1.0, c.rect.two_sided}),
                               p, n, v, lobe);
     }
+    gpu.c[3] = lobe.alpha;  // the twins' lobe exactly
     input.push_back(gpu);
     expected.push_back(cpu);
   }

@@ -62,7 +62,7 @@ Surface make_surface(vec3 position, vec3 normal, vec3 eye, vec3 albedo, float ro
 void share_energy(inout Surface s, vec2 scale_bias) {
   s.specular_scale = specular_energy_scale(s.f0, scale_bias);
   s.specular_albedo = specular_albedo(s.f0, scale_bias);
-  s.lobe_albedo = max(scale_bias.x + scale_bias.y, 1e-4);
+  s.lobe_albedo = white_albedo(scale_bias);
   s.diffuse_color *= 1.0 - s.specular_albedo;
 }
 

@@ -41,9 +41,12 @@ glm::dvec2 brdf_albedo_lookup(double n_dot_v, double roughness) {
          fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
 }
 
+double white_albedo(glm::dvec2 scale_bias) {
+  return std::max(scale_bias.x + scale_bias.y, 1e-4);
+}
+
 glm::dvec3 specular_energy_scale(glm::dvec3 f0, glm::dvec2 scale_bias) {
-  const double e = std::max(scale_bias.x + scale_bias.y, 1e-4);
-  return 1.0 + f0 * (1.0 / e - 1.0);
+  return 1.0 + f0 * (1.0 / white_albedo(scale_bias) - 1.0);
 }
 
 glm::dvec3 specular_albedo(glm::dvec3 f0, glm::dvec2 scale_bias) {

@@ -33,6 +33,9 @@ std::array<glm::vec4, kBrdfAlbedoSize * kBrdfAlbedoSize / 2> brdf_albedo_texels(
 // (A, B) bilinearly between texels, as brdf_albedo.glsl does in float.
 glm::dvec2 brdf_albedo_lookup(double n_dot_v, double roughness);
 
+// E = A + B, the lobe's white albedo (Fresnel 1), floored where it divides.
+double white_albedo(glm::dvec2 scale_bias);
+
 // Multiple scattering returns what single scattering loses (1 - E, E = A + B the white albedo)
 // in proportion to F0: the single-scattering specular times 1 + F0 (1 / E - 1) (Fdez-Aguera
 // 2019; Kulla and Conty 2017 with Fms's lobe folded into the single one's shape).

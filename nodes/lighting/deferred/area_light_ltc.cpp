@@ -26,21 +26,19 @@ float specular_result(float radiance, float integral) {
 }  // namespace
 
 LtcLobe ltc_lobe(float n_dot_v, float roughness) {
-  const glm::dvec2 ab = brdf_albedo_lookup(n_dot_v, roughness);
-  return {ltc_lookup(n_dot_v, roughness), float(ltc_alpha(roughness)), float(std::max(ab.x + ab.y, 1e-4))};
+  const float sin_v = std::sqrt(std::max(1.0f - n_dot_v * n_dot_v, 0.0f));
+  return {ltc_lookup(n_dot_v, roughness), float(ltc_alpha(roughness)),
+          float(white_albedo(brdf_albedo_lookup(n_dot_v, roughness))), vec3(sin_v, 0.0f, n_dot_v)};
 }
 
-glm::mat3 ltc_frame(vec3 n, vec3 v) {
+glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
   n = glm::normalize(n);
   vec3 t1 = v - n * glm::dot(n, v);
   const float len = glm::length(t1);
   // Seen straight on, any tangent serves: the lobe is round there.
   t1 = len > 1e-6f ? t1 / len : any_perpendicular(n);
-  return glm::mat3(t1, glm::cross(n, t1), n);
-}
-
-glm::mat3 ltc_to_cosine(vec3 n, vec3 v, glm::vec4 entry) {
-  return ltc_inverse(entry) * glm::transpose(ltc_frame(n, v));
+  const vec3 t2 = glm::cross(n, t1);
+  return ltc_inverse(entry) * glm::transpose(glm::mat3(t1, t2, n));
 }
 
 namespace {
@@ -261,25 +259,25 @@ bool ltc_cone_form_factor(vec3 c, float radius, glm::mat3 to_cosine, vec3& form_
   return adj00 < 0.0f && adj00 * adj11 > adj01 * adj01 && axis_dir.z > 0.0f;
 }
 
-float ltc_shape_corrected(float integral, vec3 form_factor, const LtcLobe& lobe, vec3 n, vec3 v) {
+float ltc_shape_corrected(vec3 form_factor, const LtcLobe& lobe) {
   // In the frame of n and v: F's direction o carried back by M (up to a positive scale, M^-1's
   // adjugate times the sign of its determinant), the LTC's density there
   // (o.z / pi) |det M^-1| |M o|^3 with M o = m / det, and the lobe's f (n.l) / E.
   const glm::vec4 e = lobe.entry;
   const float det = e.x * e.w - e.y * e.z;
-  const vec3 o = glm::normalize(form_factor);
+  const float f_len = glm::length(form_factor);
+  const vec3 o = form_factor / f_len;
   const vec3 m = vec3(e.w * o.x - e.y * o.z, det * o.y, e.x * o.z - e.z * o.x);
   const float m_len = glm::length(m);
   const vec3 l = m * ((det < 0.0f ? -1.0f : 1.0f) / m_len);
-  const float ltc = o.z / kAreaLightPi * std::pow(m_len, 3.0f) / (det * det);
-  const vec3 frame_v = glm::transpose(ltc_frame(n, v)) * v;
-  const float n_dot_v = std::max(frame_v.z, 1e-4f);
-  const vec3 h = glm::normalize(l + frame_v);
+  const float ltc = o.z / kAreaLightPi * m_len * m_len * m_len / (det * det);
+  const float n_dot_v = std::max(lobe.view.z, 1e-4f);
+  const vec3 h = glm::normalize(l + lobe.view);
   const float lobe_value =
       l.z > 0.0f ? float(ggx_specular_brdf(n_dot_v, l.z, h.z, lobe.alpha)) * l.z / lobe.albedo : 0.0f;
   const float ratio = ltc > 0.0f && std::isfinite(lobe_value / ltc) ? lobe_value / ltc : 1.0f;
-  const float weight = std::exp(-5.0f * glm::length(form_factor));
-  return integral * (weight * ratio + (1.0f - weight));
+  const float weight = std::exp(-5.0f * f_len);
+  return form_factor.z * (weight * ratio + (1.0f - weight));
 }
 
 namespace {
@@ -304,7 +302,7 @@ float capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, const LtcLo
   vec3 f(0.0f);
   const bool exact = cone && ltc_cone_form_factor(near, radius, ltc_to_cosine(n, v, lobe.entry), f);
   if (!exact) f = capsule_form_factor(end_on ? near : a, end_on ? near : b, radius, n, v, lobe.entry);
-  return f.z > 0.0f ? ltc_shape_corrected(f.z, f, lobe, n, v) : 0.0f;
+  return f.z > 0.0f ? ltc_shape_corrected(f, lobe) : 0.0f;
 }
 
 }  // namespace
@@ -327,8 +325,9 @@ float ltc_rect_specular(const RectLight& light, vec3 p, vec3 n, vec3 v, const Lt
   const vec3 corners[4] = {c - light.half_x - light.half_y, c + light.half_x - light.half_y,
                            c + light.half_x + light.half_y, c - light.half_x + light.half_y};
   for (int i = 0; i < 4; ++i) ltc_add_edge(poly, corners[i], corners[(i + 1) % 4]);
-  const float integral = ltc_finish(poly);
-  return specular_result(light.radiance, integral > 0.0f ? ltc_shape_corrected(integral, form_factor(poly), lobe, n, v) : 0.0f);
+  ltc_finish(poly);
+  const vec3 f = form_factor(poly);
+  return specular_result(light.radiance, f.z > 0.0f ? ltc_shape_corrected(f, lobe) : 0.0f);
 }
 
 }  // namespace lg

@@ -21,13 +21,15 @@
 
 namespace lg {
 
-// The GGX lobe at a view as the LTC specular reads it: the table's entry (ltc_lookup(n.v,
-// roughness)), alpha and the lobe's directional albedo E = A + B with Fresnel 1, which normalise
-// the exact lobe where the LTC's shape is corrected.
+// The GGX lobe at a view as the LTC specular reads it, once a pixel: the table's entry
+// (ltc_lookup(n.v, roughness)), and for the exact lobe where the LTC's shape is corrected alpha,
+// the lobe's directional albedo E = A + B with Fresnel 1, and the view in the frame of n and v,
+// (sqrt(1 - n.v^2), 0, n.v).
 struct LtcLobe {
   glm::vec4 entry{0.0f};
   float alpha = 0.0f;
   float albedo = 1.0f;
+  glm::vec3 view{0.0f, 0.0f, 1.0f};
 };
 LtcLobe ltc_lobe(float n_dot_v, float roughness);
 
@@ -35,10 +37,8 @@ LtcLobe ltc_lobe(float n_dot_v, float roughness);
 inline constexpr int kLtcArcSegments = 4;
 inline constexpr int kLtcOutlineVertices = 2 * (kLtcArcSegments + 1);
 
-// The frame of n (z) and v (x) at a surface, as columns: world directions to it by its transpose.
-glm::mat3 ltc_frame(glm::vec3 n, glm::vec3 v);
-
-// World directions to the LTC's cosine space at a surface: into ltc_frame, then M^-1.
+// World directions to the LTC's cosine space at a surface: the frame of n (z) and v (x), then
+// M^-1.
 glm::mat3 ltc_to_cosine(glm::vec3 n, glm::vec3 v, glm::vec4 entry);
 
 // I of a convex polygon, fed one edge at a time (either winding, relative to the shaded point)
@@ -92,14 +92,14 @@ glm::vec3 ltc_outline_vertex(const LtcOutline& outline, int j);
 // false (the caller clips a polygon). to_cosine is ltc_to_cosine's.
 bool ltc_cone_form_factor(glm::vec3 c, float radius, glm::mat3 to_cosine, glm::vec3& form_factor);
 
-// The LTC's integral I over a light whose vector form factor in the cosine's space is F, scaled
+// The LTC's integral I = F.z over a light whose vector form factor in the cosine's space is F, scaled
 // by the exact lobe over the LTC at F's direction carried back by M: the LTC's shape is off the
 // GGX lobe's by up to tens of percent pointwise (its tails, grazing views), and a small light
 // gathers that pointwise error, which the ratio removes. A large light's I is already close
 // (the LTC integrates to the lobe's energy), and one direction does not speak for it: the ratio
 // is weighed by exp(-5 |F|) (|F| is about the light's solid angle over pi in the cosine's space
 // while it is small), the plain I by the rest. Measured on the benchmark's points (README.md).
-float ltc_shape_corrected(float integral, glm::vec3 form_factor, const LtcLobe& lobe, glm::vec3 n, glm::vec3 v);
+float ltc_shape_corrected(glm::vec3 form_factor, const LtcLobe& lobe);
 
 float ltc_sphere_specular(const SphereLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, const LtcLobe& lobe);
 float ltc_tube_specular(const TubeLight& light, glm::vec3 p, glm::vec3 n, glm::vec3 v, const LtcLobe& lobe);

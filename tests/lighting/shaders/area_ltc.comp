@@ -9,7 +9,7 @@ layout(local_size_x = 64) in;
 struct Case {
   vec4 a;  // sphere: center, radius; tube: end0, radius; rectangle: center, two-sided
   vec4 b;  // tube: end1; rectangle: half_x
-  vec4 c;  // rectangle: half_y
+  vec4 c;  // rectangle: half_y; w: alpha
   vec4 p;  // w: roughness
   vec4 n;  // w: 0 sphere, 1 tube, 2 rectangle
   vec4 v;  // w: the lobe's directional albedo A + B (Fresnel 1)
@@ -24,7 +24,8 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= cases.length()) return;
   Case k = cases[i];
-  LtcLobe lobe = LtcLobe(ltc_lookup(max(dot(k.n.xyz, k.v.xyz), 1e-4), k.p.w), max(k.p.w * k.p.w, 1e-3), k.v.w);
+  float n_dot_v = max(dot(k.n.xyz, k.v.xyz), 1e-4);
+  LtcLobe lobe = ltc_lobe(ltc_lookup(n_dot_v, k.p.w), n_dot_v, k.c.w, k.v.w);
   float e = 0.0;
   if (k.n.w == 0.0) e = ltc_sphere_specular(k.a.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, lobe);
   else if (k.n.w == 1.0) e = ltc_tube_specular(k.a.xyz, k.b.xyz, k.a.w, k.p.xyz, k.n.xyz, k.v.xyz, lobe);

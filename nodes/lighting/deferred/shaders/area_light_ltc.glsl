@@ -8,13 +8,18 @@
 #include "nodes/common/shaders/brdf.glsl"
 #include "nodes/lighting/deferred/shaders/area_light_math.glsl"
 
-// As area_light_ltc.h's: ltc_lookup(n.v, roughness) (ltc_table.glsl), alpha and the lobe's
-// directional albedo A + B with Fresnel 1.
+// As area_light_ltc.h's, once a pixel: ltc_lookup(n.v, roughness) (ltc_table.glsl), alpha, the
+// lobe's directional albedo A + B with Fresnel 1 and the view in the frame of n and v.
 struct LtcLobe {
   vec4 entry;
   float alpha;
   float albedo;
+  vec3 view;
 };
+
+LtcLobe ltc_lobe(vec4 entry, float n_dot_v, float alpha, float albedo) {
+  return LtcLobe(entry, alpha, albedo, vec3(sqrt(max(1.0 - n_dot_v * n_dot_v, 0.0)), 0.0, n_dot_v));
+}
 
 const int LG_LTC_ARC_SEGMENTS = 4;
 const int LG_LTC_OUTLINE_VERTICES = 2 * (LG_LTC_ARC_SEGMENTS + 1);
@@ -27,17 +32,14 @@ float ltc_specular_result(float integral) {
   return clamp(finite_or_zero(integral), 0.0, 1.0);
 }
 
-mat3 ltc_frame(vec3 n, vec3 v) {
+mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
   n = normalize(n);
   vec3 t1 = v - n * dot(n, v);
   float len = length(t1);
   t1 = len > 1e-6 ? t1 / len : ltc_any_perpendicular(n);
-  return mat3(t1, cross(n, t1), n);
-}
-
-mat3 ltc_to_cosine(vec3 n, vec3 v, vec4 e) {
+  vec3 t2 = cross(n, t1);
   mat3 m_inv = mat3(vec3(e.x, 0.0, e.z), vec3(0.0, 1.0, 0.0), vec3(e.y, 0.0, e.w));
-  return m_inv * transpose(ltc_frame(n, v));
+  return m_inv * transpose(mat3(t1, t2, n));
 }
 
 vec3 ltc_edge_term(vec3 a, vec3 b) {
@@ -292,22 +294,22 @@ bool ltc_cone_form_factor(vec3 c, float radius, mat3 to_cosine, out vec3 form_fa
 // area_light_ltc.cpp's ltc_shape_corrected (which states why): in the frame of n and v, F's
 // direction o carried back by M (M^-1's adjugate m, up to the sign of its determinant), the
 // LTC's density there and the lobe's f (n.l) / E.
-float ltc_shape_corrected(float integral, vec3 form_factor, LtcLobe lobe, vec3 n, vec3 v) {
+float ltc_shape_corrected(vec3 form_factor, LtcLobe lobe) {
   vec4 e = lobe.entry;
   float det = e.x * e.w - e.y * e.z;
-  vec3 o = normalize(form_factor);
+  float f_len = length(form_factor);
+  vec3 o = form_factor / f_len;
   vec3 m = vec3(e.w * o.x - e.y * o.z, det * o.y, e.x * o.z - e.z * o.x);
   float m_len = length(m);
   vec3 l = m * ((det < 0.0 ? -1.0 : 1.0) / m_len);
   float ltc = o.z / LG_PI * m_len * m_len * m_len / (det * det);
-  vec3 frame_v = transpose(ltc_frame(n, v)) * v;
-  float n_dot_v = max(frame_v.z, 1e-4);
-  vec3 h = normalize(l + frame_v);
+  float n_dot_v = max(lobe.view.z, 1e-4);
+  vec3 h = normalize(l + lobe.view);
   float lobe_value = l.z > 0.0 ? ggx_distribution(h.z, lobe.alpha) * smith_visibility(n_dot_v, l.z, lobe.alpha) * l.z / lobe.albedo : 0.0;
   float ratio = lobe_value / ltc;
   ratio = ltc > 0.0 && !isinf(ratio) && !isnan(ratio) ? ratio : 1.0;
-  float weight = exp(-5.0 * length(form_factor));
-  return integral * (weight * ratio + (1.0 - weight));
+  float weight = exp(-5.0 * f_len);
+  return form_factor.z * (weight * ratio + (1.0 - weight));
 }
 
 // A capsule (a = b for a sphere) as area_light_ltc.cpp's capsule_specular: seen from within its
@@ -325,7 +327,7 @@ float ltc_capsule_specular(vec3 a, vec3 b, float radius, vec3 n, vec3 v, LtcLobe
   bool exact = false;
   if (cone) exact = ltc_cone_form_factor(near_, radius, ltc_to_cosine(n, v, lobe.entry), f);
   if (!exact) f = ltc_capsule_form_factor(end_on ? near_ : a, end_on ? near_ : b, radius, n, v, lobe.entry);
-  return f.z > 0.0 ? ltc_shape_corrected(f.z, f, lobe, n, v) : 0.0;
+  return f.z > 0.0 ? ltc_shape_corrected(f, lobe) : 0.0;
 }
 
 float ltc_sphere_specular(vec3 center, float radius, vec3 p, vec3 n, vec3 v, LtcLobe lobe) {
@@ -347,8 +349,9 @@ float ltc_rect_specular(vec3 center, vec3 hx, vec3 hy, bool two_sided, vec3 p, v
   ltc_add_edge(poly, c1, c2);
   ltc_add_edge(poly, c2, c3);
   ltc_add_edge(poly, c3, c0);
-  float integral = ltc_finish(poly);
-  return ltc_specular_result(integral > 0.0 ? ltc_shape_corrected(integral, ltc_form_factor(poly), lobe, n, v) : 0.0);
+  ltc_finish(poly);
+  vec3 f = ltc_form_factor(poly);
+  return ltc_specular_result(f.z > 0.0 ? ltc_shape_corrected(f, lobe) : 0.0);
 }
 
 #endif

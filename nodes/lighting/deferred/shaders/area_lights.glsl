@@ -60,7 +60,8 @@ vec3 area_radiance(Surface s) {
   vec3 diffuse_brdf = s.diffuse_color / LG_PI;
   vec3 r = reflection_dir(s);
   // alpha = roughness^2 above its floor, where the table's entries are alike.
-  LtcLobe ltc = LtcLobe(ltc_lookup(max(dot(s.normal, s.view), 1e-4), sqrt(s.alpha)), s.alpha, s.lobe_albedo);
+  float n_dot_v = max(dot(s.normal, s.view), 1e-4);
+  LtcLobe ltc = ltc_lobe(ltc_lookup(n_dot_v, sqrt(s.alpha)), n_dot_v, s.alpha, s.lobe_albedo);
   vec3 added = vec3(0.0);
   if (area_has_spheres && counts.z > 0u) {
     uint i = 0u;
