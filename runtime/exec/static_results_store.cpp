@@ -49,31 +49,34 @@ class FileHashMemo {
     const uintmax_t size = error ? 0 : fs::file_size(canonical, error);
     const fs::file_time_type modified = error ? fs::file_time_type() : fs::last_write_time(canonical, error);
     if (error) return hash_contents(path, hash);  // not a file: reading it says so
-    const Where where{canonical.string(), hash};  // stamped before the read: a write during it is seen next time
+    const std::string where = canonical.string();
+    const Stamped now{hash, size, modified, 0};  // stamped before the read: a write during it is seen next time
     {
       std::lock_guard lock(mutex_);
       const auto known = hashes_.find(where);
-      if (known != hashes_.end() && known->second.size == size && known->second.modified == modified) {
+      if (known != hashes_.end() && known->second.same_as(now)) {
         hash = known->second.hash;
         return true;
       }
     }
     if (!hash_contents(path, hash)) return false;
     std::lock_guard lock(mutex_);
-    hashes_[where] = {size, modified, hash};
+    hashes_[where] = {now.chained_onto, size, modified, hash};
     return true;
   }
 
  private:
-  // The file, and the hash its contents are chained onto (the files before it in the key).
-  using Where = std::pair<std::string, uint64_t>;
   struct Stamped {
+    uint64_t chained_onto;  // the hash the contents continue (the files before it in the key)
     uintmax_t size;
     fs::file_time_type modified;
     uint64_t hash;
+    bool same_as(const Stamped& o) const {
+      return chained_onto == o.chained_onto && size == o.size && modified == o.modified;
+    }
   };
   std::mutex mutex_;
-  std::map<Where, Stamped> hashes_;  // one entry a file and place in a key: a rewritten file replaces its own
+  std::map<std::string, Stamped> hashes_;  // one entry a file: bounded by the files a process reads
 };
 
 bool hash_file(const std::string& path, uint64_t& hash) {

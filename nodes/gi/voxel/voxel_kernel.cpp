@@ -105,6 +105,13 @@ class VoxelKernel final : public NodeKernel {
   }
 
  private:
+  // Whether the plan reads out.specular: fixed for the kernel's plan, found at the first pass
+  // that asks.
+  bool specular_read(PassContext& ctx) {
+    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
+    return *specular_read_;
+  }
+
   // Once a frame, at its first pass: the light, the grid and the constants, all from this
   // frame's scene (lights and objects may move every frame).
   void prepare(PassContext& ctx) {
@@ -361,9 +368,8 @@ class VoxelKernel final : public NodeKernel {
     Image& specular = ctx.image(k_ == 1 ? "out.specular" : "tmp.specular_lowres");
     // The specular cone only where its output is read (examples/gi-voxel.json does not link it):
     // else its image is neither written, kept nor copied back.
-    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
     const std::array<Image*, 3> all_targets{&target, &ao, &specular};
-    const std::span<Image* const> targets(all_targets.data(), *specular_read_ ? 3 : 2);
+    const std::span<Image* const> targets(all_targets.data(), specular_read(ctx) ? 3 : 2);
     // A frame that changes neither the volume nor the camera (a jittered one changes the camera)
     // sees the same G-buffer: the cones' last results are copied back instead of traced.
     if (!rebuild_ && kept_camera_ &&
@@ -389,7 +395,7 @@ class VoxelKernel final : public NodeKernel {
         storage_buffer(12, sh_buffer(ctx)),
         storage_buffer(13, grid_sums_.handle())};
     // kTraceSpecular and kGatherSky.
-    const uint32_t constants[] = {*specular_read_ ? 1u : 0u, sky_ ? 1u : 0u};
+    const uint32_t constants[] = {specular_read(ctx) ? 1u : 0u, sky_ ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_cones.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)), kTileSize, constants);
     keep_cones(ctx, targets);
@@ -427,8 +433,7 @@ class VoxelKernel final : public NodeKernel {
                                       sampled_image(6, ctx.image("tmp.specular_lowres").view(), ctx.nearest_sampler()),
                                       storage_image(7, ctx.image("out.specular").view())};
     // kSpecular: the upsample writes the specular output only where the cones traced it.
-    if (!specular_read_) specular_read_ = output_read(ctx, "out.specular");
-    const uint32_t constants[] = {*specular_read_ ? 1u : 0u};
+    const uint32_t constants[] = {specular_read(ctx) ? 1u : 0u};
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_upsample.comp", writes, low.desc().width, low.desc().height,
                      std::as_bytes(std::span(&k_, 1)), kTileSize, constants);
   }
@@ -453,7 +458,7 @@ class VoxelKernel final : public NodeKernel {
   bool rebuild_ = true;                // this frame voxelizes, injects and builds the chain
   std::array<Image, 3> kept_;                  // the cones' last irradiance, AO and specular where read
   std::optional<CameraConstants> kept_camera_;  // the camera they were traced from; none yet
-  std::optional<bool> specular_read_;  // the plan reads out.specular (fixed for the kernel's plan)
+  std::optional<bool> specular_read_;  // specular_read()'s, once found
   bool sky_ = false;                   // the environment's SH linked and the scene has an environment
   VoxelLocalLights local_lights_;      // this frame's (prepare())
   std::vector<std::byte> built_from_;  // what the chain was last built from (prepare())
