@@ -17,7 +17,7 @@
 #include "nodes/common/node_shaders.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
-#include "nodes/gi/common/static_input.h"
+#include "nodes/gi/common/rebuild_key.h"
 #include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/gi/lpv/lpv_model.h"
 #include "nodes/lighting/deferred/shadow_depth_pipeline.h"
@@ -54,13 +54,12 @@ struct RsmLight {  // shaders/lpv_rsm.frag
   glm::vec4 direction, irradiance;
 };
 
-// The SH's part of the sky's key (LpvKernel::record_volume): static_producer_key of the SH this
-// pass reads.
-std::optional<uint64_t> static_sh_key(PassContext& ctx) {
+// Whether the SH this pass reads is the same every frame (is_static_result).
+bool static_sh(PassContext& ctx) {
   const Plan& plan = ctx.plan();
   for (const PlanAccess& a : plan.accesses_of(ctx.pass()))
-    if (plan.slot_of(a) == "in.sh") return static_producer_key(plan, a);
-  return std::nullopt;
+    if (plan.slot_of(a) == "in.sh") return is_static_result(plan, a);
+  return false;
 }
 
 // lpv_model.h's face table as shaders/lpv_propagate.comp reads it: 30 bases, then 30 lobes.
@@ -158,24 +157,18 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
     const std::vector<DrawConstants> draws = draw_constants(scene);
     draws_->write(draws);
     draw_blocks_->write(draw_blocks(draws));  // the reflective shadow map's (shadow_draw.glsl)
-    geometry_key(scene, draws);
+    frame_draws_ = draws;
   }
 
-  // What the sky's march depends on besides the SH, as gi.voxel's built_from_: the grid, the
-  // draws (transforms, materials), which mesh each draws (a draw may swap meshes of the same
-  // bounds) and the meshes' contents (scene.version). Not the light: the march ignores it.
-  void geometry_key(const SceneView& scene, const std::vector<DrawConstants>& draws) {
-    sky_key_.clear();
-    auto append = [this](const void* data, size_t bytes) {
-      const auto* first = static_cast<const std::byte*>(data);
-      sky_key_.insert(sky_key_.end(), first, first + bytes);
-    };
-    append(&grid_.origin, sizeof(grid_.origin));
-    append(&grid_.cell, sizeof(grid_.cell));
-    append(&grid_.counts, sizeof(grid_.counts));
-    append(&scene.version, sizeof(scene.version));
-    append(draws.data(), draws.size() * sizeof(DrawConstants));
-    for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
+  // What the sky's march depends on besides the SH: the grid and the geometry. Not the light:
+  // the march ignores it.
+  std::vector<std::byte> sky_key(const SceneView& scene) const {
+    std::vector<std::byte> key;
+    append_key(key, &grid_.origin, sizeof(grid_.origin));
+    append_key(key, &grid_.cell, sizeof(grid_.cell));
+    append_key(key, &grid_.counts, sizeof(grid_.counts));
+    append_geometry_key(key, scene, frame_draws_);
+    return key;
   }
 
   // The grids, sized when the counts change (the box of a moving world may change them). The
@@ -269,13 +262,13 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
     sky_ = ctx.has("in.sh") && ctx.scene().has_environment;
     constants_value_.scales.z = light_present_ || sky_ ? 1.0f : 0.0f;
     constants_->write_value(constants_value_);
-    // The march is kept while the grid, the geometry and the SH stay the same (the sky's images
-    // then hold it); the bounce depends on it but goes into this frame's light, so it runs always.
-    const std::optional<uint64_t> sh_key = static_sh_key(ctx);
-    if (sh_key) sky_key_.insert(sky_key_.end(), reinterpret_cast<const std::byte*>(&*sh_key),
-                                reinterpret_cast<const std::byte*>(&*sh_key + 1));
-    march_sky_ = sky_ && (images_new_ || !sky_written_ || !sh_key || sky_key_ != marched_from_);
-    marched_from_ = sky_ ? sky_key_ : std::vector<std::byte>{};
+    // The march is kept while the grid, the geometry and a static SH stay the same (the sky's
+    // images then hold it; new images come with new counts, so a new key); the bounce depends on
+    // it but goes into this frame's light, so it runs always. A frame without the sky forgets
+    // the march (its images are cleared).
+    std::vector<std::byte> key = sky_ ? sky_key(ctx.scene()) : std::vector<std::byte>{};
+    march_sky_ = sky_ && (!static_sh(ctx) || key != marched_from_);
+    marched_from_.swap(key);
     inject(ctx);
     propagate(ctx);
     lookup(ctx);
@@ -288,7 +281,8 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
                                  &light_[0][2], &light_[1][0], &light_[1][1], &light_[1][2], &occlusion_grid_,
                                  &sky_planes_, &sky_images_[0], &sky_images_[1], &sky_images_[2], &sky_images_[3]})
         image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-    // Without the sky the lookup reads its images as zeros (cleared with the sums below).
+    // Without the sky the volume output reads its images as zeros (cleared with the sums below;
+    // the lookup leaves them out, kAddSky).
     const bool clear_sky = !sky_ && (images_new_ || sky_written_);
     sky_written_ = sky_;
     images_new_ = false;
@@ -463,8 +457,9 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
   uint64_t sky_marches_ = 0;  // frames that marched it (LpvSkyMarches)
   // What the sky's march depends on this frame (prepare, record_volume), and what the sky's
   // images were last marched from (empty: not marched, or the sky absent since).
-  std::vector<std::byte> sky_key_, marched_from_;
-  Constants constants_value_{};  // as prepare() wrote them
+  std::vector<DrawConstants> frame_draws_;  // this frame's (prepare())
+  std::vector<std::byte> marched_from_;     // sky_key() of the last march; empty without the sky
+  Constants constants_value_{};  // as prepare() made them; record_volume adds the coverage and writes them
   glm::ivec3 allocated_counts_{0};  // none yet
   std::optional<HostBuffer> constants_, rsm_light_, draws_, draw_blocks_, camera_, faces_;
   Buffer light_fixed_, occlusion_fixed_, sum_;

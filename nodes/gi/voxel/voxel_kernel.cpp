@@ -18,7 +18,7 @@
 #include "nodes/common/node_params.h"
 #include "nodes/gi/common/cell_grid.h"
 #include "nodes/gi/common/main_light.h"
-#include "nodes/gi/common/static_input.h"
+#include "nodes/gi/common/rebuild_key.h"
 #include "nodes/gi/common/voxelize_draws.h"
 #include "nodes/gi/voxel/voxel_local_lights.h"
 #include "nodes/lighting/deferred/shadow_depth_pipeline.h"
@@ -144,23 +144,15 @@ class VoxelKernel final : public NodeKernel {
     c.sources = glm::ivec4(light_present_ ? 1 : 0, sky_ ? 1 : 0, local_lights_.count,
                            light_present_ || sky_ || local_lights_.count > 0 ? 1 : 0);
     const std::vector<DrawConstants> draws = draw_constants(scene);
-    // The volume is rebuilt only when what it is made of changed: the grid, the light, the draws
-    // (transforms, materials), which mesh each draws (not in DrawConstants: a draw may swap
-    // meshes of the same bounds) or the meshes' contents (scene.version). Anything that moves
-    // changes one of those, so the frame it moves in rebuilds, and a static scene pays for the
-    // cones alone.
+    // The volume is rebuilt only when what it is made of changed: the grid and the light (the
+    // constants), the local lights, the geometry, or the sky's SH where it is not a static
+    // result. So the frame something moves in rebuilds, and a static scene pays for the cones
+    // alone.
     std::vector<std::byte> key;
-    auto append = [&key](const void* data, size_t bytes) {
-      const auto* first = static_cast<const std::byte*>(data);
-      key.insert(key.end(), first, first + bytes);
-    };
-    append(&c, sizeof(c));
-    append(local_lights_.lights.data(), local_lights_.count * sizeof(VoxelLocalLight));  // not the padding
-    append(&scene.version, sizeof(scene.version));
-    append(draws.data(), draws.size() * sizeof(DrawConstants));
-    for (const DrawItem& d : scene.draws) append(&d.mesh, sizeof(d.mesh));
-    // A sky whose SH is not a static result (an animated sky) may change in any frame.
-    rebuild_ = images_new_ || key != built_from_ || (sky_ && !static_producer_key(ctx.plan(), *sh));
+    append_key(key, &c, sizeof(c));
+    append_key(key, local_lights_.lights.data(), local_lights_.count * sizeof(VoxelLocalLight));  // not the padding
+    append_geometry_key(key, scene, draws);
+    rebuild_ = images_new_ || key != built_from_ || (sky_ && !is_static_result(ctx.plan(), *sh));
     built_from_ = std::move(key);
     if (!constants_) {
       constants_.emplace(ctx.gpu(), ctx.node().id + " constants", VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
