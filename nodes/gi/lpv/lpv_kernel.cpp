@@ -182,23 +182,23 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
     light_fixed_ = buffer("injected light", 48);
     occlusion_fixed_ = buffer("injected occlusion", 48);  // lpv_voxelize.comp
     sum_ = buffer("light sum", 48);
-    auto image = [&](const std::string& name, VkFormat format, VkImageUsageFlags extra_usage = 0) {
+    auto image = [&](const std::string& name, VkFormat format) {
       return Image::dedicated(ctx.gpu(), {.name = ctx.node().id + " " + name,
                                           .kind = ImageKind::image3d,
                                           .format = format,
                                           .width = uint32_t(grid_.counts.x),
                                           .height = uint32_t(grid_.counts.y),
                                           .depth = uint32_t(grid_.counts.z),
-                                          .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | extra_usage});
+                                          .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT});
     };
     const char* channels[3] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {
       sum_images_[c] = image(std::string("light sum ") + channels[c], VK_FORMAT_R16G16B16A16_SFLOAT);
       light_[0][c] = image(std::string("light a ") + channels[c], VK_FORMAT_R32G32B32A32_SFLOAT);
       light_[1][c] = image(std::string("light b ") + channels[c], VK_FORMAT_R32G32B32A32_SFLOAT);
-      sky_images_[c] = image(std::string("sky ") + channels[c], VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+      sky_images_[c] = image(std::string("sky ") + channels[c], VK_FORMAT_R16G16B16A16_SFLOAT);
     }
-    sky_images_[3] = image("sky openness", VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    sky_images_[3] = image("sky openness", VK_FORMAT_R16G16B16A16_SFLOAT);
     occlusion_grid_ = image("occlusion", VK_FORMAT_R32G32B32A32_SFLOAT);
     sky_planes_ = image("sky planes", VK_FORMAT_R32G32B32A32_SFLOAT);
     images_new_ = true;
@@ -281,21 +281,14 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
                                  &light_[0][2], &light_[1][0], &light_[1][1], &light_[1][2], &occlusion_grid_,
                                  &sky_planes_, &sky_images_[0], &sky_images_[1], &sky_images_[2], &sky_images_[3]})
         image_barrier(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-    // Without the sky the volume output reads its images as zeros (cleared with the sums below;
-    // the lookup leaves them out, kAddSky).
-    const bool clear_sky = !sky_ && (images_new_ || sky_written_);
-    sky_written_ = sky_;
+    // Without the sky nothing reads its images (the lookup and the volume output leave them out,
+    // kAddSky), so they are not cleared; the next frame with the sky marches them anew.
     images_new_ = false;
     // Last frame's resolve read the fixed-point sums; clear them for this frame's atomics.
     memory_barrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
                    {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     vkCmdFillBuffer(cmd, light_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, occlusion_fixed_.handle(), 0, VK_WHOLE_SIZE, 0);
-    if (clear_sky) {
-      const VkClearColorValue zero{};
-      const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-      for (const Image& image : sky_images_) vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
-    }
     memory_barrier(cmd, {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                    {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
                                                                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
@@ -397,13 +390,13 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
     const uint32_t add_sky = sky_ ? 1u : 0u;
     dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_lookup.comp", writes, target.desc().width, target.desc().height,
                      std::as_bytes(std::span(&k_, 1)), kTileSize, std::span(&add_sky, 1));
-    if (ctx.has("out.volume")) write_volume(ctx);
+    if (ctx.has("out.volume")) write_volume(ctx, add_sky);
   }
 
   // The optional volume output (linked or dumped): the sum's and the sky's L0 terms as mean
   // irradiance (lpv_volume.comp), after the store above (its barrier precedes the lookup, which
   // also reads).
-  void write_volume(PassContext& ctx) {
+  void write_volume(PassContext& ctx, uint32_t add_sky) {
     Image& volume = ctx.image("out.volume");
     const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), general_sampled(ctx, 1, sum_images_[0]),
                                       general_sampled(ctx, 2, sum_images_[1]), general_sampled(ctx, 3, sum_images_[2]),
@@ -411,7 +404,8 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
                                       general_sampled(ctx, 6, sky_images_[1]),   general_sampled(ctx, 7, sky_images_[2]),
                                       general_sampled(ctx, 8, sky_images_[3])};
     const ImageDesc& d = volume.desc();
-    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_volume.comp", writes, d.width, d.height * d.depth);
+    dispatch_compute(ctx, "nodes/gi/lpv/shaders/lpv_volume.comp", writes, d.width, d.height * d.depth, {}, kTileSize,
+                     std::span(&add_sky, 1));
   }
 
   // At resolution_scale below 1, the lookup's smaller image to full resolution, guided by depth
@@ -452,7 +446,6 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
   glm::mat4 shadow_from_world_{1.0f};
   bool light_present_ = false;
   bool sky_ = false;          // the sky's light added (record_volume)
-  bool sky_written_ = false;  // the sky's images hold last frame's sky
   bool march_sky_ = false;    // this frame marches the sky (record_volume)
   uint64_t sky_marches_ = 0;  // frames that marched it (LpvSkyMarches)
   // What the sky's march depends on this frame (prepare, record_volume), and what the sky's

@@ -7,8 +7,8 @@
 // lpv_store.comp's radiance L = sum c_i Y_i, E averaged over the normals is a quarter of the
 // radiance's integral over the sphere, c_0 Y_0 4 pi / 4 = c_0 sqrt(pi) / 2: the SH L0 term.
 // With the sky linked, the sky's light at the cell (lpv_sky.comp's images, its radiance SH times
-// the cell's openness, divided by it as the lookup does; zero images without the sky) is added
-// the same way, so the view holds all the light the lookup reads.
+// the cell's openness, divided by it as the lookup does; not read without the sky, kAddSky, as the
+// lookup) is added the same way, so the view holds all the light the lookup reads.
 #include "nodes/gi/lpv/shaders/lpv_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -21,6 +21,7 @@ layout(binding = 5) uniform sampler3D sky_red;  // lpv_sky.comp's images, texelF
 layout(binding = 6) uniform sampler3D sky_green;
 layout(binding = 7) uniform sampler3D sky_blue;
 layout(binding = 8) uniform sampler3D sky_openness;
+layout(constant_id = 0) const int kAddSky = 1;
 
 void main() {
   ivec3 size = imageSize(volume);
@@ -32,7 +33,9 @@ void main() {
     return;
   }
   vec3 l0 = vec3(texelFetch(sum_red, c, 0).x, texelFetch(sum_green, c, 0).x, texelFetch(sum_blue, c, 0).x);
-  vec3 sky = vec3(texelFetch(sky_red, c, 0).x, texelFetch(sky_green, c, 0).x, texelFetch(sky_blue, c, 0).x);
-  l0 += sky / max(texelFetch(sky_openness, c, 0).r, 1e-3);
+  if (kAddSky != 0) {
+    vec3 sky = vec3(texelFetch(sky_red, c, 0).x, texelFetch(sky_green, c, 0).x, texelFetch(sky_blue, c, 0).x);
+    l0 += sky / max(texelFetch(sky_openness, c, 0).r, 1e-3);
+  }
   imageStore(volume, c, vec4(max(l0, vec3(0.0)) * kCosineY00, 1.0));  // c_0 sqrt(pi) / 2 (above)
 }
