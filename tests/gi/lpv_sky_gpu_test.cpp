@@ -55,8 +55,9 @@ Graph lpv_sky_graph(const std::string& environment) {
 
 const std::string kSky = R"({ "id": "sky", "type": "env.sky", "params": { "face_size": 16 } })";
 
-// A camera at `eye` looking along `look`, a sun of zero intensity (gi.lpv needs a directional
-// light to run; this one adds nothing) and the environment the SH stands for.
+// A camera at `eye` looking along `look`, a sun of zero intensity (it adds nothing; the sun's
+// passes run as in a lit world, so the sky is measured beside them) and the environment the SH
+// stands for.
 void add_camera_sun_and_sky(World& world, glm::vec3 eye, glm::vec3 look) {
   add_camera_and_sun(world, eye, look, {-0.2f, -1.0f, -0.1f}, 0.0f);
   world.add(world.create("environment"), EnvironmentLight{});
