@@ -9,9 +9,11 @@
 // on-axis irradiance exactly, L pi R^2 / (d^2 + R^2)), at least a quarter voxel squared so that a
 // light inside a voxel stays finite. Visibility from the voxels' own opacity (not the shadow
 // atlas: the volume is rebuilt without lighting.deferred's passes): a ray through the chain's
-// opacity at voxel_ray_level() (voxel_common.glsl), from 1.5 of its voxels out along the normal (where the trilinear filter no longer
-// reaches the surface's own voxels) to 1.5 short of the light (a lamp lies in its ceiling's
-// voxels), transmittance the product of (1 - opacity) at steps of one of those voxels. A coarser
+// opacity at voxel_ray_level() (voxel_common.glsl), from 1.5 of its voxels out along the normal
+// (where the trilinear filter no longer reaches the surface's own voxels) to 1.5 short of the
+// light (a lamp lies in its ceiling's voxels; a light that shines one way is aimed at from 1.5
+// of them out of it that way), transmittance the product of (1 - opacity) at steps of one of
+// those voxels. A coarser
 // level keeps a wall opaque along its normal (the chain composites front to back along each
 // axis) but lets a ray past a thin object's edge more easily.
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
@@ -36,11 +38,16 @@ layout(std140, binding = 10) uniform LightsBlock { LocalLight lights[kMaxLocalLi
 
 const int kMaxSteps = 128;  // voxel_ray_level()'s grid's diagonal is 111 voxels
 
+// The width of a voxel of voxel_ray_level().
+float ray_cell() {
+  return voxel.origin_cell.w * exp2(float(voxel_ray_level()));
+}
+
 // The share of the light that passes from `from` to `to` through the opacity of voxel_ray_level().
 float transmittance(vec3 from, vec3 to) {
   int level = voxel_ray_level();
-  float cell = voxel.origin_cell.w * exp2(float(level));
-  vec3 grid_size = cell * vec3(voxel.counts.xyz);
+  float cell = ray_cell();
+  vec3 grid_size = voxel.origin_cell.w * vec3(voxel.counts.xyz);  // the counts are level 0's
   vec3 d = to - from;
   float length_left = length(d) - 1.5 * cell;
   if (!(length_left > 0.0)) return 1.0;
@@ -75,7 +82,13 @@ vec3 irradiance(LocalLight light, vec3 p, vec3 n, vec3 from) {
   float size = max(light.intensity_size.w, 0.25 * voxel.origin_cell.w * voxel.origin_cell.w);
   float e = cosine * toward * window / (d2 + size);
   if (!(e > 0.0)) return vec3(0.0);
-  return light.intensity_size.rgb * (e * transmittance(from, light.position_range.xyz));
+  // A light that shines one way (a spot, a rectangle: toward the voxel's side for a two-sided one)
+  // is aimed at from 1.5 ray voxels out of it that way, past the voxels of the ceiling or wall it
+  // lies on: a ray ending beside the light ran along that surface, whose filtered opacity took up
+  // to 26% of a ceiling lamp's light (ACeilingLampsLightReachesTheFloorVoxelsPastTheCeiling).
+  float out_of_surface = kind == 0 ? 0.0 : (along < 0.0 ? -1.5 : 1.5) * ray_cell();
+  vec3 aim = light.position_range.xyz + light.axis_kind.xyz * out_of_surface;
+  return light.intensity_size.rgb * (e * transmittance(from, aim));
 }
 
 void main() {
@@ -89,7 +102,7 @@ void main() {
   n /= len;
   float cell = voxel.origin_cell.w;
   vec3 p = voxel.origin_cell.xyz + (vec3(c) + 0.5) * cell;
-  vec3 from = p + n * (1.5 * cell * exp2(float(voxel_ray_level())));
+  vec3 from = p + n * (1.5 * ray_cell());
   vec3 e = vec3(0.0);
   int count = min(voxel.sources.z, kMaxLocalLights);
   for (int i = 0; i < count; ++i) e += irradiance(lights[i], p, n, from);
