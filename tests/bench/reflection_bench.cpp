@@ -30,7 +30,9 @@
 #include <string>
 #include <vector>
 
+#include "graph/scene_summary.h"
 #include "runtime/image/image_file.h"
+#include "runtime/scene/make_scene_view.h"
 #include "tests/bench/bench_flags.h"
 #include "tests/bench/reference_cache.h"
 #include "tests/lighting/captured_reflection_mask.h"
@@ -196,10 +198,8 @@ bool has_planar_reflector(const World& world) {
   return found;
 }
 
-bool has_directional_light(const World& world) {
-  bool found = false;
-  world.each<DirectionalLight>([&](Entity, const DirectionalLight&) { found = true; });
-  return found;
+bool has_light(const World& world) {
+  return make_scene_view(world, 1.0f).summary().has(SceneFeature::lights);
 }
 
 void measure_world(const Options& o, const test::ReflectionWorld& w, const std::string& world_file,
@@ -260,10 +260,10 @@ void measure_world(const Options& o, const test::ReflectionWorld& w, const std::
     for (const ReflectionSource source :
          {ReflectionSource::planar, ReflectionSource::planar_with_probes, ReflectionSource::planar_with_ssr})
       for (const double scale : o.planar_scales) m.measure({.source = source, .planar_scale = scale});
-  // gi.voxel carries the main directional light's bounce; elsewhere it is bypassed.
-  if (has_directional_light(w.world))
-    for (const double scale : o.voxel_scales)
-      for (const bool sky : {true, false})
+  // gi.voxel carries the lights' bounce and, with `sh` linked, the sky's; with neither it is bypassed.
+  for (const double scale : o.voxel_scales)
+    for (const bool sky : {true, false})
+      if (sky || has_light(w.world))
         m.measure({.source = ReflectionSource::voxel, .voxel_scale = scale, .voxel_sky = sky});
   std::printf("\n");
   points.insert(points.end(), m.points.begin(), m.points.end());
@@ -306,7 +306,7 @@ const char* const usage =
     "  --scales LIST       lighting.ssr resolution_scale values (default 1)\n"
     "  --planar-scales LIST gi.planar_reflection resolution_scale values, on worlds with planar reflectors\n"
     "                      (default 1,0.5,0.25)\n"
-    "  --voxel-scales LIST gi.voxel resolution_scale values, on worlds with a directional light\n"
+    "  --voxel-scales LIST gi.voxel resolution_scale values (without its sky: on worlds with a light)\n"
     "                      (default 0.5,0.25)\n"
     "  --worlds LIST       room, gallery, cornell (the Cornell box, floor and tall block metal)\n"
     "                      (default room,gallery)\n"

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -32,7 +33,7 @@ enum class Capture { path_traced, raster, raster_two_bounces };
 // The example graph with small captures (32x32 faces; path traced at 8 paths a texel: enough for
 // a room of smooth colours, and cheap), its probe linked into lighting.ibl or not, parallax on or off.
 Graph probe_graph(Specular mode, Capture capture = Capture::path_traced) {
-  std::ifstream file(std::string(LUMAGRAPH_SOURCE_DIR "/") + kExample);
+  std::ifstream file(std::filesystem::path(LUMAGRAPH_SOURCE_DIR) / kExample);
   std::stringstream text;
   text << file.rdbuf();
   std::string graph = text.str();

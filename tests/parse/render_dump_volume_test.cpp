@@ -56,7 +56,9 @@ Volume read_vti(const std::string& path) {
   // XML allows no "--" inside a comment: VTK's reader refused the first dumps, whose comment
   // quoted the option.
   const size_t comment = text.find("<!--");
-  if (comment != std::string::npos) EXPECT_EQ(text.find("--", comment + 4), text.find("-->", comment + 4)) << path;
+  if (comment != std::string::npos) {
+    EXPECT_EQ(text.find("--", comment + 4), text.find("-->", comment + 4)) << path;
+  }
   const size_t data = text.find('_', text.find("<AppendedData"));
   uint64_t bytes = 0;
   std::memcpy(&bytes, text.data() + data + 1, sizeof bytes);
@@ -139,7 +141,9 @@ TEST(RenderDumpVolume, WritesEveryMipOfTheVoxels) {
     const Volume m = read_vti(dir.file("dump/gi.volume.mip" + std::to_string(mip) + ".vti"));
     EXPECT_EQ(m.dims[0], 8 >> mip);
     EXPECT_EQ(m.dims[2], 8 >> mip);
-    if (mip == 3) EXPECT_GT(m.at(0, 0, 0)[3], 0.0f);
+    if (mip == 3) {
+      EXPECT_GT(m.at(0, 0, 0)[3], 0.0f);
+    }
   }
   EXPECT_FALSE(fs::exists(dir.file("dump/gi.volume.mip4.vti")));
 }

@@ -45,7 +45,7 @@ std::string open_error(const std::string& path) {
 // took 10 s and 1.3 GB to refuse it, with a message that did not say why.
 TEST(ImageFile, ExrAttributeLongerThanTheFileIsRefusedByName) {
   const std::string path =
-      std::string(LUMAGRAPH_SOURCE_DIR) + "/fuzz/regressions/env_image/exr-string-attribute-claims-1gb";
+      std::string(LUMAGRAPH_SOURCE_DIR "/fuzz/regressions/env_image/exr-string-attribute-claims-1gb");
   const std::string message = open_error(path);
   EXPECT_EQ(message.rfind(path + ": error: the EXR header's attribute 'capDate' (string) declares 1095909155 bytes", 0),
             0u)

@@ -5,6 +5,8 @@
 // (floats from JSON doubles); on 8-bit normalised values 1e-6 (the division is exact in float).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "import_test_support.h"
 #include "runtime/scene/mesh_import.h"
 
@@ -17,7 +19,7 @@ using test::replaced;
 using test::write_variant;
 
 std::string asset(const std::string& name) {
-  return std::string(LUMAGRAPH_SOURCE_DIR) + "/examples/gltf/" + name;
+  return (std::filesystem::path(LUMAGRAPH_SOURCE_DIR "/examples/gltf") / name).string();
 }
 
 World load(const std::string& path) {

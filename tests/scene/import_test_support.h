@@ -15,7 +15,7 @@
 namespace lg::test {
 
 inline std::string fixture(const std::string& name) {
-  return std::string(LUMAGRAPH_SOURCE_DIR) + "/tests/scene/data/" + name;
+  return (std::filesystem::path(LUMAGRAPH_SOURCE_DIR "/tests/scene/data") / name).string();
 }
 
 inline std::string read_bytes(const std::string& path) {

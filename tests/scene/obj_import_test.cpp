@@ -20,7 +20,7 @@ using test::fixture;
 using test::write_variant;
 
 std::string bunny_path() {
-  return std::string(LUMAGRAPH_SOURCE_DIR) + "/../shared/data/mesh/bunny.obj";
+  return std::string(LUMAGRAPH_SOURCE_DIR "/../shared/data/mesh/bunny.obj");
 }
 
 TEST(ObjImport, CubeWithMaterials) {

@@ -20,10 +20,10 @@ namespace fs = std::filesystem;
 
 // Scene text is "written" into tests/scene/data/ so that its relative paths find the fixtures.
 std::string data_dir() {
-  return std::string(LUMAGRAPH_SOURCE_DIR) + "/tests/scene/data";
+  return std::string(LUMAGRAPH_SOURCE_DIR "/tests/scene/data");
 }
 std::string fake_path() {
-  return data_dir() + "/inline.json";
+  return std::string(LUMAGRAPH_SOURCE_DIR "/tests/scene/data/inline.json");
 }
 
 // The messages of parse_scene_file(text), "line:col: message (pointer)" without the file name.
