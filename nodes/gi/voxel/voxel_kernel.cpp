@@ -37,7 +37,7 @@
 namespace lg {
 namespace {
 
-constexpr uint64_t kGridBytesPerVoxel = 11 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
+constexpr uint64_t kGridBytesPerVoxel = 14 * sizeof(int32_t);  // voxel_common.glsl's LG_VOXEL_INTS
 
 struct Constants {  // shaders/voxel_common.glsl
   glm::vec4 origin_cell;
@@ -50,7 +50,7 @@ struct Constants {  // shaders/voxel_common.glsl
 };
 
 // The second injection's push (shaders/voxel_inject.comp): what it adds to the sun's light.
-constexpr int32_t kInjectSky = 1, kInjectLocalLights = 2;
+constexpr int32_t kInjectSky = 1, kInjectLocalLights = 2, kInjectBounce = 4;
 
 // The access of this node's pass `pass` to `slot`, or null (an optional input unlinked): the
 // kernel's first pass of a frame (the shadow's) decides for the volume pass.
@@ -90,6 +90,7 @@ class VoxelKernel final : public NodeKernel {
   explicit VoxelKernel(const PlanNode& node)
       : resolution_(int(param_number(node, "resolution"))),
         ao_distance_(float(param_number(node, "ao_distance"))),
+        bounces_(int(param_number(node, "bounces"))),
         k_(resolution_divisor(node)) {}
 
   void record(PassContext& ctx) override {
@@ -232,10 +233,18 @@ class VoxelKernel final : public NodeKernel {
       inject(ctx, 0);
       build_chain(ctx);
       // The sky's and the local lights' light need the chain of the sun's to see what is open.
-      if (sky_ || local_lights_.count > 0) {
+      const int32_t direct = (sky_ ? kInjectSky : 0) | (local_lights_.count > 0 ? kInjectLocalLights : 0);
+      if (direct != 0) {
         if (sky_) sky_visibility(ctx);
         if (local_lights_.count > 0) local_lights(ctx);
-        inject(ctx, (sky_ ? kInjectSky : 0) | (local_lights_.count > 0 ? kInjectLocalLights : 0));
+        inject(ctx, direct);
+        build_chain(ctx);
+      }
+      // Each further bounce: every voxel gathers the light the chain holds, and the injection adds
+      // what its surface reflects of it to its direct light.
+      for (int bounce = 1; bounce < bounces_; ++bounce) {
+        gather_bounce(ctx);
+        inject(ctx, direct | kInjectBounce);
         build_chain(ctx);
       }
     }
@@ -277,7 +286,8 @@ class VoxelKernel final : public NodeKernel {
 
   // The sums into level 0 (the chain kept in the GENERAL layout); `second` adds the sky's light
   // (kInjectSky: each voxel's visibility in its sums, from sky_visibility()) and the local lights'
-  // (kInjectLocalLights: their irradiance in the sums, from local_lights()).
+  // (kInjectLocalLights: their irradiance in the sums, from local_lights()) and the bounced light's
+  // (kInjectBounce: its irradiance in the sums, from gather_bounce()).
   void inject(PassContext& ctx, int32_t second) {
     VkCommandBuffer cmd = ctx.cmd();
     if (images_new_) {
@@ -307,7 +317,8 @@ class VoxelKernel final : public NodeKernel {
   }
 
   // What the passes that light the voxels' sums through the chain bind (voxel_sky.comp,
-  // voxel_local_lights.comp): the constants, the sums, the chain as rays see it and the opacity.
+  // voxel_local_lights.comp, voxel_bounce.comp): the constants, the sums, the chain as rays see it
+  // and the opacity.
   std::vector<DescriptorWrite> sums_and_chain(PassContext& ctx) {
     return {uniform_buffer(0, constants_->handle()),
             storage_buffer(1, grid_sums_.handle()),
@@ -324,6 +335,14 @@ class VoxelKernel final : public NodeKernel {
     std::vector<DescriptorWrite> writes = sums_and_chain(ctx);
     writes.push_back(uniform_buffer(10, lights_->handle()));
     dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_local_lights.comp", writes, uint32_t(grid_.counts.x),
+                     uint32_t(grid_.counts.y * grid_.counts.z));
+  }
+
+  // Per voxel, the irradiance of the light the chain holds on its surface (voxel_bounce.comp),
+  // into its sums.
+  void gather_bounce(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());  // the chain's last level
+    dispatch_compute(ctx, "nodes/gi/voxel/shaders/voxel_bounce.comp", sums_and_chain(ctx), uint32_t(grid_.counts.x),
                      uint32_t(grid_.counts.y * grid_.counts.z));
   }
 
@@ -432,6 +451,7 @@ class VoxelKernel final : public NodeKernel {
 
   const int resolution_;
   const float ao_distance_;
+  const int bounces_;
   const int32_t k_;  // the G-buffer's resolution over the cones' targets: 1 / resolution_scale
   std::optional<uint64_t> prepared_frame_;
   CellGrid grid_;

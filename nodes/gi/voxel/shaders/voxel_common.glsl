@@ -21,11 +21,12 @@ struct VoxelConstants {
 
 layout(std140, binding = 0) uniform ConstantsBlock { VoxelConstants voxel; };
 
-// The voxelization's sums, 11 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, then as
-// float bits the sky's visibility (voxel_sky.comp) and the local lights' irradiance (rgb,
-// voxel_local_lights.comp). Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two
-// million triangles a voxel.
-#define LG_VOXEL_INTS 11
+// The voxelization's sums, 14 ints a voxel: diffuse colour (rgb), normal (xyz), triangles, then as
+// float bits the sky's visibility (voxel_sky.comp), the local lights' irradiance (rgb,
+// voxel_local_lights.comp) and the irradiance of the light bounced so far (rgb,
+// voxel_bounce.comp). Fixed point, kVoxelUnit to 1: a sum stays below 2^31 up to two million
+// triangles a voxel.
+#define LG_VOXEL_INTS 14
 const float kVoxelUnit = 1024.0;
 
 uint voxel_index(ivec3 c) {

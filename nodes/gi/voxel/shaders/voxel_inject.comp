@@ -15,7 +15,8 @@
 // With the environment's SH linked, a second injection after the sky visibility (voxel_sky.comp)
 // adds what the sky gives the same surface: albedo x E_sky(n) x visibility / pi, E_sky from the
 // cosine-convolved SH (as lighting.ibl's diffuse light), the visibility from the voxels' opacity;
-// with local lights, albedo x E_local / pi (voxel_local_lights.comp).
+// with local lights, albedo x E_local / pi (voxel_local_lights.comp); with more than one bounce,
+// albedo x E_bounced / pi, the light the chain held gathered by the voxel (voxel_bounce.comp).
 #include "nodes/gi/voxel/shaders/voxel_common.glsl"
 #include "nodes/common/shaders/finite.glsl"
 #define LG_SKY_SH_BINDING 7
@@ -32,7 +33,7 @@ layout(binding = 5, rgba16f) uniform writeonly image3D seen_z;
 layout(binding = 6, rgba16f) uniform writeonly image3D opacity_image;
 layout(push_constant) uniform Push {
   // 0: the sun's light alone; bit 0: add the sky's (the sums hold its visibility), bit 1: add the
-  // local lights' (the sums hold their irradiance)
+  // local lights' (the sums hold their irradiance), bit 2: add the bounced light's (likewise)
   int second;
 };
 
@@ -103,6 +104,10 @@ void main() {
   if (len > 1e-3 && (second & 2) != 0) {
     vec3 local = vec3(intBitsToFloat(grid[base + 8u]), intBitsToFloat(grid[base + 9u]), intBitsToFloat(grid[base + 10u]));
     radiance += albedo * local / LG_PI;
+  }
+  if (len > 1e-3 && (second & 4) != 0) {
+    vec3 bounced = vec3(intBitsToFloat(grid[base + 11u]), intBitsToFloat(grid[base + 12u]), intBitsToFloat(grid[base + 13u]));
+    radiance += albedo * bounced / LG_PI;
   }
   store(c, clamp(finite_or_zero(radiance), 0.0, 65504.0), n, 1.0);
 }
