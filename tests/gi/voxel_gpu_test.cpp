@@ -552,10 +552,11 @@ TEST(Voxel, ACeilingLampsLightReachesTheFloorVoxelsPastTheCeiling) {
 // of their own) lit inside by a point light, at 1 to 4 bounces: the voxels' summed radiance (the
 // volume output, level 0) grows by less each bounce. All the light a bounce sends stays in the
 // room and its surfaces reflect 0.8 of what reaches them (the form factors from one surface to the
-// others sum to 1), so each increment is at most 0.8 of the last; the cones gather about 70% of
-// what reaches a surface (the -31% of LightsTheFloorBesideALitWall...), so measured 0.556 and
-// 0.554 for the third and fourth bounce. Bounds 0.45 to 0.85 each (a bounce that added the
-// chain's whole light again, rather than replacing the last bounce's share, gives about 1.6).
+// others sum to 1), so each increment is at most 0.8 of the last; the cones gather less than all
+// of what reaches a surface (voxel_trace.glsl, trace_hemisphere_cone), so measured 0.626 and
+// 0.622 for the third and fourth bounce (0.556 and 0.554 before the cones counted the share
+// blocked by voxels not facing them). Bounds 0.45 to 0.85 each (a bounce that added the chain's
+// whole light again, rather than replacing the last bounce's share, gives about 1.6).
 TEST(Voxel, EachBounceAddsTheAlbedosShareOfTheLast) {
   World room;
   add_closed_room(room, kWhite, 0.5f);

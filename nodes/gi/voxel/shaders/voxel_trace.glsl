@@ -124,7 +124,16 @@ Cone trace_hemisphere_cone(vec3 origin, vec3 n, int i, float occlusion_distance,
   vec3 t1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x), t2 = vec3(b, s + n.y * n.y * a, -n.y);
   float phi = float(i - 1) * (2.0 * LG_PI / 5.0);
   vec3 side = 0.5 * n + 0.86602540 * (cos(phi) * t1 + sin(phi) * t2);
-  return trace(origin, i == 0 ? n : side, i == 0 ? 1.0 : 0.5, kTanHalfAngle, occlusion_distance, top, step_scale);
+  Cone cone = trace(origin, i == 0 ? n : side, i == 0 ? 1.0 : 0.5, kTanHalfAngle, occlusion_distance, top, step_scale);
+  // The share of the cone that was blocked by voxels not facing it (a coarse voxel that a wall
+  // only partly fills, the filter at the wall's edge) is taken to shine as the cone's gathered
+  // light: without it the cones gathered about 70% of the light in a closed room (each bounce
+  // added 0.56 of the last at albedo 0.8, EachBounceAddsTheAlbedosShareOfTheLast; now 0.63).
+  // Taking it to shine as what faced the cone on average (light / opacity) measured better still
+  // on the path-traced worlds, but lit a shaded floor from the sunlit floor beside it (coplanar,
+  // which cannot light it) through a sliver of facing: 13% of the lit case.
+  cone.light *= 1.0 + max(1.0 - cone.open - cone.opacity, 0.0);
+  return cone;
 }
 
 #endif
