@@ -553,9 +553,9 @@ TEST(Voxel, ACeilingLampsLightReachesTheFloorVoxelsPastTheCeiling) {
 // volume output, level 0) grows by less each bounce. All the light a bounce sends stays in the
 // room and its surfaces reflect 0.8 of what reaches them (the form factors from one surface to the
 // others sum to 1), so each increment is at most 0.8 of the last; the cones gather less than all
-// of what reaches a surface (voxel_trace.glsl, trace_hemisphere_cone), so measured 0.626 and
-// 0.622 for the third and fourth bounce (0.556 and 0.554 before the cones counted the share
-// blocked by voxels not facing them). Bounds 0.45 to 0.85 each (a bounce that added the chain's
+// of what reaches a surface (voxel_trace.glsl, trace_hemisphere_cone), so measured 0.711 and
+// 0.705 for the third and fourth bounce (0.556 and 0.554 before the cones counted the share
+// blocked by voxels not facing them and took one-voxel steps at every level). Bounds 0.45 to 0.85 each (a bounce that added the chain's
 // whole light again, rather than replacing the last bounce's share, gives about 1.6).
 TEST(Voxel, EachBounceAddsTheAlbedosShareOfTheLast) {
   World room;
