@@ -8,6 +8,7 @@
 //   every output finite, validation clean;
 // - a moved object that turns the grid's 6x2x2 cells into 2x6x2: the next frame matches a fresh
 //   renderer's;
+// - the sum kept while the light and the geometry stay, built again when either changes;
 // - a scene without a directional light drops the node from examples/gi-lpv.json, with the reason
 //   in the plan.
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 
 #include "api/renderer.h"
 #include "graph/graph_io.h"
+#include "nodes/gi/lpv/lpv_kernel.h"
 #include "nodes/gi/path_tracer/path_tracer.h"
 #include "runtime/scene/load_world.h"
 #include "runtime/scene/make_scene_view.h"
@@ -27,6 +29,7 @@
 #include "tests/gi/gi_bypass.h"
 #include "tests/gi/slab_world.h"
 #include "tests/gi/validating_renderer.h"
+#include "tests/gi/plan_kernel.h"
 #include "tests/gi/prt_comparison.h"
 #include "tests/runtime/gpu_test.h"
 
@@ -195,6 +198,53 @@ TEST(Lpv, FollowsTheGridsShapeWhenItsCellCountStaysTheSame) {
   EXPECT_LE(worst, 1e-3 * largest);
   expect_no_validation_messages(renderer->context());
   expect_no_validation_messages(fresh->context());
+}
+
+// The sum is kept while nothing it is built from changes (the kernel counts its builds): on the
+// Cornell box lit by its sun, a second frame from the same camera is one build and equals the
+// first exactly; a moved camera is still one build and equals a fresh renderer's frame exactly
+// (the fixed-point sums make a build deterministic); a turned sun and then a doubled one are a
+// build each and equal a fresh renderer's frame of that world exactly (a node that kept its sum
+// through them fails: the bounce moves with the sun).
+TEST(Lpv, KeepsItsSumUntilTheLightOrTheGeometryChanges) {
+  World world = load_world(LUMAGRAPH_SOURCE_DIR "/examples/worlds/cornell-box.json");
+  const Graph graph = lpv_graph(16, 8);
+  auto renderer = make_renderer(graph);
+  auto builds = [&] { return kernel_of<LpvBuilds>(*renderer, "lpv").sum_builds(); };
+  auto irradiance = [](Renderer& r) { return r.executor().read_image("lpv.irradiance"); };
+  auto fresh = [&] {
+    auto other = make_renderer(graph);
+    other->render(world, kFrame);
+    expect_no_validation_messages(other->context());
+    return irradiance(*other);
+  };
+  renderer->render(world, kFrame);
+  const std::vector<float> first = irradiance(*renderer);
+  renderer->render(world, kFrame);
+  EXPECT_EQ(builds(), 1u);
+  EXPECT_EQ(irradiance(*renderer), first);
+
+  world.each<Camera, Transform>([](Entity, Camera&, Transform& t) { t.position.x += 0.3f; });
+  renderer->render(world, kFrame);
+  EXPECT_EQ(builds(), 1u);
+  const std::vector<float> moved = irradiance(*renderer);
+  EXPECT_NE(moved, first);  // the view did change
+  EXPECT_EQ(moved, fresh());
+
+  world.each<DirectionalLight, Transform>([](Entity, DirectionalLight&, Transform& t) {
+    t.rotation = look_rotation({0.5f, -0.6f, -0.6f});
+  });
+  renderer->render(world, kFrame);
+  EXPECT_EQ(builds(), 2u);
+  const std::vector<float> turned = irradiance(*renderer);
+  EXPECT_NE(turned, moved);
+  EXPECT_EQ(turned, fresh());
+
+  world.each<DirectionalLight>([](Entity, DirectionalLight& d) { d.intensity *= 2.0f; });
+  renderer->render(world, kFrame);
+  EXPECT_EQ(builds(), 3u);
+  EXPECT_EQ(irradiance(*renderer), fresh());
+  expect_no_validation_messages(renderer->context());
 }
 
 // examples/gi-lpv.json on a scene without a directional light (the two rooms have lamps only,

@@ -164,7 +164,7 @@ TEST(LpvSky, TheVolumeOutputHoldsTheSky) {
 
 // How many frames marched the sky in `renderer`'s gi.lpv (its kernel counts them).
 uint64_t sky_marches(Renderer& renderer) {
-  return kernel_of<LpvSkyMarches>(renderer, "lpv").sky_marches();
+  return kernel_of<LpvBuilds>(renderer, "lpv").sky_marches();
 }
 
 // `world`'s irradiance from a renderer of its own, which marches the sky afresh.

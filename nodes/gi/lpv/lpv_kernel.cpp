@@ -77,7 +77,7 @@ std::vector<glm::vec4> face_table() {
   return out;
 }
 
-class LpvKernel final : public NodeKernel, public LpvSkyMarches {
+class LpvKernel final : public NodeKernel, public LpvBuilds {
  public:
   explicit LpvKernel(const PlanNode& node)
       : cells_(int(param_number(node, "grid"))),
@@ -93,6 +93,7 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
   }
 
   uint64_t sky_marches() const override { return sky_marches_; }
+  uint64_t sum_builds() const override { return sum_builds_; }
 
   void record(PassContext& ctx) override {
     const std::string& pass = ctx.pass().pass;
@@ -142,6 +143,7 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
       l = {glm::vec4(glm::normalize(d.direction), 0.0f), glm::vec4(e, 0.0f)};
       shadow_from_world_ = shadow_from_world(*scene_bounds_, d.direction);
     }
+    rsm_light_value_ = l;
     c.scales = glm::vec4(float(scale), float(kOcclusionUnit), 0.0f, 0.0f);
     constants_value_ = c;
     if (!constants_) {
@@ -264,14 +266,34 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
     constants_->write_value(constants_value_);
     // The march is kept while the grid, the geometry and a static SH stay the same (the sky's
     // images then hold it; new images come with new counts, so a new key); the bounce depends on
-    // it but goes into this frame's light, so it runs always. A frame without the sky forgets
-    // the march (its images are cleared).
+    // it and goes into the injected light, so it runs with every build of the sum. A frame
+    // without the sky forgets the march.
+    const bool moving_sky = sky_ && !static_sh(ctx);
     std::vector<std::byte> key = sky_ ? sky_key(ctx.scene()) : std::vector<std::byte>{};
-    march_sky_ = sky_ && (!static_sh(ctx) || key != marched_from_);
+    march_sky_ = sky_ && (moving_sky || key != marched_from_);
     marched_from_.swap(key);
-    inject(ctx);
-    propagate(ctx);
+    // The sum is kept while the sky's key, the light and the constants stay too (new images come
+    // with new counts): the frame then only reads it, and a still scene pays for the lookup alone.
+    std::vector<std::byte> built_from = sum_key(ctx.scene());
+    if (images_new_ || moving_sky || built_from != built_from_) {
+      inject(ctx);
+      propagate(ctx);
+      store(ctx);
+      ++sum_builds_;
+    }
+    built_from_.swap(built_from);
     lookup(ctx);
+  }
+
+  // What the sum depends on: the sky's key (the grid, the geometry), the constants (the light's
+  // direction and the grid), the light's irradiance and projection, and whether the sky is in it.
+  std::vector<std::byte> sum_key(const SceneView& scene) const {
+    std::vector<std::byte> key = sky_key(scene);
+    append_key(key, &constants_value_, sizeof(constants_value_));
+    append_key(key, &rsm_light_value_, sizeof(rsm_light_value_));
+    append_key(key, &shadow_from_world_, sizeof(shadow_from_world_));
+    append_key(key, &sky_, sizeof(sky_));
+    return key;
   }
 
   void inject(PassContext& ctx) {
@@ -363,15 +385,18 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
     }
   }
 
-  // The sum into the 3D images (kept in the GENERAL layout), then per pixel.
+  // The sum into the 3D images (kept in the GENERAL layout).
+  void store(PassContext& ctx) {
+    compute_to_compute_barrier(ctx.cmd());  // the sum's last writes; last frame's reads of the images
+    const DescriptorWrite writes[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, sum_.handle()),
+                                      storage_image(2, sum_images_[0].view()), storage_image(3, sum_images_[1].view()),
+                                      storage_image(4, sum_images_[2].view())};
+    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_store.comp", writes);
+  }
+
+  // The stored sum and the sky per pixel.
   void lookup(PassContext& ctx) {
-    VkCommandBuffer cmd = ctx.cmd();
-    compute_to_compute_barrier(cmd);  // the sum's last writes; last frame's reads of the images
-    const DescriptorWrite store[] = {uniform_buffer(0, constants_->handle()), storage_buffer(1, sum_.handle()),
-                                     storage_image(2, sum_images_[0].view()), storage_image(3, sum_images_[1].view()),
-                                     storage_image(4, sum_images_[2].view())};
-    dispatch_cells(ctx, "nodes/gi/lpv/shaders/lpv_store.comp", store);
-    compute_to_compute_barrier(cmd);
+    compute_to_compute_barrier(ctx.cmd());  // the store's writes
 
     // At the G-buffer's size: the lookup reconstructs positions at its pixels.
     Image& depth = ctx.image("in.gbuffer", 0);
@@ -447,12 +472,15 @@ class LpvKernel final : public NodeKernel, public LpvSkyMarches {
   bool light_present_ = false;
   bool sky_ = false;          // the sky's light added (record_volume)
   bool march_sky_ = false;    // this frame marches the sky (record_volume)
-  uint64_t sky_marches_ = 0;  // frames that marched it (LpvSkyMarches)
+  uint64_t sky_marches_ = 0;  // frames that marched it (LpvBuilds)
+  uint64_t sum_builds_ = 0;   // frames that built the sum (LpvBuilds)
   // What the sky's march depends on this frame (prepare, record_volume), and what the sky's
   // images were last marched from (empty: not marched, or the sky absent since).
   std::vector<DrawConstants> frame_draws_;  // this frame's (prepare())
   std::vector<std::byte> marched_from_;     // sky_key() of the last march; empty without the sky
+  std::vector<std::byte> built_from_;       // sum_key() of the last frame
   Constants constants_value_{};  // as prepare() made them; record_volume adds the coverage and writes them
+  RsmLight rsm_light_value_{};   // as prepare() wrote it
   glm::ivec3 allocated_counts_{0};  // none yet
   std::optional<HostBuffer> constants_, rsm_light_, draws_, draw_blocks_, camera_, faces_;
   Buffer light_fixed_, occlusion_fixed_, sum_;
