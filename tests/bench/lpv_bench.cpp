@@ -14,12 +14,12 @@
 // lumagraph-bench-probes' relative_rms; through tests/gi/prt_comparison.h), the reference's noise
 // in the same measure, and the node's GPU time per frame at --frame-size (all its passes;
 // lavapipe; the median and the least of the frames after the first, and each pass's median;
-// gi.voxel keeps its volume while nothing moves, so it is also timed with the sun turning). In
+// both nodes keep their volume while nothing moves, so each is also timed with the sun turning). In
 // the two rooms also the leak: the mean irradiance on the east room's floor over the west room's,
 // a camera in each room (the reference's is 0). Writes lpv_points.csv (columns compatible with
 // docs/bench/probes/probe_points.csv; for gi.voxel `grid` is the resolution and `iterations` the
 // number of cones; mean_ratio the node's mean irradiance over the reference's, 1 unbiased;
-// frame_ms_moving gi.voxel's median with the sun turning, see frame_ms; cpu_ms the CPU time the
+// frame_ms_moving the median with the sun turning, see frame_ms; cpu_ms the CPU time the
 // node adds to a frame, the process's over the G-buffer alone's) into --results-dir; --methods
 // lpv or voxel runs one of them, --worlds some of the worlds; scripts/run-lpv-benchmarks plots
 // it. Per row it also prints the mean ratio per way the surfaces face (docs/lpv.md, "Energy and
@@ -120,7 +120,7 @@ Graph node_graph(const Quality& q) {
 
 struct FrameTime {
   double median_ms, min_ms;
-  double moving_median_ms = NAN;  // gi.voxel with the sun turning every frame (its volume rebuilt)
+  double moving_median_ms = NAN;  // with the sun turning every frame (the volume rebuilt)
   double cpu_ms = NAN;            // the process's CPU time a frame, all threads (the frame's, not the node's)
 };
 
@@ -147,8 +147,9 @@ double frame_cpu_ms(const World& world, Graph graph, const Options& o) {
 
 // The node's passes' GPU time over the frames after the first (pipelines JIT-compiled): the
 // median, and the least, which on a machine shared with other work is the nearest to its cost
-// alone; each pass's median is printed. gi.voxel keeps its volume while the scene stands still, so
-// it is also timed with the sun turning 0.1 degrees a frame (everything rebuilt every frame).
+// alone; each pass's median is printed. Both nodes keep their volume (gi.lpv its sum, since stop
+// 36) while the scene stands still, so each is also timed with the sun turning 0.1 degrees a
+// frame (everything rebuilt every frame).
 FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
   if (o.frames == 0) return {NAN, NAN};  // --frames 0: accuracy only
   const std::string prefix = q.method + "/";
@@ -186,7 +187,7 @@ FrameTime frame_ms(const World& world, const Quality& q, const Options& o) {
   const auto [still, cpu_ms] = timed(false, "");
   FrameTime out{still[still.size() / 2], still.front()};
   out.cpu_ms = cpu_ms;
-  if (q.method == "voxel") out.moving_median_ms = median(timed(true, ", sun turning").first);
+  out.moving_median_ms = median(timed(true, ", sun turning").first);
   return out;
 }
 
