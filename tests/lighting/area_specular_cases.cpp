@@ -113,6 +113,8 @@ SpecularSample evaluate_specular(const SpecularCase& c, double rel_tol) {
   }
   s.ltc *= ab.x + ab.y;
   s.albedo *= ab.x + ab.y;
+  // As area_lights.glsl's area_specular bounds it: at most what the whole lobe reflects.
+  s.representative_point = std::min(s.representative_point, s.albedo);
   return s;
 }
 

@@ -45,11 +45,16 @@ vec3 reflection_dir(Surface s) {
 }
 
 // The representative point shaded as a point light whose intensity is the light's radiance
-// times its projected area toward the point (`area`, m^2).
+// times its projected area toward the point (`area`, m^2), at most what the whole lobe reflects
+// of that radiance (its directional albedo, as the LTC path's I <= 1): a light that covers a
+// narrow lobe's peak read its peak over all its solid angle, up to 5x the lobe's albedo on the
+// benchmark's points (docs/bench/area-specular) and 15x under a wide light
+// (AreaSpecular.NoLightReflectsMoreThanTheWholeLobe).
 vec3 area_specular(Surface s, RepresentativePoint rp, vec3 radiance, float area) {
   if (rp.normalization <= 0.0) return vec3(0.0);
   float d2 = max(rp.distance * rp.distance, 1e-8);
-  return specular_term(s, rp.direction, s.alpha) * radiance * (area / d2 * rp.normalization);
+  return min(specular_term(s, rp.direction, s.alpha) * radiance * (area / d2 * rp.normalization),
+             radiance * s.specular_albedo);
 }
 
 // Radiance toward the eye from every sphere, tube and rectangle light. The loops are do-whiles:
