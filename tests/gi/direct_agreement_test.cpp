@@ -1,8 +1,8 @@
 // The reference's direct AOV against lighting.deferred on lavapipe: a grey floor under a
 // rectangle, a sphere, a tube, a point, a spot and a directional light, nothing casting shadows
 // on it. Diffuse is exact in both (the deferred node's area formulas are closed forms), so what
-// differs is the reference's noise, the deferred node's representative-point specular for area
-// lights, and the G-buffer's 8-bit albedo and 16-bit float output.
+// differs is the reference's noise, the deferred node's LTC specular for area lights, and the
+// G-buffer's 8-bit albedo and 16-bit float output.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -124,7 +124,7 @@ Comparison compare(const World& world, uint32_t spp, ReferenceAov aov = Referenc
 }
 
 // The reference's own noise is taken out of the per-pixel RMS difference: what is left, at most 4% of the mean, is the
-// deferred node's approximation (representative-point specular, 8-bit albedo, half-float output); the means agree
+// deferred node's approximation (LTC specular, 8-bit albedo, half-float output); the means agree
 // to 1.5%.
 TEST(DirectAgreement, ReferenceDirectLightMatchesTheDeferredNode) {
   for (float roughness : {1.0f, 0.5f}) {

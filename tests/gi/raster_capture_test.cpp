@@ -98,8 +98,8 @@ TEST(RasterCapture, FacesMatchThePathTracedCaptureUnderDirectLight) {
     // paths over 1024 texels, and lighting.deferred's area-light formulas against exact
     // integration). Allowed: 5% of the face's mean and 1% of the brightest face's. The floor's
     // face (-Y) holds the steel's glossy image of the lamp, where lighting.deferred's
-    // rectangle-light specular (a representative-point approximation) gives 30% more than Monte
-    // Carlo: allowed 40% there. A face drawn along the wrong axis or mirrored gets another wall's
+    // rectangle-light specular (LTC) gives 17% more than Monte Carlo (the representative points
+    // it replaced as the default, 30%): allowed 40% there. A face drawn along the wrong axis or mirrored gets another wall's
     // colour, off by several times.
     const double relative = f == 3 ? 0.4 : 0.05;
     for (int c = 0; c < 3; ++c)
