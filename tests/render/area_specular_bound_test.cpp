@@ -66,7 +66,9 @@ TEST(AreaSpecular, NoLightReflectsMoreThanTheWholeLobe) {
                 largest, mean, kRadiance);
     EXPECT_GT(floor, size_t(kFrame.width) * kFrame.height / 4) << method;
     EXPECT_LE(largest, 1.01 * kRadiance) << method;
-    if (method == "ltc") EXPECT_GE(mean, 0.9 * kRadiance);
+    if (method == "ltc") {
+      EXPECT_GE(mean, 0.9 * kRadiance);
+    }
     auto messages = renderer.context().take_validation_messages();
     EXPECT_TRUE(messages.empty()) << method << ": " << messages.size() << " validation message(s)";
   }
