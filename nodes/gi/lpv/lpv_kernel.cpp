@@ -269,12 +269,13 @@ class LpvKernel final : public NodeKernel, public LpvBuilds {
     // it and goes into the injected light, so it runs with every build of the sum. A frame
     // without the sky forgets the march.
     const bool moving_sky = sky_ && !static_sh(ctx);
-    std::vector<std::byte> key = sky_ ? sky_key(ctx.scene()) : std::vector<std::byte>{};
+    const std::vector<std::byte> grid_and_geometry = sky_key(ctx.scene());
+    std::vector<std::byte> key = sky_ ? grid_and_geometry : std::vector<std::byte>{};
     march_sky_ = sky_ && (moving_sky || key != marched_from_);
     marched_from_.swap(key);
     // The sum is kept while the sky's key, the light and the constants stay too (new images come
     // with new counts): the frame then only reads it, and a still scene pays for the lookup alone.
-    std::vector<std::byte> built_from = sum_key(ctx.scene());
+    std::vector<std::byte> built_from = sum_key(grid_and_geometry);
     if (images_new_ || moving_sky || built_from != built_from_) {
       inject(ctx);
       propagate(ctx);
@@ -287,8 +288,7 @@ class LpvKernel final : public NodeKernel, public LpvBuilds {
 
   // What the sum depends on: the sky's key (the grid, the geometry), the constants (the light's
   // direction and the grid), the light's irradiance and projection, and whether the sky is in it.
-  std::vector<std::byte> sum_key(const SceneView& scene) const {
-    std::vector<std::byte> key = sky_key(scene);
+  std::vector<std::byte> sum_key(std::vector<std::byte> key) const {
     append_key(key, &constants_value_, sizeof(constants_value_));
     append_key(key, &rsm_light_value_, sizeof(rsm_light_value_));
     append_key(key, &shadow_from_world_, sizeof(shadow_from_world_));

@@ -29,6 +29,15 @@ layout(std140, binding = 0) uniform ConstantsBlock { VoxelConstants voxel; };
 #define LG_VOXEL_INTS 14
 const float kVoxelUnit = 1024.0;
 
+// The unit mean normal of a voxel's surfaces from its sums (the triangles and the normals' sum),
+// or 0 where no triangle marked it or their normals cancel (both faces of a thin wall), as the
+// injection tests (voxel_inject.comp).
+vec3 voxel_surface_normal(int triangles, ivec3 normal_sum) {
+  vec3 n = vec3(normal_sum);
+  float len = length(n);
+  return triangles > 0 && len > 1e-3 * float(triangles) * kVoxelUnit ? n / len : vec3(0.0);
+}
+
 uint voxel_index(ivec3 c) {
   return uint((c.z * voxel.counts.y + c.y) * voxel.counts.x + c.x);
 }

@@ -95,11 +95,8 @@ void main() {
   ivec3 c = voxel_invocation_cell(voxel.counts.xyz);
   if (any(greaterThanEqual(c, voxel.counts.xyz))) return;
   uint base = LG_VOXEL_INTS * voxel_index(c);
-  int triangles = grid[base + 6u];
-  vec3 n = vec3(grid[base + 3u], grid[base + 4u], grid[base + 5u]);
-  float len = length(n);
-  if (triangles <= 0 || !(len > 1e-3 * float(triangles) * kVoxelUnit)) return;  // as the injection's test
-  n /= len;
+  vec3 n = voxel_surface_normal(grid[base + 6u], ivec3(grid[base + 3u], grid[base + 4u], grid[base + 5u]));
+  if (n == vec3(0.0)) return;
   float cell = voxel.origin_cell.w;
   vec3 p = voxel.origin_cell.xyz + (vec3(c) + 0.5) * cell;
   vec3 from = p + n * (1.5 * ray_cell());

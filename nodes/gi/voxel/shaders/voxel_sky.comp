@@ -32,16 +32,13 @@ void main() {
   if (any(greaterThanEqual(c, voxel.counts.xyz))) return;
   uint base = LG_VOXEL_INTS * voxel_index(c);
   int triangles = grid[base + 6u];
-  vec3 n = vec3(grid[base + 3u], grid[base + 4u], grid[base + 5u]);
-  float len = length(n);
   if (triangles <= 0) return;
-  // No visibility for a voxel whose normals cancel (as the injection's test): -1 tells the cones
-  // (voxel_cones.comp) so.
-  if (!(len > 1e-3 * float(triangles) * kVoxelUnit)) {
+  vec3 n = voxel_surface_normal(triangles, ivec3(grid[base + 3u], grid[base + 4u], grid[base + 5u]));
+  // No visibility for a voxel whose normals cancel: -1 tells the cones (voxel_cones.comp) so.
+  if (n == vec3(0.0)) {
     grid[base + 7u] = floatBitsToInt(-1.0);
     return;
   }
-  n /= len;
   float cell = voxel.origin_cell.w;
   vec3 origin = voxel.origin_cell.xyz + (vec3(c) + 0.5) * cell + n * cell;
   float occluded = 0.0;
